@@ -1,0 +1,73 @@
+// A crack law: per contact cell, half displacements (a, b) → tractions (N, T),
+// with history committed once per accepted time step (PHYSICS.md §3).
+//
+// This is the contract between the contact library and the interface module:
+// trial() is a pure function of the committed state (called at every RHS
+// evaluation and stage), commit() advances the history and returns the energy
+// dissipated in the step. Signs: N compressive positive; T has the sign of the
+// elastic tangential displacement; the interface absorbs 2(N ȧ + T ḃ).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/contact/memory_diagram.hpp"
+
+namespace vibrotherm::contact {
+
+/// Tangent stiffnesses dN/da and dT/db (half-displacement units) for the
+/// stable time-step bound.
+struct CellStiffness {
+  double normal = 0.0, tangential = 0.0;
+};
+
+class CrackLaw {
+ public:
+  virtual ~CrackLaw() = default;
+  virtual std::string name() const = 0;
+
+  /// Allocates `cells` cells, each in its virgin state at (a[i], b[i]).
+  virtual void initialize(std::size_t cells, const double* a, const double* b) = 0;
+  virtual std::size_t cells() const = 0;
+
+  virtual Traction trial(std::size_t cell, double a, double b) const = 0;
+  virtual StepResult commit(std::size_t cell, double a, double b) = 0;
+
+  /// Stored interface energy of the committed state [J/m²].
+  virtual double stored_energy(std::size_t cell) const = 0;
+  /// Accumulated full-slip offset b0 of the committed state.
+  virtual double slip_offset(std::size_t cell) const = 0;
+  virtual CellStiffness stiffness(std::size_t cell, double a) const = 0;
+
+  /// False when the law can never dissipate (open, linear, clapping, μ = 0):
+  /// the simulator then never creates the heat solver.
+  virtual bool can_dissipate() const = 0;
+  /// False for a law that never transmits any traction (open).
+  virtual bool has_contact() const = 0;
+};
+
+using CrackLawFactory = std::unique_ptr<CrackLaw> (*)(const ContactParameters&);
+
+struct CrackLawEntry {
+  const char* name;
+  const char* help;
+  CrackLawFactory create;
+};
+
+/// All registered crack laws. Adding one: a new file with its factory and one
+/// line in crack_law_registry.cpp.
+const std::vector<CrackLawEntry>& crack_laws();
+
+/// Validates params and creates the law named by params.crack_law.
+std::unique_ptr<CrackLaw> create_crack_law(const ContactParameters& params);
+
+std::unique_ptr<CrackLaw> create_open_law(const ContactParameters&);
+std::unique_ptr<CrackLaw> create_linear_slip_law(const ContactParameters&);
+std::unique_ptr<CrackLaw> create_clapping_law(const ContactParameters&);
+std::unique_ptr<CrackLaw> create_coulomb_law(const ContactParameters&);
+std::unique_ptr<CrackLaw> create_mmd_law(const ContactParameters&);
+
+}  // namespace vibrotherm::contact

@@ -1,0 +1,42 @@
+// Clapping: the normal law alone, frictionless faces (T = 0, no dissipation).
+#include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/contact/normal_law_registry.hpp"
+
+namespace vibrotherm::contact {
+namespace {
+
+class ClappingLaw final : public CrackLaw {
+ public:
+  explicit ClappingLaw(std::unique_ptr<NormalLaw> law) : law_(std::move(law)) {}
+  std::string name() const override { return "clapping"; }
+  void initialize(std::size_t cells, const double* a, const double* b) override {
+    a_.assign(a, a + cells);
+    b_.assign(b, b + cells);
+  }
+  std::size_t cells() const override { return a_.size(); }
+  Traction trial(std::size_t, double a, double) const override { return {law_->eval(a).N, 0.0}; }
+  StepResult commit(std::size_t cell, double a, double b) override {
+    a_[cell] = a;
+    b_[cell] = b;
+    return {law_->eval(a).N, 0.0, 0.0, a > 0.0 ? ContactState::Slide : ContactState::Loss};
+  }
+  double stored_energy(std::size_t c) const override { return 2.0 * law_->eval(a_[c]).M; }
+  double slip_offset(std::size_t c) const override { return b_[c]; }
+  CellStiffness stiffness(std::size_t, double a) const override {
+    return {a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero(), 0.0};
+  }
+  bool can_dissipate() const override { return false; }
+  bool has_contact() const override { return true; }
+
+ private:
+  std::unique_ptr<NormalLaw> law_;
+  std::vector<double> a_, b_;
+};
+
+}  // namespace
+
+std::unique_ptr<CrackLaw> create_clapping_law(const ContactParameters& params) {
+  return std::make_unique<ClappingLaw>(create_normal_law(params));
+}
+
+}  // namespace vibrotherm::contact

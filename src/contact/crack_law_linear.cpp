@@ -1,0 +1,42 @@
+// Schoenberg's linear slip interface: N = k_n a and T = k_t b for both signs of
+// a (the faces are glued by springs). In full-jump terms the interface
+// stiffnesses per unit area are K_n = k_n/2 and K_t = k_t/2.
+#include "vibrotherm/contact/crack_law.hpp"
+
+namespace vibrotherm::contact {
+namespace {
+
+class LinearSlipLaw final : public CrackLaw {
+ public:
+  LinearSlipLaw(double kn, double kt) : kn_(kn), kt_(kt) {}
+  std::string name() const override { return "linear"; }
+  void initialize(std::size_t cells, const double* a, const double* b) override {
+    a_.assign(a, a + cells);
+    b_.assign(b, b + cells);
+  }
+  std::size_t cells() const override { return a_.size(); }
+  Traction trial(std::size_t, double a, double b) const override { return {kn_ * a, kt_ * b}; }
+  StepResult commit(std::size_t cell, double a, double b) override {
+    a_[cell] = a;
+    b_[cell] = b;
+    return {kn_ * a, kt_ * b, 0.0, ContactState::Stick};
+  }
+  double stored_energy(std::size_t c) const override { return kn_ * a_[c] * a_[c] + kt_ * b_[c] * b_[c]; }
+  double slip_offset(std::size_t) const override { return 0.0; }
+  CellStiffness stiffness(std::size_t, double) const override { return {kn_, kt_}; }
+  bool can_dissipate() const override { return false; }
+  bool has_contact() const override { return true; }
+
+ private:
+  double kn_, kt_;
+  std::vector<double> a_, b_;
+};
+
+}  // namespace
+
+std::unique_ptr<CrackLaw> create_linear_slip_law(const ContactParameters& params) {
+  if (!(params.normal_k > 0.0)) throw InputError("-contact_normal_k must be > 0 for the linear crack law");
+  return std::make_unique<LinearSlipLaw>(params.normal_k, params.tangential_k);
+}
+
+}  // namespace vibrotherm::contact

@@ -1,0 +1,49 @@
+// Rough crack faces: one memory diagram per contact cell.
+#include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/contact/normal_law_registry.hpp"
+
+namespace vibrotherm::contact {
+namespace {
+
+class MmdLaw final : public CrackLaw {
+ public:
+  MmdLaw(std::unique_ptr<NormalLaw> law, const MmdConfig& cfg) : law_(std::move(law)), cfg_(cfg) {}
+  std::string name() const override { return "mmd"; }
+  void initialize(std::size_t cells, const double* a, const double* b) override {
+    diagrams_.assign(cells, MemoryDiagram{});
+    for (std::size_t i = 0; i < cells; ++i) diagrams_[i].reset(*law_, a[i], b[i]);
+  }
+  std::size_t cells() const override { return diagrams_.size(); }
+  Traction trial(std::size_t cell, double a, double b) const override {
+    return diagrams_[cell].trial(*law_, cfg_, a, b);
+  }
+  StepResult commit(std::size_t cell, double a, double b) override {
+    return diagrams_[cell].commit(*law_, cfg_, a, b);
+  }
+  double stored_energy(std::size_t cell) const override { return diagrams_[cell].stored_energy(cfg_); }
+  double slip_offset(std::size_t cell) const override { return diagrams_[cell].b0(); }
+  CellStiffness stiffness(std::size_t, double a) const override {
+    // All springs stuck: dT/db = N'(a)/θ <= dN/da.
+    const double k = a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero();
+    return {k, k / cfg_.theta};
+  }
+  bool can_dissipate() const override { return cfg_.mu > 0.0; }
+  bool has_contact() const override { return true; }
+
+  const MemoryDiagram& diagram(std::size_t cell) const { return diagrams_[cell]; }
+
+ private:
+  std::unique_ptr<NormalLaw> law_;
+  MmdConfig cfg_;
+  std::vector<MemoryDiagram> diagrams_;
+};
+
+}  // namespace
+
+std::unique_ptr<CrackLaw> create_mmd_law(const ContactParameters& params) {
+  const MmdConfig cfg{params.mu, params.theta(), params.mmd_rel_tol,
+                      static_cast<std::size_t>(params.mmd_max_breakpoints)};
+  return std::make_unique<MmdLaw>(create_normal_law(params), cfg);
+}
+
+}  // namespace vibrotherm::contact

@@ -1,0 +1,68 @@
+// Helpers for the contact unit tests: drive a crack law along a history and
+// account the energies independently of the law.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/contact/normal_law_registry.hpp"
+
+namespace vibrotherm::contact::testing {
+
+inline ContactParameters hertz_params(double mu = 0.5, double nu = 0.3) {
+  ContactParameters p;
+  p.mu = mu;
+  p.nu = nu;
+  p.normal_law = "power";
+  p.normal_C = 1e18;
+  p.normal_p = 1.5;
+  return p;
+}
+
+/// Energy bookkeeping of one cell along a discretised path.
+struct PathEnergy {
+  double dissipated = 0.0;  ///< Σ ΔW
+  double work_trap = 0.0;   ///< Σ (T_n + T_{n+1})Δb + (N_n + N_{n+1})Δa  (external work, trapezoid)
+  double loop_area = 0.0;   ///< Σ (T_n + T_{n+1})Δb   (∮ 2T db over a closed cycle)
+  double work_abs = 0.0;    ///< Σ |increments of work_trap|: the scale of the energies exchanged
+};
+
+/// A path point (a, b) as a function of the normalised time s in [0, 1].
+using Path = std::function<void(double s, double& a, double& b)>;
+
+/// Commits `steps` steps of path on [s0, s1] to cell 0 of law; the cell must
+/// already sit at path(s0).
+inline PathEnergy drive(CrackLaw& law, const Path& path, double s0, double s1, int steps,
+                        StepResult* last = nullptr) {
+  PathEnergy e;
+  double a_prev, b_prev;
+  path(s0, a_prev, b_prev);
+  Traction prev = law.trial(0, a_prev, b_prev);
+  for (int k = 1; k <= steps; ++k) {
+    double a, b;
+    path(s0 + (s1 - s0) * k / steps, a, b);
+    const StepResult r = law.commit(0, a, b);
+    e.dissipated += r.dW;
+    e.loop_area += (prev.T + r.T) * (b - b_prev);
+    const double dwork = (prev.T + r.T) * (b - b_prev) + (prev.N + r.N) * (a - a_prev);
+    e.work_trap += dwork;
+    e.work_abs += std::abs(dwork);
+    prev = {r.N, r.T};
+    a_prev = a;
+    b_prev = b;
+    if (last) *last = r;
+  }
+  return e;
+}
+
+/// Creates a one-cell law in its virgin state at (a, b).
+inline std::unique_ptr<CrackLaw> one_cell(const ContactParameters& p, double a, double b) {
+  auto law = create_crack_law(p);
+  law->initialize(1, &a, &b);
+  return law;
+}
+
+}  // namespace vibrotherm::contact::testing
