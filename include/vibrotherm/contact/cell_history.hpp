@@ -1,0 +1,42 @@
+// Prescribed (t, a, b) histories for driving one contact cell: read from CSV or
+// built from sinusoids and ramps. Used by vibrotherm-contact (law calibration)
+// and the tests.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/contact/crack_law.hpp"
+
+namespace vibrotherm::contact {
+
+struct HistoryPoint {
+  double t, a, b;
+};
+
+/// Reads a CSV with columns t,a,b (a header line and # comments allowed).
+/// InputError naming the file and line on bad rows or non-increasing t.
+std::vector<HistoryPoint> read_history_csv(const std::string& path);
+
+/// x(t) = offset + rate t + ramp(t) · amplitude · sin(2π f t + phase).
+struct SineComponent {
+  double amplitude = 0.0, offset = 0.0, phase_deg = 0.0, rate = 0.0;
+};
+
+struct SineHistory {
+  SineComponent a, b;
+  double frequency = 1e5;       ///< [Hz]
+  double cycles = 2.0;
+  int steps_per_cycle = 100;
+  double ramp_cycles = 0.0;     ///< amplitudes grow linearly over this many cycles
+};
+
+/// Samples the history at steps_per_cycle points per cycle (t = 0 included).
+std::vector<HistoryPoint> make_sine_history(const SineHistory& h);
+
+/// Drives cell 0 of law (initialised at the first point, a + a0) through the
+/// history and writes t,a,b,b0,btilde,N,T,state,dW,W rows. Returns Σ dW.
+double drive_cell(CrackLaw& law, const std::vector<HistoryPoint>& history, double a0, std::ostream& out);
+
+}  // namespace vibrotherm::contact

@@ -1,0 +1,32 @@
+// User errors: one clear line, non-zero exit; programming errors keep PETSc's trace.
+//
+// Bad input is raised with SETERRQ(comm, PETSC_ERR_USER_INPUT or
+// PETSC_ERR_FILE_OPEN, "...") and a message that names the option or file. The
+// handler prints such messages once, as "<program>: error: <message>", and
+// passes every other error to PETSc's traceback handler.
+#pragma once
+
+#include <petscsys.h>
+
+#include <stdexcept>
+
+namespace vibrotherm {
+
+/// Installs the handler; call right after PetscInitialize.
+PetscErrorCode PushUserErrorHandler(const char* program);
+
+/// The process exit code for the error code a run returned (0 on success).
+int ExitCode(PetscErrorCode ierr);
+
+}  // namespace vibrotherm
+
+/// Runs a statement that may throw std::exception (e.g. contact::InputError)
+/// and turns the exception into a PETSc user-input error on comm.
+#define VibrothermCallCpp(comm, stmt)                                   \
+  do {                                                                  \
+    try {                                                               \
+      stmt;                                                             \
+    } catch (const std::exception& vibrotherm_exc_) {                   \
+      SETERRQ((comm), PETSC_ERR_USER_INPUT, "%s", vibrotherm_exc_.what()); \
+    }                                                                   \
+  } while (0)

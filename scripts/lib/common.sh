@@ -1,0 +1,45 @@
+# Shared by scripts/run, scripts/test and scripts/bench: install what the
+# project needs from Debian (idempotent), then configure and build.
+# Environment: VIBROTHERM_BUILD_DIR (default build), VIBROTHERM_BUILD_TYPE (Release).
+
+VIBROTHERM_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+BUILD_DIR=${VIBROTHERM_BUILD_DIR:-$VIBROTHERM_ROOT/build}
+
+DEBIAN_PACKAGES=(
+  build-essential cmake ninja-build pkg-config
+  petsc-dev slepc-dev libhdf5-openmpi-dev openmpi-bin
+  libmetis-dev libgmsh-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3-numpy python3-h5py python3-matplotlib
+)
+
+log() { printf '[vibrotherm] %s\n' "$*" >&2; }
+
+install_dependencies() {
+  local missing=()
+  for pkg in "${DEBIAN_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then return 0; fi
+  log "installing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+build_project() {
+  local generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+    cmake -S "$VIBROTHERM_ROOT" -B "$BUILD_DIR" "${generator[@]}" \
+      -DCMAKE_BUILD_TYPE="${VIBROTHERM_BUILD_TYPE:-Release}" >/dev/null
+  fi
+  cmake --build "$BUILD_DIR" -j "$(nproc)"
+}
+
+# Open MPI refuses to run as root unless told; CI and these machines run as root.
+mpi_environment() {
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  export OMPI_MCA_rmaps_base_oversubscribe=1
+}

@@ -1,0 +1,75 @@
+#include "vibrotherm/contact/cell_history.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace vibrotherm::contact {
+
+std::vector<HistoryPoint> read_history_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("-history " + path + ": cannot open the file");
+  std::vector<HistoryPoint> rows;
+  std::string text;
+  int line = 0;
+  while (std::getline(in, text)) {
+    ++line;
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string::npos || text[first] == '#') continue;
+    if (rows.empty() && std::isalpha(static_cast<unsigned char>(text[first]))) continue;  // header
+    std::replace(text.begin(), text.end(), ',', ' ');
+    std::istringstream fields(text);
+    HistoryPoint p{};
+    if (!(fields >> p.t >> p.a >> p.b) || !std::isfinite(p.t) || !std::isfinite(p.a) || !std::isfinite(p.b))
+      throw InputError("-history " + path + " line " + std::to_string(line) + ": expected three numbers 't,a,b'");
+    if (!rows.empty() && !(p.t > rows.back().t))
+      throw InputError("-history " + path + " line " + std::to_string(line) + ": t must increase");
+    rows.push_back(p);
+  }
+  if (rows.size() < 2) throw InputError("-history " + path + ": needs at least two rows");
+  return rows;
+}
+
+std::vector<HistoryPoint> make_sine_history(const SineHistory& h) {
+  if (!(h.frequency > 0.0)) throw InputError("-history_frequency must be > 0");
+  if (!(h.cycles > 0.0)) throw InputError("-history_cycles must be > 0");
+  if (h.steps_per_cycle < 4) throw InputError("-history_steps_per_cycle must be >= 4");
+  if (h.ramp_cycles < 0.0) throw InputError("-history_ramp_cycles must be >= 0");
+  const long steps = std::lround(h.cycles * h.steps_per_cycle);
+  std::vector<HistoryPoint> rows;
+  rows.reserve(steps + 1);
+  for (long k = 0; k <= steps; ++k) {
+    const double cycle = double(k) / h.steps_per_cycle, t = cycle / h.frequency;
+    const double ramp = h.ramp_cycles > 0.0 ? std::min(1.0, cycle / h.ramp_cycles) : 1.0;
+    auto value = [&](const SineComponent& c) {
+      return c.offset + c.rate * t + ramp * c.amplitude * std::sin(2.0 * M_PI * cycle + c.phase_deg * M_PI / 180.0);
+    };
+    rows.push_back({t, value(h.a), value(h.b)});
+  }
+  return rows;
+}
+
+double drive_cell(CrackLaw& law, const std::vector<HistoryPoint>& history, double a0, std::ostream& out) {
+  out << "t,a,b,b0,btilde,N,T,state,dW,W\n";
+  const double a_first = history.front().a + a0, b_first = history.front().b;
+  law.initialize(1, &a_first, &b_first);
+  double W = 0.0;
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    const double a = history[k].a + a0, b = history[k].b;
+    StepResult r;
+    if (k == 0) {
+      const Traction t = law.trial(0, a, b);
+      r = {t.N, t.T, 0.0, a > 0.0 ? ContactState::Stick : ContactState::Loss};
+    } else {
+      r = law.commit(0, a, b);
+    }
+    W += r.dW;
+    const double b0 = law.slip_offset(0);
+    out << history[k].t << ',' << a << ',' << b << ',' << b0 << ',' << b - b0 << ',' << r.N << ',' << r.T << ','
+        << to_string(r.state) << ',' << r.dW << ',' << W << '\n';
+  }
+  return W;
+}
+
+}  // namespace vibrotherm::contact
