@@ -22,11 +22,11 @@ int ExitCode(PetscErrorCode ierr);
 
 /// Runs a statement that may throw std::exception (e.g. contact::InputError)
 /// and turns the exception into a PETSc user-input error on comm.
-#define VibrothermCallCpp(comm, stmt)                                   \
-  do {                                                                  \
-    try {                                                               \
-      stmt;                                                             \
-    } catch (const std::exception& vibrotherm_exc_) {                   \
+#define VibrothermCallCpp(comm, ...)                                       \
+  do {                                                                     \
+    try {                                                                  \
+      __VA_ARGS__;                                                         \
+    } catch (const std::exception& vibrotherm_exc_) {                      \
       SETERRQ((comm), PETSC_ERR_USER_INPUT, "%s", vibrotherm_exc_.what()); \
-    }                                                                   \
+    }                                                                      \
   } while (0)

@@ -1,0 +1,25 @@
+// summary.json: what ran, how big, how long (ARCHITECTURE.md "Outputs").
+#pragma once
+
+#include <petscsys.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/mesh/mesh_summary.hpp"
+
+namespace vibrotherm::io {
+
+struct RunSummary {
+  std::vector<std::string> physics_ran;   ///< "wave", "contact", "heat"
+  long long dofs_wave = 0, dofs_heat = 0, contact_cells = 0, steps_wave = 0, steps_heat = 0;
+  double wall_time_s = 0.0;
+  std::map<std::string, double> stages;   ///< phase → wall seconds
+  mesh::MeshSummary mesh;
+};
+
+/// Writes the summary (and the effective options) atomically from rank 0. Collective.
+PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const RunSummary& summary);
+
+}  // namespace vibrotherm::io

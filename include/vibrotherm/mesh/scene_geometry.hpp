@@ -1,0 +1,47 @@
+// The specimen as the user describes it: a rectangle [0, W] × [0, H] (origin at
+// the bottom-left corner, y up) with straight cracks, mesh sizes and the kind
+// of each outer edge. Plain data with validation that names the option.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vibrotherm::mesh {
+
+/// Mechanical kind of an outer edge (a label of that name marks its faces).
+enum class EdgeKind { Absorbing, Free, Roller, Fixed, Source };
+const char* to_string(EdgeKind kind);
+/// All kinds, in label order; label names are the to_string() names.
+const std::array<EdgeKind, 5>& all_edge_kinds();
+
+enum class Side { Bottom = 0, Right = 1, Top = 2, Left = 3 };
+const char* to_string(Side side);
+
+struct Crack {
+  double x = 0.0, y = 0.0;  ///< centre [m]
+  double length = 0.0;      ///< [m]
+  double angle_deg = 0.0;   ///< to the horizontal, counter-clockwise
+  /// End points: centre ∓ (L/2)(cos θ, sin θ); tangent s from end 0 to end 1.
+  std::array<double, 2> end(int which) const;
+};
+
+struct SpecimenGeometry {
+  double width = 0.05, height = 0.1;
+  std::vector<Crack> cracks;
+  double h = 2e-3;                ///< -mesh_h: element size away from cracks
+  double h_crack = 5e-4;          ///< -mesh_h_crack: element size along cracks
+  double grading = 0.3;           ///< -mesh_grading: size growth per unit distance from a crack
+  bool quads = true;              ///< -mesh_cell quad|tri
+  std::array<EdgeKind, 4> edges = {EdgeKind::Absorbing, EdgeKind::Absorbing, EdgeKind::Source,
+                                   EdgeKind::Absorbing};  ///< by Side
+
+  /// Throws std::invalid_argument naming the option: non-positive sizes, a
+  /// crack reaching beyond the specimen or lying along an edge, crossing or
+  /// touching cracks, a crack with fewer than 2 elements along it.
+  void validate() const;
+  /// Whether end `which` of crack c lies on the outer boundary (within tolerance).
+  bool end_on_boundary(const Crack& c, int which) const;
+};
+
+}  // namespace vibrotherm::mesh

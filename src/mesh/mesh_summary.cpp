@@ -1,0 +1,162 @@
+#include "vibrotherm/mesh/mesh_summary.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
+
+namespace vibrotherm::mesh {
+namespace {
+
+PetscErrorCode CountOwned(DM dm, PetscInt depth, PetscInt* count) {
+  PetscFunctionBeginUser;
+  std::vector<bool> ghost;
+  PetscCall(GhostPoints(dm, &ghost));
+  PetscInt pStart, pEnd, chart0, mine = 0;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(DMPlexGetDepthStratum(dm, depth, &pStart, &pEnd));
+  for (PetscInt p = pStart; p < pEnd; ++p) mine += !ghost[p - chart0];
+  PetscCallMPI(MPI_Allreduce(&mine, count, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
+double EdgeLength(const VertexCoordinates& x, DM dm, PetscInt edge) {
+  const PetscInt* cone;
+  (void)DMPlexGetCone(dm, edge, &cone);
+  const auto a = x(cone[0]), b = x(cone[1]);
+  return std::hypot(b[0] - a[0], b[1] - a[1]);
+}
+
+}  // namespace
+
+PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  DM dm = specimen.wave;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  s->ranks = size;
+  s->source = specimen.source;
+  VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  DMLabel crack, tip;
+  PetscCall(DMGetLabel(dm, labels::crack, &crack));
+  PetscCall(DMGetLabel(dm, labels::crack_tip, &tip));
+
+  const std::size_t nc = specimen.cracks.size();
+  std::vector<PetscInt> facets(nc, 0), pairs(nc, 0), tips(nc, 0);
+  std::vector<double> length(nc, 0.0);
+  std::vector<bool> ghost;
+  PetscCall(GhostPoints(dm, &ghost));
+  PetscInt chart0, cStart, cEnd, bulk = 0, cohesive = 0;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  double h_min = INFINITY, h_max = 0.0;
+  PetscInt corners = 0;
+  std::set<PetscInt> tensor_edges_seen;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool is_cohesive;
+    PetscCall(IsCohesiveCell(dm, c, &is_cohesive));
+    const PetscInt* cone;
+    PetscInt cone_size;
+    PetscCall(DMPlexGetConeSize(dm, c, &cone_size));
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    if (!is_cohesive) {
+      ++bulk;
+      corners = cone_size;
+      for (PetscInt k = 0; k < cone_size; ++k) {
+        const double h = EdgeLength(x, dm, cone[k]);
+        h_min = std::min(h_min, h);
+        h_max = std::max(h_max, h);
+      }
+      continue;
+    }
+    ++cohesive;  // cohesive cells are never ghosts (no overlap)
+    PetscInt id;
+    PetscCall(DMLabelGetValue(crack, cone[0], &id));
+    PetscCheck(id >= 1 && id <= static_cast<PetscInt>(nc), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "cohesive cell %" PetscInt_FMT " has no crack label", c);
+    ++facets[id - 1];
+    length[id - 1] += EdgeLength(x, dm, cone[0]);
+    for (PetscInt k = 2; k < 4; ++k) {  // tensor edges: (side A, side B) vertex pairs
+      const PetscInt* pair;
+      PetscCall(DMPlexGetCone(dm, cone[k], &pair));
+      if (pair[0] != pair[1] && !ghost[cone[k] - chart0] && tensor_edges_seen.insert(cone[k]).second) ++pairs[id - 1];
+    }
+  }
+  // Tips: vertices labelled crack_tip, attributed to the crack of a face they bound.
+  IS tip_is;
+  PetscCall(DMLabelGetStratumIS(tip, 1, &tip_is));
+  if (tip_is) {
+    PetscInt n;
+    const PetscInt* v;
+    PetscCall(ISGetLocalSize(tip_is, &n));
+    PetscCall(ISGetIndices(tip_is, &v));
+    for (PetscInt i = 0; i < n; ++i) {
+      if (ghost[v[i] - chart0]) continue;
+      const PetscInt* support;
+      PetscInt ns;
+      PetscCall(DMPlexGetSupportSize(dm, v[i], &ns));
+      PetscCall(DMPlexGetSupport(dm, v[i], &support));
+      for (PetscInt k = 0; k < ns; ++k) {
+        PetscInt id;
+        PetscCall(DMLabelGetValue(crack, support[k], &id));
+        if (id >= 1) {
+          ++tips[id - 1];
+          break;
+        }
+      }
+    }
+    PetscCall(ISRestoreIndices(tip_is, &v));
+    PetscCall(ISDestroy(&tip_is));
+  }
+
+  PetscCallMPI(MPI_Allreduce(&bulk, &s->cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&cohesive, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));
+  s->cells_per_rank.assign(size, 0);
+  PetscCallMPI(MPI_Allgather(&bulk, 1, MPIU_INT, s->cells_per_rank.data(), 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allreduce(&h_min, &s->h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&h_max, &s->h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &corners, 1, MPIU_INT, MPI_MAX, comm));
+  s->cell_type = corners == 4 ? "quad" : "tri";
+  PetscCall(CountOwned(dm, 0, &s->vertices));
+  PetscCall(CountOwned(specimen.heat, 0, &s->heat_vertices));
+  PetscInt heat_cells[2];
+  PetscCall(DMPlexGetHeightStratum(specimen.heat, 0, &heat_cells[0], &heat_cells[1]));
+  PetscInt local_heat = heat_cells[1] - heat_cells[0];
+  PetscCallMPI(MPI_Allreduce(&local_heat, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
+  s->cracks.assign(nc, CrackSummary{});
+  for (std::size_t i = 0; i < nc; ++i) {
+    CrackSummary& cs = s->cracks[i];
+    cs.name = specimen.cracks[i].name;
+    cs.requested_length = specimen.cracks[i].requested_length;
+    PetscCallMPI(MPI_Allreduce(&facets[i], &cs.facets, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&pairs[i], &cs.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&tips[i], &cs.tips, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&length[i], &cs.length, 1, MPI_DOUBLE, MPI_SUM, comm));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "Mesh (%s): %" PetscInt_FMT " %s cells, %" PetscInt_FMT " vertices (%" PetscInt_FMT
+                              " before splitting), %" PetscInt_FMT " cohesive cells, %d rank%s\n",
+                        s.source.c_str(), s.cells, s.cell_type.c_str(), s.vertices, s.heat_vertices, s.cohesive_cells,
+                        s.ranks, s.ranks > 1 ? "s" : ""));
+  PetscCall(PetscPrintf(comm, "  element edge length: min %.4g m, max %.4g m\n", s.h_min, s.h_max));
+  if (s.ranks > 1) {
+    PetscCall(PetscPrintf(comm, "  cells per rank:"));
+    for (PetscInt n : s.cells_per_rank) PetscCall(PetscPrintf(comm, " %" PetscInt_FMT, n));
+    PetscCall(PetscPrintf(comm, "\n"));
+  }
+  for (const CrackSummary& c : s.cracks)
+    PetscCall(PetscPrintf(comm, "  %s: %" PetscInt_FMT " facets, %" PetscInt_FMT " contact node pairs, %" PetscInt_FMT
+                                " buried tips, length %.6g m\n",
+                          c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
+  if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::mesh

@@ -1,0 +1,132 @@
+#include "vibrotherm/mesh/scene_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace vibrotherm::mesh {
+
+const char* to_string(EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::Absorbing: return "absorbing";
+    case EdgeKind::Free: return "free";
+    case EdgeKind::Roller: return "roller";
+    case EdgeKind::Fixed: return "fixed";
+    case EdgeKind::Source: return "source";
+  }
+  return "?";
+}
+
+const std::array<EdgeKind, 5>& all_edge_kinds() {
+  static const std::array<EdgeKind, 5> kinds = {EdgeKind::Absorbing, EdgeKind::Free, EdgeKind::Roller,
+                                                EdgeKind::Fixed, EdgeKind::Source};
+  return kinds;
+}
+
+const char* to_string(Side side) {
+  switch (side) {
+    case Side::Bottom: return "bottom";
+    case Side::Right: return "right";
+    case Side::Top: return "top";
+    case Side::Left: return "left";
+  }
+  return "?";
+}
+
+std::array<double, 2> Crack::end(int which) const {
+  const double t = angle_deg * M_PI / 180.0, sign = which == 0 ? -0.5 : 0.5;
+  return {x + sign * length * std::cos(t), y + sign * length * std::sin(t)};
+}
+
+namespace {
+
+[[noreturn]] void reject(const std::string& text) { throw std::invalid_argument(text); }
+
+double tolerance(const SpecimenGeometry& g) { return 1e-9 * std::max(g.width, g.height); }
+
+/// Orientation of the triangle (p, q, r): > 0 counter-clockwise.
+double orient(const std::array<double, 2>& p, const std::array<double, 2>& q, const std::array<double, 2>& r) {
+  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+}
+
+/// Distance between two segments (0 when they intersect).
+double segment_distance(const Crack& a, const Crack& b) {
+  const auto a0 = a.end(0), a1 = a.end(1), b0 = b.end(0), b1 = b.end(1);
+  const double o1 = orient(a0, a1, b0), o2 = orient(a0, a1, b1), o3 = orient(b0, b1, a0), o4 = orient(b0, b1, a1);
+  if (((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0)) && o1 * o2 != 0 && o3 * o4 != 0) return 0.0;
+  auto point_segment = [](const std::array<double, 2>& p, const std::array<double, 2>& s0,
+                          const std::array<double, 2>& s1) {
+    const double dx = s1[0] - s0[0], dy = s1[1] - s0[1];
+    const double t = std::clamp(((p[0] - s0[0]) * dx + (p[1] - s0[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    return std::hypot(p[0] - s0[0] - t * dx, p[1] - s0[1] - t * dy);
+  };
+  return std::min({point_segment(a0, b0, b1), point_segment(a1, b0, b1), point_segment(b0, a0, a1),
+                   point_segment(b1, a0, a1)});
+}
+
+}  // namespace
+
+bool SpecimenGeometry::end_on_boundary(const Crack& c, int which) const {
+  const auto p = c.end(which);
+  const double tol = tolerance(*this);
+  return std::abs(p[0]) <= tol || std::abs(p[0] - width) <= tol || std::abs(p[1]) <= tol ||
+         std::abs(p[1] - height) <= tol;
+}
+
+void SpecimenGeometry::validate() const {
+  std::ostringstream msg;
+  auto positive = [&](const char* option, double v) {
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      msg << option << " must be > 0, got " << v;
+      reject(msg.str());
+    }
+  };
+  positive("-specimen_width", width);
+  positive("-specimen_height", height);
+  positive("-mesh_h", h);
+  positive("-mesh_h_crack", h_crack);
+  positive("-mesh_grading", grading);
+  if (h_crack > h) {
+    msg << "-mesh_h_crack (" << h_crack << ") must not exceed -mesh_h (" << h << ")";
+    reject(msg.str());
+  }
+  const double tol = tolerance(*this);
+  for (std::size_t i = 0; i < cracks.size(); ++i) {
+    const Crack& c = cracks[i];
+    const int id = static_cast<int>(i) + 1;
+    if (!(c.length > 0.0) || !std::isfinite(c.length)) {
+      msg << "-crack_length: crack " << id << " has length " << c.length << " (must be > 0)";
+      reject(msg.str());
+    }
+    if (c.length < 2.0 * h_crack * (1.0 - 1e-12)) {
+      msg << "-crack_length: crack " << id << " (length " << c.length << " m) is degenerate: fewer than 2 elements"
+          << " along it at -mesh_h_crack " << h_crack;
+      reject(msg.str());
+    }
+    for (int e = 0; e < 2; ++e) {
+      const auto p = c.end(e);
+      if (p[0] < -tol || p[0] > width + tol || p[1] < -tol || p[1] > height + tol) {
+        msg << "-crack_center/-crack_length/-crack_angle: crack " << id << " reaches beyond the specimen (end at ("
+            << p[0] << ", " << p[1] << "), specimen [0, " << width << "] x [0, " << height << "])";
+        reject(msg.str());
+      }
+    }
+    const auto p0 = c.end(0), p1 = c.end(1);
+    const bool along_edge = (std::abs(p0[0] - p1[0]) <= tol && (std::abs(p0[0]) <= tol || std::abs(p0[0] - width) <= tol)) ||
+                            (std::abs(p0[1] - p1[1]) <= tol && (std::abs(p0[1]) <= tol || std::abs(p0[1] - height) <= tol));
+    if (along_edge) {
+      msg << "-crack_center: crack " << id << " lies along an outer edge";
+      reject(msg.str());
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (segment_distance(c, cracks[j]) < 0.5 * h_crack) {
+        msg << "-crack_center: cracks " << j + 1 << " and " << id << " cross or come closer than half an element ("
+            << 0.5 * h_crack << " m)";
+        reject(msg.str());
+      }
+    }
+  }
+}
+
+}  // namespace vibrotherm::mesh
