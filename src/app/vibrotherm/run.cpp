@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string>
 
+#include "vibrotherm/interface/contact_options.hpp"
 #include "vibrotherm/io/mesh_output.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
@@ -41,13 +42,16 @@ PetscErrorCode Run(MPI_Comm comm) {
                                output_dir, output_dir, sizeof(output_dir), nullptr));
   PetscOptionsEnd();
   const std::string dir = output_dir;
-  PetscCall(MakeOutputDirectory(comm, dir));
 
+  // All input is checked before anything is written.
+  contact::ContactParameters contact_params;
+  PetscCall(ReadContactOptions(comm, contact_params));
   io::RunSummary summary;
   mesh::Specimen specimen;
   double t = MPI_Wtime();
   PetscCall(mesh::SpecimenCreate(comm, &specimen));
   summary.stages["mesh"] = MPI_Wtime() - t;
+  PetscCall(MakeOutputDirectory(comm, dir));
   PetscCall(mesh::ComputeMeshSummary(specimen, &summary.mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary.mesh));
 

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Requirement: each bad input gets one clear line naming the option or file,
+# exit code 2, and no output files.
+#   test_bad_input.sh VIBROTHERM_EXECUTABLE SOURCE_DIR
+set -u
+exe=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+box="-specimen_width 0.05 -specimen_height 0.1 -mesh_h 0.004 -mesh_h_crack 0.001"
+crack="-crack_center 0.025,0.05 -crack_length 0.02 -crack_angle 20"
+passed=0
+failed=0
+
+expect_error() {  # expected-substring, then vibrotherm options
+  local expected=$1
+  shift
+  local out="$work/out$((passed + failed))"
+  "$exe" -output_dir "$out" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$?
+  local lines
+  lines=$(grep -c . "$work/stderr")
+  if [ "$code" -eq 2 ] && grep -qF -- "$expected" "$work/stderr" && [ "$lines" -eq 1 ] && [ ! -e "$out" ]; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAILED: vibrotherm $* -> exit $code, expected 2 and one line with: $expected" >&2
+    sed 's/^/  stderr: /' "$work/stderr" >&2
+    [ -e "$out" ] && echo "  output left behind: $(ls "$out")" >&2
+  fi
+}
+
+expect_error "crack 1 reaches beyond the specimen" $box -crack_center 0.045,0.05 -crack_length 0.02 -crack_angle 0
+expect_error "cracks 1 and 2 cross" $box -crack_center 0.025,0.05,0.025,0.05 -crack_length 0.02 -crack_angle 0,90
+expect_error "-mesh_h must be > 0" $box $crack -mesh_h 0
+expect_error "-mesh_h_crack must be > 0" $box $crack -mesh_h_crack -0.001
+expect_error "-specimen_width must be > 0" $box $crack -specimen_width -0.05
+expect_error "-mesh_file $work/missing.msh: cannot open the file" -mesh_file "$work/missing.msh"
+expect_error "no boundary physical group" -mesh_file "$src/tests/data/no_boundary_groups.msh"
+expect_error "-mesh_cell: unknown value 'hex'" $box $crack -mesh_cell hex
+expect_error "-edge_top: unknown value 'glue'" $box $crack -edge_top glue
+expect_error "-crack_law: unknown value 'velcro'" $box $crack -crack_law velcro
+expect_error "-contact_normal_law: unknown value 'cubic'" $box $crack -contact_normal_law cubic
+expect_error "-contact_mu must be >= 0" $box $crack -contact_mu -0.5
+expect_error "is degenerate: fewer than 2 elements" $box -crack_center 0.025,0.05 -crack_length 0.0015 -crack_angle 0
+expect_error "-crack_length is required" $box -crack_center 0.025,0.05
+expect_error "lies along an outer edge" $box -crack_center 0.025,0.0 -crack_length 0.01 -crack_angle 0
+
+echo "bad input: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Requirement: `vibrotherm -mesh_only` on the paper scene writes summary.json,
+mesh.h5 and mesh.xmf (complete, readable), and the serial and 2-rank runs give
+the same mesh (counts, crack facets, node pairs, length).
+
+usage: test_mesh_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
+import json, os, subprocess, sys, tempfile
+import xml.etree.ElementTree as ET
+
+exe, src, mpiexec = sys.argv[1:4]
+failures = []
+checks = 0
+
+
+def check(ok, what):
+    global checks
+    checks += 1
+    if not ok:
+        failures.append(what)
+        print("FAILED:", what, file=sys.stderr)
+
+
+summaries = {}
+with tempfile.TemporaryDirectory() as tmp:
+    for ranks in (1, 2):
+        out = os.path.join(tmp, "np%d" % ranks)
+        cmd = [mpiexec, "-n", str(ranks), "--oversubscribe", exe, "-options_file",
+               os.path.join(src, "options/paper.opts"), "-mesh_only", "-output_dir", out]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr))
+        if r.returncode:
+            continue
+        s = json.load(open(os.path.join(out, "summary.json")))
+        summaries[ranks] = s
+        check(s["ranks"] == ranks, "ranks in summary")
+        check(not any(f.endswith(".partial") for f in os.listdir(out)), "partial files left")
+        xmf = ET.parse(os.path.join(out, "mesh.xmf")).getroot()
+        grids = {g.get("Name"): g for g in xmf.iter("Grid")}
+        check(set(grids) == {"specimen", "cracks"}, "xmf grids %s" % set(grids))
+        topo = grids["specimen"].find("Topology")
+        check(int(topo.get("NumberOfElements")) == s["mesh"]["cells"], "xmf cell count")
+        try:
+            import h5py
+            with h5py.File(os.path.join(out, "mesh.h5"), "r") as f:
+                check(f["viz/topology/cells"].shape[0] == s["mesh"]["cells"], "h5 cells")
+                check(f["geometry/vertices"].shape[0] == s["mesh"]["vertices"], "h5 vertices")
+        except ImportError:
+            failures.append("python3-h5py missing")
+
+if 1 in summaries and 2 in summaries:
+    m1, m2 = summaries[1]["mesh"], summaries[2]["mesh"]
+    for key in ("cells", "vertices", "cohesive_cells", "heat_cells", "heat_vertices", "h_min", "h_max"):
+        check(m1[key] == m2[key], "%s: serial %s vs 2 ranks %s" % (key, m1[key], m2[key]))
+    for c1, c2 in zip(m1["cracks"], m2["cracks"]):
+        same_counts = all(c1[k] == c2[k] for k in ("name", "facets", "contact_node_pairs", "buried_tips"))
+        check(same_counts, "crack counts differ between 1 and 2 ranks: %s vs %s" % (c1, c2))
+        # Summation order differs across ranks: equal to rounding.
+        check(abs(c1["length"] - c2["length"]) <= 1e-14 * c1["length"], "crack length differs across ranks")
+    c = m1["cracks"][0]
+    check(abs(c["length"] - 0.02) <= 1e-12 * 0.02, "paper crack length %r" % c["length"])
+    check(c["contact_node_pairs"] == c["facets"] - 1 and c["buried_tips"] == 2, "paper crack pairs/tips")
+    check(sum(m2["cells_per_rank"]) == m2["cells"], "cells per rank add up")
+
+print("mesh scene: %d passed, %d failed" % (checks - len(failures), len(failures)))
+sys.exit(1 if failures else 0)
