@@ -116,7 +116,9 @@ Tail build_tail(const Breakpoint* pts, std::size_t n, const NormalLaw& law, cons
   const double sigma = (f_next - pts[i].f) / (alpha_next - pts[i].alpha);
   double T = pts[i].T_before;
   if (q > pts[i].alpha + eps_alpha && q < a2 - eps_alpha) {
-    const NormalLawValue at_q = law.eval(q);
+    tail.at_q = law.eval(q);
+    tail.has_q_value = true;
+    const NormalLawValue& at_q = tail.at_q;
     T += inv_theta * sigma * (at_q.N - pts[i].law.N) + s * cfg.mu * (tail.N - at_q.N);
     tail.alpha[tail.count] = q;
     tail.f[tail.count++] = L + s * tm * q;
@@ -176,7 +178,9 @@ StepResult MemoryDiagram::commit(const NormalLaw& law, const MmdConfig& cfg, dou
   const double a1 = a_, b1 = b_;
   if (!(a2 > 0.0)) {  // contact lost inside the step, at a = 0
     const double b_end = b1 + a1 / (a1 - a2) * (b2 - b1);
-    result.dW = detail::path_dissipation(pts_.data(), pts_.size(), law, cfg, 0.0, b_end - b0_, 0.0);
+    Tail to_zero;  // ends at a = 0: everything detaches, nothing is left below
+    to_zero.q = 0.0;
+    result.dW = detail::path_dissipation(pts_.data(), pts_.size(), law, cfg, 0.0, b_end - b0_, to_zero);
     pts_.clear();
     a_ = a2;
     b_ = b0_ = b2;
@@ -184,14 +188,16 @@ StepResult MemoryDiagram::commit(const NormalLaw& law, const MmdConfig& cfg, dou
   }
   const double bt2 = b2 - b0_;
   const Tail tail = detail::build_tail(pts_.data(), pts_.size(), law, cfg, a2, bt2);
-  result.dW = detail::path_dissipation(pts_.data(), pts_.size(), law, cfg, a2, bt2, tail.q);
+  result.dW = detail::path_dissipation(pts_.data(), pts_.size(), law, cfg, a2, bt2, tail);
   result.N = tail.N;
   result.T = tail.T;
   result.state = tail.state;
 
   pts_.resize(tail.keep);
-  for (int k = 0; k < tail.count; ++k)
-    push_point(law, cfg, tail.alpha[k], tail.f[k], k + 1 == tail.count ? &tail.apex : nullptr);
+  for (int k = 0; k < tail.count; ++k) {
+    const bool apex = k + 1 == tail.count, at_q = tail.has_q_value && tail.alpha[k] == tail.q;
+    push_point(law, cfg, tail.alpha[k], tail.f[k], apex ? &tail.apex : (at_q ? &tail.at_q : nullptr));
+  }
   if (tail.state == ContactState::Slide) b0_ = b2 - tail.f[0];
   a_ = a2;
   b_ = b2;

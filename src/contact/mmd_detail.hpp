@@ -20,6 +20,8 @@ struct Tail {
   double alpha[3] = {0, 0, 0}, f[3] = {0, 0, 0};
   double N = 0.0, T = 0.0; ///< tractions of the new diagram
   NormalLawValue apex;     ///< law at a2
+  NormalLawValue at_q;     ///< law at q (valid when q is a new point or has_q_value)
+  bool has_q_value = false;
 };
 
 /// Clips the old diagram pts[0..n) (α_{n-1} = a1, f_{n-1} = b̃1) to the wedge of
@@ -30,7 +32,8 @@ Tail build_tail(const Breakpoint* pts, std::size_t n, const NormalLaw& law, cons
 /// Friction work (J/m²) of the spring bed along the straight path from the old
 /// diagram's apex (a1, b̃1) to (a2, bt2), a2 >= 0, all b̃ relative to the same b0.
 /// q_final: left end of the slipped zone among springs below min(a1, a2).
+/// The law values of `tail` at a2 and q are reused (no pow() twice).
 double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& law, const MmdConfig& cfg,
-                        double a2, double bt2, double q_final);
+                        double a2, double bt2, const Tail& tail);
 
 }  // namespace vibrotherm::contact::detail

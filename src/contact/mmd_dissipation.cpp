@@ -98,7 +98,8 @@ double segment_work(const PathStep& st, const NormalLaw& law, const Affine& g, d
 }  // namespace
 
 double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& law, const MmdConfig& cfg, double a2,
-                        double bt2, double q_final) {
+                        double bt2, const Tail& tail) {
+  const double q_final = tail.q;
   const double tm = cfg.theta * cfg.mu;
   const double a1 = pts[n - 1].alpha, bt1 = pts[n - 1].f;
   const double da = a2 - a1, db = bt2 - bt1;
@@ -110,7 +111,7 @@ double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& l
   // P(α) = (a2 − α)² / (2Δa).
   if (da > 0.0) {
     const double r = st.r_lo > 0.0 ? st.r_lo : st.r_up;
-    const NormalLawValue l2 = law.eval(a2);
+    const NormalLawValue& l2 = tail.apex;
     const NormalLawValue& l1 = pts[n - 1].law;
     // At a2: P = P' = 0, so only P''M remains there.
     const double P1 = 0.5 * da, dP1 = -1.0, ddP = 1.0 / da;
@@ -124,7 +125,7 @@ double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& l
     if (B.alpha <= q_final) break;
     const Affine g{A.alpha, A.f, (B.f - A.f) / (B.alpha - A.alpha)};
     const double l = std::max(A.alpha, q_final);
-    const NormalLawValue law_l = l == A.alpha ? A.law : law.eval(l);
+    const NormalLawValue law_l = l == A.alpha ? A.law : (tail.has_q_value && l == tail.q ? tail.at_q : law.eval(l));
     work += segment_work(st, law, g, l, law_l, B.alpha, B.law, a2);
   }
 

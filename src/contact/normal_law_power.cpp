@@ -9,20 +9,33 @@ namespace {
 
 class PowerLaw final : public NormalLaw {
  public:
-  PowerLaw(double C, double p, std::string name) : C_(C), p_(p), name_(std::move(name)) {}
+  PowerLaw(double C, double p, std::string name)
+      : C_(C), p_(p), name_(std::move(name)),
+        shape_(p == 1.0 ? Shape::Linear : p == 1.5 ? Shape::Hertz : p == 2.0 ? Shape::Quadratic : Shape::General) {}
 
   NormalLawValue eval(double a) const override {
     if (!(a > 0.0)) return {};
-    // One pow gives all three: N' = pN/a, M = Na/(p+1).
-    const double N = C_ * std::pow(a, p_);
+    // One power gives all three: N' = pN/a, M = Na/(p+1). The exponents of the
+    // default laws (Biwa m = 1/2: p = 2; Hertz: p = 3/2) avoid pow(), the hot
+    // spot of the MMD update.
+    double ap;
+    switch (shape_) {
+      case Shape::Linear: ap = a; break;
+      case Shape::Hertz: ap = a * std::sqrt(a); break;
+      case Shape::Quadratic: ap = a * a; break;
+      default: ap = std::pow(a, p_);
+    }
+    const double N = C_ * ap;
     return {N, p_ * N / a, N * a / (p_ + 1.0)};
   }
   double stiffness_at_zero() const override { return p_ == 1.0 ? C_ : 0.0; }
   std::string name() const override { return name_; }
 
  private:
+  enum class Shape { Linear, Hertz, Quadratic, General };
   double C_, p_;
   std::string name_;
+  Shape shape_;
 };
 
 }  // namespace
