@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "vibrotherm/contact/crack_law.hpp"
@@ -33,6 +34,22 @@ History make_history(std::size_t cells, std::size_t steps, const ContactParamete
   return h;
 }
 
+/// One crack's worth of MMD cells in their virgin state, and the history to drive them.
+struct CrackCells {
+  static constexpr std::size_t cells = 1000, steps = 1000;
+  History history;
+  std::unique_ptr<CrackLaw> law;
+  std::size_t step = 0;
+  explicit CrackCells(const ContactParameters& p) : history(make_history(cells, steps, p)), law(create_crack_law(p)) {
+    law->initialize(cells, history.a.data(), history.b.data());
+  }
+  /// Advances to the next step (cycling) and returns the offset of its rows.
+  std::size_t next() {
+    step = step + 1 < steps ? step + 1 : 1;
+    return step * cells;
+  }
+};
+
 /// Commits per second; arg 0: Biwa m = 1/2 (paper default, p = 2), arg 1: power
 /// law with a general exponent p = 1.7 (pow() in every law evaluation).
 void BM_MmdCommit(benchmark::State& state) {
@@ -43,41 +60,32 @@ void BM_MmdCommit(benchmark::State& state) {
     p.normal_C = 1e6 / std::pow(1e-8, 1.7);
   }
   state.SetLabel(state.range(0) == 1 ? "power p=1.7" : "biwa m=0.5");
-  const std::size_t cells = 1000, steps = 1000;
-  const History h = make_history(cells, steps, p);
-  auto law = create_crack_law(p);
-  law->initialize(cells, h.a.data(), h.b.data());
-  std::size_t k = 1;
+  CrackCells crack(p);
   double W = 0.0;
   for (auto _ : state) {
-    for (std::size_t c = 0; c < cells; ++c) W += law->commit(c, h.a[k * cells + c], h.b[k * cells + c]).dW;
-    k = k + 1 < steps ? k + 1 : 1;
+    const std::size_t row = crack.next();
+    for (std::size_t c = 0; c < crack.cells; ++c)
+      W += crack.law->commit(c, crack.history.a[row + c], crack.history.b[row + c]).dW;
   }
   benchmark::DoNotOptimize(W);
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * cells));
-  state.counters["updates_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * cells),
+  state.counters["updates_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * crack.cells),
                                                        benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_MmdCommit)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // What the wave solver does per step with velocity Verlet: one trial (RHS) and one commit.
 void BM_MmdTrialAndCommit(benchmark::State& state) {
-  ContactParameters p;
-  const std::size_t cells = 1000, steps = 1000;
-  const History h = make_history(cells, steps, p);
-  auto law = create_crack_law(p);
-  law->initialize(cells, h.a.data(), h.b.data());
-  std::size_t k = 1;
+  CrackCells crack{ContactParameters{}};
   double sum = 0.0;
   for (auto _ : state) {
-    for (std::size_t c = 0; c < cells; ++c) {
-      sum += law->trial(c, h.a[k * cells + c], h.b[k * cells + c]).T;
-      sum += law->commit(c, h.a[k * cells + c], h.b[k * cells + c]).dW;
+    const std::size_t row = crack.next();
+    for (std::size_t c = 0; c < crack.cells; ++c) {
+      const double a = crack.history.a[row + c], b = crack.history.b[row + c];
+      sum += crack.law->trial(c, a, b).T + crack.law->commit(c, a, b).dW;
     }
-    k = k + 1 < steps ? k + 1 : 1;
   }
   benchmark::DoNotOptimize(sum);
-  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * cells),
+  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * crack.cells),
                                                      benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_MmdTrialAndCommit)->Unit(benchmark::kMicrosecond);

@@ -1,30 +1,19 @@
 #include "vibrotherm/contact/cell_history.hpp"
 
+#include "vibrotherm/contact/csv_rows.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <ostream>
 
 namespace vibrotherm::contact {
 
 std::vector<HistoryPoint> read_history_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("-history " + path + ": cannot open the file");
   std::vector<HistoryPoint> rows;
-  std::string text;
-  int line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
-    if (rows.empty() && std::isalpha(static_cast<unsigned char>(text[first]))) continue;  // header
-    std::replace(text.begin(), text.end(), ',', ' ');
-    std::istringstream fields(text);
-    HistoryPoint p{};
-    if (!(fields >> p.t >> p.a >> p.b) || !std::isfinite(p.t) || !std::isfinite(p.a) || !std::isfinite(p.b))
-      throw InputError("-history " + path + " line " + std::to_string(line) + ": expected three numbers 't,a,b'");
+  for (const CsvRow& r : read_csv_rows(path, "-history", 3, "t,a,b")) {
+    const HistoryPoint p{r.values[0], r.values[1], r.values[2]};
     if (!rows.empty() && !(p.t > rows.back().t))
-      throw InputError("-history " + path + " line " + std::to_string(line) + ": t must increase");
+      throw InputError("-history " + path + " line " + std::to_string(r.line) + ": t must increase");
     rows.push_back(p);
   }
   if (rows.size() < 2) throw InputError("-history " + path + ": needs at least two rows");

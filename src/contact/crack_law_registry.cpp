@@ -1,4 +1,5 @@
 #include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/contact/registry.hpp"
 
 namespace vibrotherm::contact {
 
@@ -15,12 +16,7 @@ const std::vector<CrackLawEntry>& crack_laws() {
 
 std::unique_ptr<CrackLaw> create_crack_law(const ContactParameters& params) {
   params.validate();
-  std::string known;
-  for (const auto& entry : crack_laws()) {
-    if (params.crack_law == entry.name) return entry.create(params);
-    known += known.empty() ? entry.name : std::string("|") + entry.name;
-  }
-  throw InputError("-crack_law: unknown law '" + params.crack_law + "' (known: " + known + ")");
+  return find_entry(crack_laws(), params.crack_law, "-crack_law").create(params);
 }
 
 }  // namespace vibrotherm::contact

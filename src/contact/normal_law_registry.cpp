@@ -1,4 +1,5 @@
 #include "vibrotherm/contact/normal_law_registry.hpp"
+#include "vibrotherm/contact/registry.hpp"
 
 namespace vibrotherm::contact {
 
@@ -13,12 +14,7 @@ const std::vector<NormalLawEntry>& normal_laws() {
 }
 
 std::unique_ptr<NormalLaw> create_normal_law(const ContactParameters& params) {
-  std::string known;
-  for (const auto& entry : normal_laws()) {
-    if (params.normal_law == entry.name) return entry.create(params);
-    known += known.empty() ? entry.name : std::string("|") + entry.name;
-  }
-  throw InputError("-contact_normal_law: unknown law '" + params.normal_law + "' (known: " + known + ")");
+  return find_entry(normal_laws(), params.normal_law, "-contact_normal_law").create(params);
 }
 
 }  // namespace vibrotherm::contact

@@ -8,11 +8,10 @@
 // node slopes. M = ∫N is then a piecewise cubic, exact.
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <vector>
 
+#include "vibrotherm/contact/csv_rows.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
 
 namespace vibrotherm::contact {
@@ -50,25 +49,10 @@ struct Row {
 
 std::vector<Row> read_rows(const std::string& file) {
   const std::string opt = "-contact_normal_table " + file;
-  std::ifstream in(file);
-  if (!in) throw InputError(opt + ": cannot open the file");
   std::vector<Row> rows;
-  std::string text;
-  int line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
-    std::replace(text.begin(), text.end(), ',', ' ');
-    std::istringstream fields(text);
-    Row r{0, 0, line};
-    if (!(fields >> r.a >> r.N)) {
-      if (rows.empty() && std::isalpha(static_cast<unsigned char>(text[first]))) continue;  // header
-      throw InputError(opt + " line " + std::to_string(line) + ": expected two numbers 'a,N'");
-    }
-    if (!std::isfinite(r.a) || !std::isfinite(r.N) || r.N < 0.0)
-      throw InputError(opt + " line " + std::to_string(line) + ": a must be finite and N >= 0");
-    rows.push_back(r);
+  for (const CsvRow& r : read_csv_rows(file, "-contact_normal_table", 2, "a,N")) {
+    if (r.values[1] < 0.0) throw InputError(opt + " line " + std::to_string(r.line) + ": N must be >= 0");
+    rows.push_back({r.values[0], r.values[1], r.line});
   }
   if (rows.empty()) throw InputError(opt + ": no data rows");
   if (rows.front().a > 0.0) rows.insert(rows.begin(), Row{0.0, 0.0, rows.front().line});

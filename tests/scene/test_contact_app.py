@@ -7,17 +7,11 @@ PHYSICS.md §3.3 (independent of the code); bad options are rejected by name.
 usage: test_contact_app.py VIBROTHERM_CONTACT"""
 import csv, math, os, subprocess, sys, tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks
+
 exe = sys.argv[1]
-failures = []
-checks = 0
-
-
-def check(ok, what):
-    global checks
-    checks += 1
-    if not ok:
-        failures.append(what)
-        print("FAILED:", what, file=sys.stderr)
+check = Checks("vibrotherm-contact")
 
 
 def run(args):
@@ -77,5 +71,4 @@ with tempfile.TemporaryDirectory() as tmp:
               "bad input %s: exit %d, stderr %r" % (args, r.returncode, r.stderr))
         check(not os.path.exists(os.path.join(tmp, "bad.csv")), "output written despite %s" % args)
 
-print("vibrotherm-contact: %d passed, %d failed" % (checks - len(failures), len(failures)))
-sys.exit(1 if failures else 0)
+check.finish()

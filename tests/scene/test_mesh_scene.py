@@ -5,19 +5,13 @@ the same mesh (counts, crack facets, node pairs, length).
 
 usage: test_mesh_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import json, os, subprocess, sys, tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks
 import xml.etree.ElementTree as ET
 
 exe, src, mpiexec = sys.argv[1:4]
-failures = []
-checks = 0
-
-
-def check(ok, what):
-    global checks
-    checks += 1
-    if not ok:
-        failures.append(what)
-        print("FAILED:", what, file=sys.stderr)
+check = Checks("mesh scene")
 
 
 summaries = {}
@@ -45,7 +39,7 @@ with tempfile.TemporaryDirectory() as tmp:
                 check(f["viz/topology/cells"].shape[0] == s["mesh"]["cells"], "h5 cells")
                 check(f["geometry/vertices"].shape[0] == s["mesh"]["vertices"], "h5 vertices")
         except ImportError:
-            failures.append("python3-h5py missing")
+            check.fail("python3-h5py missing")
 
 if 1 in summaries and 2 in summaries:
     m1, m2 = summaries[1]["mesh"], summaries[2]["mesh"]
@@ -61,5 +55,4 @@ if 1 in summaries and 2 in summaries:
     check(c["contact_node_pairs"] == c["facets"] - 1 and c["buried_tips"] == 2, "paper crack pairs/tips")
     check(sum(m2["cells_per_rank"]) == m2["cells"], "cells per rank add up")
 
-print("mesh scene: %d passed, %d failed" % (checks - len(failures), len(failures)))
-sys.exit(1 if failures else 0)
+check.finish()
