@@ -46,7 +46,7 @@ PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p) 
   PetscCall(ReadChoice(comm, PetscOptionsObject, "-contact_normal_law", "Normal law N(a)", contact::normal_laws(),
                        p.normal_law));
   PetscCall(PetscOptionsReal("-contact_normal_C",
-                             "power: C in N = C a^p [Pa/m^p]; biwa: C_B in K = C_B N^m (default: law's own)", nullptr,
+                             "power: C in N = C a^p [Pa/m^p] (default 1e18); biwa: C_B in K = C_B N^m [Pa^(1-m)/m] (default: K = 1e14 Pa/m at 1 MPa, 1e11 for m = 1/2)", nullptr,
                              p.normal_C, &p.normal_C, nullptr));
   PetscCall(PetscOptionsReal("-contact_normal_p", "power: exponent p >= 1", nullptr, p.normal_p, &p.normal_p, nullptr));
   PetscCall(PetscOptionsReal("-contact_normal_m", "biwa: exponent m in (0,1)", nullptr, p.normal_m, &p.normal_m, nullptr));
