@@ -117,8 +117,8 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
   // Fragmenting embeds the crack lines in the surface and splits outer edges
   // where a crack ends on them.
   DimTags out;
-  std::vector<DimTags> produced;
-  gmsh::model::occ::fragment({{2, rectangle}}, cracks, out, produced);
+  std::vector<DimTags> produced(1);
+  if (!cracks.empty()) gmsh::model::occ::fragment({{2, rectangle}}, cracks, out, produced);
   gmsh::model::occ::synchronize();
 
   std::vector<std::vector<int>> crack_curves(g.cracks.size());

@@ -22,6 +22,10 @@ PetscErrorCode RunOnRoot(MPI_Comm comm, Task&& task) {
     } catch (const std::exception& e) {
       error = e.what();
       if (error.empty()) error = "unknown error";
+    } catch (const std::string& e) {  // gmsh throws strings
+      error = "gmsh: " + e;
+    } catch (...) {
+      error = "unknown error";
     }
   }
   int length = static_cast<int>(error.size());

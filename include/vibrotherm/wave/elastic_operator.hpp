@@ -1,0 +1,23 @@
+// The assembled operators of plane-strain elastodynamics on a LagrangeSpace
+// with 2 components: stiffness K (BAIJ, block size 2, assembled once) and the
+// lumped mass M (a vector; both components of a node share its mass).
+//
+//   K_ab^ij = ∫ λ ∂_i φ_a ∂_j φ_b + G (δ_ij ∇φ_a·∇φ_b + ∂_j φ_a ∂_i φ_b)
+//   M_a     = ∫ ρ φ_a            (row-sum lumping: P1, Q1, and Q2 where the row
+//                                 sums are the Gauss–Lobatto weights, all > 0)
+//   M_a     = M_aa^cons · m_e / Σ_b M_bb^cons   (HRZ for P2 triangles, whose
+//                                 row sums vanish or go negative at vertices)
+#pragma once
+
+#include <petscmat.h>
+
+#include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/wave/material.hpp"
+
+namespace vibrotherm::wave {
+
+/// Creates and assembles K (global, from DMCreateMatrix) and the lumped mass (global vector).
+PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
+                                        Vec* lumped_mass);
+
+}  // namespace vibrotherm::wave

@@ -1,0 +1,161 @@
+#include "vibrotherm/fe/lagrange_space.hpp"
+
+#include <cmath>
+
+#include "vibrotherm/mesh/plex_access.hpp"
+
+namespace vibrotherm::fe {
+
+LagrangeSpace::~LagrangeSpace() { (void)PetscFEDestroy(&fe_); }
+
+PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscCheck(degree == 1 || degree == 2, comm, PETSC_ERR_USER_INPUT, "degree must be 1 or 2, got %" PetscInt_FMT, degree);
+  dm_ = dm;
+  degree_ = degree;
+  components_ = components;
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  cells_.clear();
+  PetscInt cone_size = 4;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    PetscCall(mesh::IsCohesiveCell(dm, c, &cohesive));
+    if (cohesive) continue;
+    cells_.push_back(c);
+    PetscCall(DMPlexGetConeSize(dm, c, &cone_size));
+  }
+  // Ranks without cells still need to agree on the element type.
+  PetscInt max_cone = cells_.empty() ? 0 : cone_size;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &max_cone, 1, MPIU_INT, MPI_MAX, comm));
+  simplex_ = max_cone == 3;
+  // Quadrature exact for the mass matrix on affine cells.
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 1, simplex_ ? PETSC_TRUE : PETSC_FALSE, degree, 2 * degree + 1, &fe_));
+  PetscCall(PetscFEGetQuadrature(fe_, &quad_));
+  PetscInt qdim, qnc, np;
+  const PetscReal* points;
+  PetscCall(PetscQuadratureGetData(quad_, &qdim, &qnc, &np, &points, &qweights_));
+  qpoints_ = static_cast<int>(np);
+  PetscCall(PetscFEGetCellTabulation(fe_, 1, &tab_));
+  nodes_ = static_cast<int>(tab_->Nb);
+
+  // Section: dofs per point from the dual space, on the closure of bulk cells only.
+  PetscDualSpace dual;
+  const PetscInt* per_dim;
+  PetscCall(PetscFEGetDualSpace(fe_, &dual));
+  PetscCall(PetscDualSpaceGetNumDof(dual, &per_dim));
+  PetscSection section;
+  PetscInt pStart, pEnd;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(PetscSectionCreate(comm, &section));
+  PetscCall(PetscSectionSetNumFields(section, 1));
+  PetscCall(PetscSectionSetFieldComponents(section, 0, components));
+  PetscCall(PetscSectionSetChart(section, pStart, pEnd));
+  for (PetscInt c : cells_) {
+    PetscInt* closure = nullptr;
+    PetscInt n;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+    for (PetscInt i = 0; i < 2 * n; i += 2) {
+      PetscInt depth;
+      PetscCall(DMPlexGetPointDepth(dm, closure[i], &depth));
+      const PetscInt dofs = per_dim[depth] * components;
+      PetscCall(PetscSectionSetDof(section, closure[i], dofs));
+      PetscCall(PetscSectionSetFieldDof(section, closure[i], 0, dofs));
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+  }
+  PetscCall(PetscSectionSetUp(section));
+  PetscCall(DMSetLocalSection(dm, section));
+  PetscCall(PetscSectionDestroy(&section));
+  PetscCall(DMSetMatType(dm, components > 1 ? MATBAIJ : MATAIJ));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LagrangeSpace::Evaluate(PetscInt cell, CellQuadrature* q) const {
+  PetscFunctionBeginUser;
+  const int Nq = qpoints_, Nb = nodes_;
+  // For non-affine cells v0 holds the physical coordinates of every quadrature point.
+  double v0[2 * 64], J[4 * 64], invJ[4 * 64], detJ[64];
+  PetscCheck(Nq <= 64, PETSC_COMM_SELF, PETSC_ERR_SUP, "too many quadrature points");
+  PetscCall(DMPlexComputeCellGeometryFEM(dm_, cell, quad_, v0, J, invJ, detJ));
+  q->points = Nq;
+  q->nodes = Nb;
+  q->weight.resize(Nq);
+  q->grad.resize(static_cast<std::size_t>(Nq) * Nb * 2);
+  q->value = tab_->T[0];
+  const PetscReal* D = tab_->T[1];  // [q][b][c=1][dim]
+  for (int p = 0; p < Nq; ++p) {
+    q->weight[p] = qweights_[p] * std::abs(detJ[p]);
+    const double* iJ = invJ + 4 * p;
+    for (int b = 0; b < Nb; ++b) {
+      const double d0 = D[(p * Nb + b) * 2], d1 = D[(p * Nb + b) * 2 + 1];
+      // ∂φ/∂x_i = Σ_j ∂φ/∂ξ_j ∂ξ_j/∂x_i, invJ row-major as ∂ξ_j/∂x_i at [j][i].
+      q->grad[(p * Nb + b) * 2] = d0 * iJ[0] + d1 * iJ[2];
+      q->grad[(p * Nb + b) * 2 + 1] = d0 * iJ[1] + d1 * iJ[3];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LagrangeSpace::NodeCoordinates(std::vector<std::array<double, 2>>* coords) const {
+  PetscFunctionBeginUser;
+  PetscSection section;
+  PetscInt size;
+  PetscCall(DMGetLocalSection(dm_, &section));
+  PetscCall(PetscSectionGetStorageSize(section, &size));
+  coords->assign(size / components_, {0.0, 0.0});
+  // Reference coordinates of the nodes: the points of the dual-space functionals.
+  PetscDualSpace dual;
+  PetscCall(PetscFEGetDualSpace(fe_, &dual));
+  std::vector<double> ref(2 * nodes_), real(2 * nodes_);
+  for (int b = 0; b < nodes_; ++b) {
+    PetscQuadrature f;
+    const PetscReal* pts;
+    PetscInt np;
+    PetscCall(PetscDualSpaceGetFunctional(dual, b, &f));
+    PetscCall(PetscQuadratureGetData(f, nullptr, nullptr, &np, &pts, nullptr));
+    ref[2 * b] = pts[0];
+    ref[2 * b + 1] = pts[1];
+  }
+  for (PetscInt c : cells_) {
+    PetscCall(DMPlexReferenceToCoordinates(dm_, c, nodes_, ref.data(), real.data()));
+    PetscInt n, *indices = nullptr;
+    PetscCall(DMPlexGetClosureIndices(dm_, section, section, c, PETSC_TRUE, &n, &indices, nullptr, nullptr));
+    for (int b = 0; b < nodes_; ++b) (*coords)[indices[b * components_] / components_] = {real[2 * b], real[2 * b + 1]};
+    PetscCall(DMPlexRestoreClosureIndices(dm_, section, section, c, PETSC_TRUE, &n, &indices, nullptr, nullptr));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LagrangeSpace::FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
+                                        double* length) const {
+  PetscFunctionBeginUser;
+  PetscSection section;
+  PetscCall(DMGetLocalSection(dm_, &section));
+  const PetscInt* cone;
+  PetscCall(DMPlexGetCone(dm_, face, &cone));
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm_));
+  const auto a = x(cone[0]), b = x(cone[1]);
+  *length = std::hypot(b[0] - a[0], b[1] - a[1]);
+  offsets->clear();
+  weights->clear();
+  // ∫φ ds on a straight edge: P1: L/2, L/2; P2 (Simpson): L/6, L/6 and 4L/6 at the middle.
+  const double end_weight = degree_ == 1 ? 0.5 : 1.0 / 6.0;
+  for (int k = 0; k < 2; ++k) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(section, cone[k], &off));
+    offsets->push_back(off);
+    weights->push_back(end_weight * *length);
+  }
+  if (degree_ == 2) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(section, face, &off));
+    offsets->push_back(off);
+    weights->push_back(4.0 / 6.0 * *length);
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::fe
