@@ -158,4 +158,33 @@ PetscErrorCode LagrangeSpace::FaceNodes(PetscInt face, std::vector<PetscInt>* of
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode LagrangeSpace::Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const {
+  PetscFunctionBeginUser;
+  *cell = -1;
+  const double tol = 1e-10, real[2] = {x, y};
+  for (PetscInt c : cells_) {
+    double r[2];
+    PetscCall(DMPlexCoordinatesToReference(dm_, c, 1, real, r));
+    // Reference cells: [-1,1]^2, or the triangle (-1,-1), (1,-1), (-1,1).
+    const bool inside = simplex_ ? (r[0] >= -1 - tol && r[1] >= -1 - tol && r[0] + r[1] <= tol)
+                                 : (std::abs(r[0]) <= 1 + tol && std::abs(r[1]) <= 1 + tol);
+    if (inside) {
+      *cell = c;
+      *ref = {r[0], r[1]};
+      break;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LagrangeSpace::BasisAt(const std::array<double, 2>& ref, std::vector<double>* phi) const {
+  PetscFunctionBeginUser;
+  PetscTabulation T;
+  const PetscReal point[2] = {ref[0], ref[1]};
+  PetscCall(PetscFECreateTabulation(fe_, 1, 1, point, 0, &T));
+  phi->assign(T->T[0], T->T[0] + nodes_);
+  PetscCall(PetscTabulationDestroy(&T));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::fe

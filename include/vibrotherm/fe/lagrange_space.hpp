@@ -55,6 +55,12 @@ class LagrangeSpace {
   PetscErrorCode FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
                            double* length) const;
 
+  /// The local bulk cell containing (x, y) and the reference coordinates there;
+  /// cell = -1 when no local cell contains it.
+  PetscErrorCode Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
+  /// Basis values at a reference point (nodes_per_cell values).
+  PetscErrorCode BasisAt(const std::array<double, 2>& ref, std::vector<double>* phi) const;
+
  private:
   DM dm_ = nullptr;
   PetscFE fe_ = nullptr;  ///< scalar Lagrange element

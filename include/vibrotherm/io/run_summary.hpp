@@ -15,6 +15,7 @@ struct RunSummary {
   std::vector<std::string> physics_ran;   ///< "wave", "contact", "heat"
   long long dofs_wave = 0, dofs_heat = 0, contact_cells = 0, steps_wave = 0, steps_heat = 0;
   double wall_time_s = 0.0;
+  double max_budget_error = 0.0;
   std::map<std::string, double> stages;   ///< phase → wall seconds
   mesh::MeshSummary mesh;
 };

@@ -2,17 +2,17 @@
 //
 // Today this builds the specimen (mesh, crack split, distribution) and writes
 // the mesh outputs; the wave, interface and heat stages follow (issues 4-6).
-#include <petscsys.h>
+#include <slepcsys.h>
 
 #include "vibrotherm/util/errors.hpp"
 #include "run.hpp"
 
 int main(int argc, char** argv) {
-  PetscCall(PetscInitialize(&argc, &argv, nullptr,
+  PetscCall(SlepcInitialize(&argc, &argv, nullptr,
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
   PetscCall(vibrotherm::PushUserErrorHandler("vibrotherm"));
   const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD);
-  PetscCall(PetscFinalize());
+  PetscCall(SlepcFinalize());
   return vibrotherm::ExitCode(ierr);
 }

@@ -1,0 +1,35 @@
+// energy.csv (J per metre of depth), rank 0, written atomically:
+//   t,work_source,kinetic,strain,radiated,interface_stored,dissipated,
+//   heat_deposited,heat_content,heat_boundary_loss,budget_error
+// budget_error = (work_source − kinetic − strain − radiated − interface_stored
+//                 − dissipated) / max(work_source so far).
+#pragma once
+
+#include <petscsys.h>
+
+#include <memory>
+#include <string>
+
+#include "vibrotherm/io/atomic_file.hpp"
+
+namespace vibrotherm::io {
+
+struct EnergyRow {
+  double t = 0, work_source = 0, kinetic = 0, strain = 0, radiated = 0, interface_stored = 0, dissipated = 0,
+         heat_deposited = 0, heat_content = 0, heat_boundary_loss = 0;
+};
+
+class EnergyLog {
+ public:
+  PetscErrorCode Open(MPI_Comm comm, const std::string& path);
+  /// Appends a row and returns its budget error.
+  PetscErrorCode Record(const EnergyRow& row, double* budget_error);
+  PetscErrorCode Finish();
+  double max_budget_error() const { return max_error_; }
+
+ private:
+  std::unique_ptr<AtomicFile> file_;
+  double max_work_ = 0.0, max_error_ = 0.0;
+};
+
+}  // namespace vibrotherm::io

@@ -1,0 +1,121 @@
+#include "vibrotherm/coupling/driver.hpp"
+
+#include "vibrotherm/io/energy_log.hpp"
+#include "vibrotherm/io/point_probes.hpp"
+#include "vibrotherm/io/progress.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::coupling {
+
+PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
+  PetscFunctionBeginUser;
+  PetscReal points[256];
+  PetscInt npoints = 256;
+  PetscBool has_points = PETSC_FALSE;
+  PetscOptionsBegin(comm, nullptr, "Run control and recording", nullptr);
+  PetscCall(PetscOptionsReal("-final_time", "Simulated time [s] (default: the source duration)", nullptr,
+                             o->final_time, &o->final_time, nullptr));
+  PetscCall(PetscOptionsInt("-energy_every", "Steps between rows of energy.csv", nullptr, o->energy_every,
+                            &o->energy_every, nullptr));
+  PetscCall(PetscOptionsInt("-probe_every", "Steps between rows of probes.csv", nullptr, o->probe_every,
+                            &o->probe_every, nullptr));
+  PetscCall(PetscOptionsRealArray("-probe_points", "Probe points x1,y1,x2,y2,... [m]", nullptr, points, &npoints,
+                                  &has_points));
+  PetscOptionsEnd();
+  PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");
+  PetscCheck(o->probe_every >= 1, comm, PETSC_ERR_USER_INPUT, "-probe_every must be >= 1");
+  o->probe_points.assign(points, points + (has_points ? npoints : 0));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+struct WaveRecorder {
+  const DriverOptions* options;
+  io::PointProbes probes;
+  io::EnergyLog energy;
+  io::Progress progress;
+
+  PetscErrorCode RecordEnergy(const wave::WaveSolver& w) {
+    PetscFunctionBeginUser;
+    wave::WaveEnergy e;
+    PetscCall(w.Energy(&e));
+    io::EnergyRow row;
+    row.t = w.time();
+    row.work_source = e.work_source;
+    row.kinetic = e.kinetic;
+    row.strain = e.strain;
+    row.radiated = e.radiated;
+    PetscCall(energy.Record(row, nullptr));
+    PetscFunctionReturn(0);
+  }
+
+  PetscErrorCode OnStep(const wave::WaveSolver& w) {
+    PetscFunctionBeginUser;
+    if (w.steps() % options->probe_every == 0) {
+      Vec u, v;
+      PetscCall(w.GetFields(&u, &v));
+      PetscCall(probes.Record(w.time(), u, v));
+      PetscCall(w.RestoreFields(&u, &v));
+    }
+    if (w.steps() % options->energy_every == 0) PetscCall(RecordEnergy(w));
+    progress.Update(w.time(), w.steps());
+    PetscFunctionReturn(0);
+  }
+};
+
+}  // namespace
+
+PetscErrorCode RunWaves(const mesh::Specimen& specimen, const std::string& dir, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
+  PetscLogStage setup_stage, step_stage;
+  PetscCall(PetscLogStageRegister("Wave setup", &setup_stage));
+  PetscCall(PetscLogStageRegister("Wave steps", &step_stage));
+
+  wave::ElasticMaterial material;
+  wave::Excitation excitation;
+  wave::WaveOptions wave_options;
+  DriverOptions options;
+  PetscCall(wave::ReadElasticMaterial(comm, &material));
+  PetscCall(wave::ReadExcitation(comm, &excitation));
+  PetscCall(wave::ReadWaveOptions(comm, &wave_options));
+  PetscCall(ReadDriverOptions(comm, &options));
+  const double final_time = options.final_time > 0.0 ? options.final_time : excitation.signal.duration;
+
+  double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(setup_stage));
+  wave::WaveSolver solver;
+  PetscCall(solver.Setup(specimen.wave, material, excitation, wave_options));
+  WaveRecorder recorder{&options, {}, {}, {}};
+  PetscCall(recorder.probes.Setup(solver.space(), options.probe_points, dir + "/probes.csv"));
+  PetscCall(recorder.energy.Open(comm, dir + "/energy.csv"));
+  PetscCall(PetscLogStagePop());
+  summary->stages["wave_setup"] = MPI_Wtime() - t0;
+  PetscCall(PetscPrintf(comm,
+                        "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
+                        "omega_max %.4g rad/s), %.0f steps to t = %g s\n",
+                        solver.dofs(), wave_options.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
+                        std::ceil(final_time / solver.dt()), final_time));
+
+  solver.on_step = [&recorder](const wave::WaveSolver& w) { return recorder.OnStep(w); };
+  recorder.progress.Start(comm, "wave", 0.0, final_time);
+  t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(step_stage));
+  PetscCall(recorder.RecordEnergy(solver));  // t = 0
+  PetscCall(solver.Advance(final_time));
+  PetscCall(PetscLogStagePop());
+  summary->stages["wave_steps"] = MPI_Wtime() - t0;
+  recorder.progress.Done(solver.time(), solver.steps());
+  if (solver.steps() % options.energy_every != 0) PetscCall(recorder.RecordEnergy(solver));
+  PetscCall(recorder.probes.Finish());
+  PetscCall(recorder.energy.Finish());
+
+  summary->physics_ran.push_back("wave");
+  summary->dofs_wave = solver.dofs();
+  summary->steps_wave = solver.steps();
+  summary->max_budget_error = recorder.energy.max_budget_error();
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,341 @@
+#include "vibrotherm/wave/wave_solver.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "vibrotherm/wave/elastic_operator.hpp"
+#include "vibrotherm/wave/stability.hpp"
+
+namespace vibrotherm::wave {
+
+PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, "wave_", "Elastic waves", nullptr);
+  PetscCall(PetscOptionsInt("-wave_degree", "Lagrange degree of the displacement (1 or 2)", nullptr, o->degree,
+                            &o->degree, nullptr));
+  PetscCall(PetscOptionsReal("-wave_cfl", "Time step as a fraction of the explicit stability limit", nullptr, o->cfl,
+                             &o->cfl, nullptr));
+  PetscCall(PetscOptionsReal("-wave_dt", "Time step [s] (default: cfl x stability limit)", nullptr, o->dt, &o->dt,
+                             nullptr));
+  PetscOptionsEnd();
+  PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
+             o->degree);
+  PetscCheck(o->cfl > 0.0 && o->cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_cfl must be in (0, 1], got %g", o->cfl);
+  PetscCheck(o->dt >= 0.0, comm, PETSC_ERR_USER_INPUT, "-wave_dt must be > 0, got %g", o->dt);
+  PetscFunctionReturn(0);
+}
+
+WaveSolver::~WaveSolver() {
+  (void)TSDestroy(&ts_);
+  for (Vec* v : {&X_, &u_prev_, &v_prev_, &force_, &M_, &Minv_}) (void)VecDestroy(v);
+  (void)ISDestroy(&is_u_);
+  (void)ISDestroy(&is_v_);
+  (void)MatDestroy(&K_);
+}
+
+PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const Excitation& excitation,
+                                 const WaveOptions& options) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  dm_ = dm;
+  material_ = material;
+  excitation_ = excitation;
+  options_ = options;
+  PetscCall(space_.Setup(dm, options.degree, 2));
+  PetscCall(AssembleElasticOperators(space_, material, &K_, &M_));
+  PetscCall(VecDuplicate(M_, &Minv_));
+  PetscCall(VecCopy(M_, Minv_));
+  PetscCall(VecReciprocal(Minv_));
+  PetscCall(BuildWaveBoundary(space_, material, excitation, &boundary_));
+  reaction_.assign(boundary_.constraints.size(), 0.0);
+
+  PetscInt n, rstart;
+  PetscCall(VecGetLocalSize(M_, &n));
+  PetscCall(VecGetSize(M_, &global_dofs_));
+  PetscCall(VecCreateMPI(comm, 2 * n, PETSC_DETERMINE, &X_));
+  PetscCall(VecSet(X_, 0.0));
+  PetscCall(VecGetOwnershipRange(X_, &rstart, nullptr));
+  PetscCall(ISCreateStride(comm, n, rstart, 1, &is_u_));
+  PetscCall(ISCreateStride(comm, n, rstart + n, 1, &is_v_));
+  for (Vec* v : {&u_prev_, &v_prev_, &force_}) {
+    PetscCall(VecDuplicate(M_, v));
+    PetscCall(VecSet(*v, 0.0));
+  }
+
+  PetscCall(TSCreate(comm, &ts_));
+  PetscCall(TSSetOptionsPrefix(ts_, "wave_"));
+  PetscCall(TSSetApplicationContext(ts_, this));
+  PetscCall(TSSetProblemType(ts_, TS_NONLINEAR));
+  PetscCall(TSSetType(ts_, TSBASICSYMPLECTIC));
+  PetscCall(TSBasicSymplecticSetType(ts_, TSBASICSYMPLECTICVELVERLET));
+  PetscCall(TSSetRHSFunction(ts_, nullptr, RHSFull, this));
+  PetscCall(TSRHSSplitSetIS(ts_, "position", is_u_));
+  PetscCall(TSRHSSplitSetIS(ts_, "momentum", is_v_));
+  PetscCall(TSRHSSplitSetRHSFunction(ts_, "position", nullptr, RHSPosition, this));
+  PetscCall(TSRHSSplitSetRHSFunction(ts_, "momentum", nullptr, RHSMomentum, this));
+  PetscCall(TSSetPostStep(ts_, PostStep));
+  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_MATCHSTEP));
+  TSAdapt adapt;
+  PetscCall(TSGetAdapt(ts_, &adapt));
+  PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));  // fixed steps unless the options say otherwise
+  PetscCall(TSSetFromOptions(ts_));
+  TSType type;
+  PetscCall(TSGetType(ts_, &type));
+  symplectic_ = std::string(type) == TSBASICSYMPLECTIC;
+  // Types 1 and 2 kick once per step with coefficient 1: the trapezoidal dashpot is exact there.
+  char scheme[16] = TSBASICSYMPLECTICVELVERLET;
+  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_basicsymplectic_type", scheme, sizeof(scheme), nullptr));
+  trapezoidal_kick_ = symplectic_ && (std::string(scheme) == "1" || std::string(scheme) == "2");
+
+  // Stable step: ω_max (SLEPc) and the measured (ω dt)_max of this TS type.
+  double omega_dt_max;
+  bool implicit;
+  PetscCall(LargestAngularFrequency(K_, M_, &omega_max_));
+  PetscCall(OscillatorStabilityLimit("wave_", &omega_dt_max, &implicit));
+  PetscCheck(implicit || omega_dt_max > 0.05, comm, PETSC_ERR_USER_INPUT,
+             "-wave_ts_type %s is unstable for undamped waves (its stability region misses the imaginary axis); use "
+             "basicsymplectic, rk with -wave_ts_rk_type 4, or ssp with -wave_ts_ssp_type rk104",
+             type);
+  stable_dt_ = implicit ? INFINITY : omega_dt_max / omega_max_;
+  const double reference_dt = implicit ? 2.0 / omega_max_ : stable_dt_;
+  if (options.dt > 0.0) {
+    PetscCheck(implicit || options.dt <= stable_dt_, comm, PETSC_ERR_USER_INPUT,
+               "-wave_dt %g s exceeds the stability limit %g s of -wave_ts_type %s (omega_max %g rad/s); use "
+               "-wave_dt <= %g or -wave_cfl",
+               options.dt, stable_dt_, type, omega_max_, stable_dt_);
+    dt_ = options.dt;
+  } else {
+    dt_ = options.cfl * reference_dt;
+  }
+  PetscCall(TSSetTimeStep(ts_, dt_));
+  PetscCall(TSSetTime(ts_, 0.0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt) {
+  PetscFunctionBeginUser;
+  PetscCall(MatMult(K_, u, a));
+  PetscCall(VecScale(a, -1.0));
+  double g, dg, ddg;
+  excitation_.signal.evaluate(t, &g, &dg, &ddg);
+  if (boundary_.traction_shape && g != 0.0) PetscCall(VecAXPY(a, g, boundary_.traction_shape));
+  PetscScalar* A;
+  const PetscScalar *V, *Mass;
+  PetscCall(VecGetArray(a, &A));
+  PetscCall(VecGetArrayRead(v, &V));
+  PetscCall(VecGetArrayRead(M_, &Mass));
+  for (const Dashpot& d : boundary_.dashpots) {
+    const PetscInt i = 2 * d.node;
+    const double vx = V[i], vy = V[i + 1];
+    const double fx = A[i] - (d.xx * vx + d.xy * vy), fy = A[i + 1] - (d.xy * vx + d.yy * vy);
+    if (kick_dt > 0.0) {
+      // (m I + h/2 C) acc = F − C v: the dashpot acts on the mean velocity of the kick.
+      const double m = Mass[i], h = 0.5 * kick_dt;
+      const double a11 = m + h * d.xx, a12 = h * d.xy, a22 = m + h * d.yy, det = a11 * a22 - a12 * a12;
+      A[i] = m * (a22 * fx - a12 * fy) / det;
+      A[i + 1] = m * (a11 * fy - a12 * fx) / det;
+    } else {
+      A[i] = fx;
+      A[i + 1] = fy;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(v, &V));
+  PetscCall(VecRestoreArray(a, &A));
+  PetscCall(VecPointwiseMult(a, a, Minv_));
+  PetscCall(VecGetArray(a, &A));
+  for (std::size_t k = 0; k < boundary_.constraints.size(); ++k) {
+    const Constraint& c = boundary_.constraints[k];
+    const PetscInt i = 2 * c.node;
+    const double target = c.source ? ddg : 0.0, along = A[i] * c.d[0] + A[i + 1] * c.d[1];
+    reaction_[k] = Mass[i] * (target - along);  // what the support adds along d
+    A[i] += (target - along) * c.d[0];
+    A[i + 1] += (target - along) * c.d[1];
+  }
+  PetscCall(VecRestoreArray(a, &A));
+  PetscCall(VecRestoreArrayRead(M_, &Mass));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::RHSFull(TS, PetscReal t, Vec X, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<WaveSolver*>(ctx);
+  Vec u, v, fu, fv;
+  PetscCall(VecGetSubVector(X, self->is_u_, &u));
+  PetscCall(VecGetSubVector(X, self->is_v_, &v));
+  PetscCall(VecGetSubVector(F, self->is_u_, &fu));
+  PetscCall(VecGetSubVector(F, self->is_v_, &fv));
+  PetscCall(VecCopy(v, fu));
+  PetscCall(self->Acceleration(t, u, v, fv, 0.0));
+  PetscCall(VecRestoreSubVector(F, self->is_v_, &fv));
+  PetscCall(VecRestoreSubVector(F, self->is_u_, &fu));
+  PetscCall(VecRestoreSubVector(X, self->is_v_, &v));
+  PetscCall(VecRestoreSubVector(X, self->is_u_, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::RHSPosition(TS, PetscReal, Vec v, Vec f, void*) { return VecCopy(v, f); }
+
+PetscErrorCode WaveSolver::RHSMomentum(TS, PetscReal t, Vec u, Vec f, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<WaveSolver*>(ctx);
+  // The momentum function sees positions only; the velocity is the live part of
+  // the state. The TS passed in is basicsymplectic's sub-TS: take the step from ours.
+  Vec v;
+  PetscReal h;
+  PetscCall(TSGetTimeStep(self->ts_, &h));
+  PetscCall(VecGetSubVector(self->X_, self->is_v_, &v));
+  PetscCall(self->Acceleration(t, u, v, f, self->trapezoidal_kick_ ? h : 0.0));
+  PetscCall(VecRestoreSubVector(self->X_, self->is_v_, &v));
+  self->reaction_from_kick_ = self->trapezoidal_kick_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::ImposeConstraints(double t, Vec u, Vec v) const {
+  PetscFunctionBeginUser;
+  if (boundary_.constraints.empty()) PetscFunctionReturn(0);
+  double g, dg, ddg;
+  excitation_.signal.evaluate(t, &g, &dg, &ddg);
+  PetscScalar *U, *V;
+  PetscCall(VecGetArray(u, &U));
+  PetscCall(VecGetArray(v, &V));
+  for (const Constraint& c : boundary_.constraints) {
+    const PetscInt i = 2 * c.node;
+    const double tu = c.source ? g : 0.0, tv = c.source ? dg : 0.0;
+    const double au = U[i] * c.d[0] + U[i + 1] * c.d[1], av = V[i] * c.d[0] + V[i + 1] * c.d[1];
+    U[i] += (tu - au) * c.d[0];
+    U[i + 1] += (tu - au) * c.d[1];
+    V[i] += (tv - av) * c.d[0];
+    V[i + 1] += (tv - av) * c.d[1];
+  }
+  PetscCall(VecRestoreArray(u, &U));
+  PetscCall(VecRestoreArray(v, &V));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::AccountStep(double t, double h) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  Vec u, v;
+  PetscCall(GetFields(&u, &v));
+  double local[2] = {0.0, 0.0};  // radiated, source work
+  const PetscScalar *U, *V, *U0, *V0;
+  PetscCall(VecGetArrayRead(u, &U));
+  PetscCall(VecGetArrayRead(v, &V));
+  PetscCall(VecGetArrayRead(u_prev_, &U0));
+  PetscCall(VecGetArrayRead(v_prev_, &V0));
+  for (const Dashpot& d : boundary_.dashpots) {  // h v̄ᵀ C v̄ with the mean velocity of the step
+    const PetscInt i = 2 * d.node;
+    const double vx = 0.5 * (V[i] + V0[i]), vy = 0.5 * (V[i + 1] + V0[i + 1]);
+    local[0] += h * (d.xx * vx * vx + 2.0 * d.xy * vx * vy + d.yy * vy * vy);
+  }
+  double g, dg, ddg, g0, dg0, ddg0, gm, dgm, ddgm;
+  excitation_.signal.evaluate(t, &g, &dg, &ddg);
+  excitation_.signal.evaluate(t - h, &g0, &dg0, &ddg0);
+  excitation_.signal.evaluate(t - 0.5 * h, &gm, &dgm, &ddgm);
+  if (excitation_.type == SourceType::Displacement) {
+    if (reaction_from_kick_) {  // the kick's support force times the prescribed displacement increment
+      for (std::size_t k = 0; k < boundary_.constraints.size(); ++k)
+        if (boundary_.constraints[k].source) local[1] += reaction_[k] * (g - g0);
+    } else {  // trapezoid of the support power, the force evaluated at the end state
+      PetscCall(Acceleration(t, u, v, force_, 0.0));
+      double power = 0.0;
+      for (std::size_t k = 0; k < boundary_.constraints.size(); ++k)
+        if (boundary_.constraints[k].source) power += reaction_[k] * dg;
+      double total_power;
+      PetscCallMPI(MPI_Allreduce(&power, &total_power, 1, MPI_DOUBLE, MPI_SUM, comm));
+      if (PetscGlobalRank == 0) local[1] += 0.5 * h * (source_power_prev_ + total_power);
+      source_power_prev_ = total_power;
+    }
+  } else if (boundary_.traction_shape) {  // g(t_mid) f · Δu
+    const PetscScalar* S;
+    PetscCall(VecGetArrayRead(boundary_.traction_shape, &S));
+    PetscInt n;
+    PetscCall(VecGetLocalSize(u, &n));
+    for (PetscInt i = 0; i < n; ++i)
+      if (S[i] != 0.0) local[1] += gm * S[i] * (U[i] - U0[i]);
+    PetscCall(VecRestoreArrayRead(boundary_.traction_shape, &S));
+  }
+  PetscCall(VecRestoreArrayRead(u, &U));
+  PetscCall(VecRestoreArrayRead(v, &V));
+  PetscCall(VecRestoreArrayRead(u_prev_, &U0));
+  PetscCall(VecRestoreArrayRead(v_prev_, &V0));
+  double global[2];
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm));
+  accounted_.radiated += global[0];
+  accounted_.work_source += global[1];
+  PetscCall(VecCopy(u, u_prev_));
+  PetscCall(VecCopy(v, v_prev_));
+  PetscCall(RestoreFields(&u, &v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::PostStep(TS ts) {
+  PetscFunctionBeginUser;
+  WaveSolver* self;
+  PetscCall(TSGetApplicationContext(ts, &self));
+  PetscReal t;
+  PetscCall(TSGetTime(ts, &t));
+  const double h = t - self->time_;
+  Vec u, v;
+  PetscCall(self->GetFields(&u, &v));
+  PetscCall(self->ImposeConstraints(t, u, v));
+  PetscCall(self->RestoreFields(&u, &v));
+  PetscCall(self->AccountStep(t, h));
+  self->reaction_from_kick_ = false;
+  self->time_ = t;
+  ++self->steps_;
+  if (self->steps_ % 50 == 0) {
+    PetscReal norm;
+    PetscCall(VecNorm(self->X_, NORM_INFINITY, &norm));
+    PetscCheck(std::isfinite(norm), PetscObjectComm((PetscObject)ts), PETSC_ERR_NOT_CONVERGED,
+               "wave solution blew up at step %" PetscInt_FMT " (t = %g s, dt = %g s, stability limit %g s): likely "
+               "cause: a time step above the stability limit or a too stiff contact law",
+               self->steps_, t, h, self->stable_dt_);
+  }
+  if (self->on_step) PetscCall(self->on_step(*self));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Advance(double t_end) {
+  PetscFunctionBeginUser;
+  if (t_end <= time_) PetscFunctionReturn(0);
+  PetscCall(TSSetMaxTime(ts_, t_end));
+  PetscCall(TSSetMaxSteps(ts_, PETSC_MAX_INT));
+  PetscCall(TSSolve(ts_, X_));
+  PetscCall(TSSetTimeStep(ts_, dt_));  // MATCHSTEP may have shortened the last step
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::GetFields(Vec* u, Vec* v) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecGetSubVector(X_, is_u_, u));
+  PetscCall(VecGetSubVector(X_, is_v_, v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::RestoreFields(Vec* u, Vec* v) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreSubVector(X_, is_v_, v));
+  PetscCall(VecRestoreSubVector(X_, is_u_, u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
+  PetscFunctionBeginUser;
+  Vec u, v, work;
+  PetscCall(GetFields(&u, &v));
+  PetscCall(VecDuplicate(u, &work));
+  PetscCall(VecPointwiseMult(work, v, v));
+  PetscScalar kinetic, strain;
+  PetscCall(VecDot(work, M_, &kinetic));
+  PetscCall(MatMult(K_, u, work));
+  PetscCall(VecDot(u, work, &strain));
+  PetscCall(VecDestroy(&work));
+  PetscCall(RestoreFields(&u, &v));
+  *e = accounted_;
+  e->kinetic = 0.5 * PetscRealPart(kinetic);
+  e->strain = 0.5 * PetscRealPart(strain);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::wave
