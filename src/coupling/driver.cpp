@@ -46,6 +46,7 @@ struct WaveRecorder {
     row.kinetic = e.kinetic;
     row.strain = e.strain;
     row.radiated = e.radiated;
+    row.integrator_correction = e.integrator;
     PetscCall(energy.Record(row, nullptr));
     PetscFunctionReturn(0);
   }
@@ -103,7 +104,7 @@ PetscErrorCode RunWaves(const mesh::Specimen& specimen, const std::string& dir, 
   t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(step_stage));
   PetscCall(recorder.RecordEnergy(solver));  // t = 0
-  PetscCall(solver.Advance(final_time));
+  PetscCall(solver.AdvanceTo(final_time));
   PetscCall(PetscLogStagePop());
   summary->stages["wave_steps"] = MPI_Wtime() - t0;
   recorder.progress.Done(solver.time(), solver.steps());

@@ -158,6 +158,15 @@ PetscErrorCode LagrangeSpace::FaceNodes(PetscInt face, std::vector<PetscInt>* of
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode LagrangeSpace::QuadraturePoints(PetscInt cell, std::vector<double>* xy) const {
+  PetscFunctionBeginUser;
+  const PetscReal* ref;
+  PetscCall(PetscQuadratureGetData(quad_, nullptr, nullptr, nullptr, &ref, nullptr));
+  xy->resize(2 * qpoints_);
+  PetscCall(DMPlexReferenceToCoordinates(dm_, cell, qpoints_, ref, xy->data()));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode LagrangeSpace::Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const {
   PetscFunctionBeginUser;
   *cell = -1;

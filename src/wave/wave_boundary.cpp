@@ -174,14 +174,28 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
     PetscCall(VecRestoreArrayRead(gxy[k], &A[k][2]));
     PetscCall(VecRestoreArrayRead(gsum[k], &A[k][3]));
   }
-  // A node whose motion is prescribed cannot absorb: its dashpot would only
-  // exchange energy with the support. Keep dashpots on free nodes.
-  std::vector<bool> constrained(nlocal / 2, false);
-  for (const Constraint& c : bc->constraints) constrained[c.node] = true;
-  std::vector<Dashpot> free_dashpots;
-  for (const Dashpot& d : bc->dashpots)
-    if (!constrained[d.node]) free_dashpots.push_back(d);
-  bc->dashpots.swap(free_dashpots);
+  // A prescribed component cannot absorb (its dashpot would only exchange energy
+  // with the support): keep each dashpot on the free directions of its node,
+  // C ← P C P with P = I − d dᵀ for every constrained direction d.
+  std::vector<std::vector<const Constraint*>> constrained(nlocal / 2);
+  for (const Constraint& c : bc->constraints) constrained[c.node].push_back(&c);
+  std::vector<Dashpot> kept;
+  for (Dashpot d : bc->dashpots) {
+    for (const Constraint* c : constrained[d.node]) {
+      const double P[2][2] = {{1 - c->d[0] * c->d[0], -c->d[0] * c->d[1]}, {-c->d[0] * c->d[1], 1 - c->d[1] * c->d[1]}};
+      const double C[2][2] = {{d.xx, d.xy}, {d.xy, d.yy}};
+      double PC[2][2], PCP[2][2];
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) PC[i][j] = P[i][0] * C[0][j] + P[i][1] * C[1][j];
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) PCP[i][j] = PC[i][0] * P[0][j] + PC[i][1] * P[1][j];
+      d.xx = PCP[0][0];
+      d.xy = PCP[0][1];
+      d.yy = PCP[1][1];
+    }
+    if (d.xx + d.yy > 1e-12 * (std::abs(d.xx) + std::abs(d.yy) + 1e-300)) kept.push_back(d);
+  }
+  bc->dashpots.swap(kept);
   if (!displacement) {
     bc->traction_shape = gsum[Source];
     gsum[Source] = nullptr;

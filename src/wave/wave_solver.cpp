@@ -1,5 +1,6 @@
 #include "vibrotherm/wave/wave_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,7 +11,7 @@ namespace vibrotherm::wave {
 
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "wave_", "Elastic waves", nullptr);
+  PetscOptionsBegin(comm, nullptr, "Elastic waves", nullptr);
   PetscCall(PetscOptionsInt("-wave_degree", "Lagrange degree of the displacement (1 or 2)", nullptr, o->degree,
                             &o->degree, nullptr));
   PetscCall(PetscOptionsReal("-wave_cfl", "Time step as a fraction of the explicit stability limit", nullptr, o->cfl,
@@ -74,7 +75,7 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(TSRHSSplitSetRHSFunction(ts_, "position", nullptr, RHSPosition, this));
   PetscCall(TSRHSSplitSetRHSFunction(ts_, "momentum", nullptr, RHSMomentum, this));
   PetscCall(TSSetPostStep(ts_, PostStep));
-  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_STEPOVER));  // Advance() lands on the end time itself
   TSAdapt adapt;
   PetscCall(TSGetAdapt(ts_, &adapt));
   PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));  // fixed steps unless the options say otherwise
@@ -86,6 +87,7 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   char scheme[16] = TSBASICSYMPLECTICVELVERLET;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_basicsymplectic_type", scheme, sizeof(scheme), nullptr));
   trapezoidal_kick_ = symplectic_ && (std::string(scheme) == "1" || std::string(scheme) == "2");
+  velocity_verlet_ = symplectic_ && std::string(scheme) == "2";
 
   // Stable step: ω_max (SLEPc) and the measured (ω dt)_max of this TS type.
   double omega_dt_max;
@@ -296,13 +298,36 @@ PetscErrorCode WaveSolver::PostStep(TS ts) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::Advance(double t_end) {
+PetscInt WaveSolver::StepsUntil(double t_end) const {
+  return std::max<PetscInt>(0, static_cast<PetscInt>(std::floor((t_end - time_) / dt_ * (1.0 + 1e-12))));
+}
+
+PetscErrorCode WaveSolver::AdvanceSteps(PetscInt n) {
   PetscFunctionBeginUser;
-  if (t_end <= time_) PetscFunctionReturn(0);
-  PetscCall(TSSetMaxTime(ts_, t_end));
-  PetscCall(TSSetMaxSteps(ts_, PETSC_MAX_INT));
+  if (n <= 0) PetscFunctionReturn(0);
+  PetscInt done;
+  PetscCall(TSGetStepNumber(ts_, &done));
+  PetscCall(TSSetTimeStep(ts_, dt_));
+  PetscCall(TSSetMaxSteps(ts_, done + n));
+  PetscCall(TSSetMaxTime(ts_, 1e300));
   PetscCall(TSSolve(ts_, X_));
-  PetscCall(TSSetTimeStep(ts_, dt_));  // MATCHSTEP may have shortened the last step
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::AdvanceTo(double t_end) {
+  PetscFunctionBeginUser;
+  // The TS's own MATCHSTEP goes through TSAdaptChoose, which basicsymplectic
+  // never calls (it would step over t_end): land on t_end here.
+  PetscCall(AdvanceSteps(StepsUntil(t_end)));
+  const double remaining = t_end - time_;
+  if (remaining > 1e-9 * dt_) {
+    PetscInt done;
+    PetscCall(TSGetStepNumber(ts_, &done));
+    PetscCall(TSSetTimeStep(ts_, remaining));
+    PetscCall(TSSetMaxSteps(ts_, done + 1));
+    PetscCall(TSSolve(ts_, X_));
+    PetscCall(TSSetTimeStep(ts_, dt_));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -326,15 +351,20 @@ PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscCall(GetFields(&u, &v));
   PetscCall(VecDuplicate(u, &work));
   PetscCall(VecPointwiseMult(work, v, v));
-  PetscScalar kinetic, strain;
+  PetscScalar kinetic, strain, vKv = 0.0;
   PetscCall(VecDot(work, M_, &kinetic));
   PetscCall(MatMult(K_, u, work));
   PetscCall(VecDot(u, work, &strain));
+  if (velocity_verlet_) {
+    PetscCall(MatMult(K_, v, work));
+    PetscCall(VecDot(v, work, &vKv));
+  }
   PetscCall(VecDestroy(&work));
   PetscCall(RestoreFields(&u, &v));
   *e = accounted_;
   e->kinetic = 0.5 * PetscRealPart(kinetic);
   e->strain = 0.5 * PetscRealPart(strain);
+  e->integrator = -dt_ * dt_ / 8.0 * PetscRealPart(vKv);
   PetscFunctionReturn(0);
 }
 

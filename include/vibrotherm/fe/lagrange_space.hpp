@@ -55,6 +55,8 @@ class LagrangeSpace {
   PetscErrorCode FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
                            double* length) const;
 
+  /// Physical coordinates of cell's quadrature points (x, y per point).
+  PetscErrorCode QuadraturePoints(PetscInt cell, std::vector<double>* xy) const;
   /// The local bulk cell containing (x, y) and the reference coordinates there;
   /// cell = -1 when no local cell contains it.
   PetscErrorCode Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
