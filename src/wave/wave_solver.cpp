@@ -107,7 +107,11 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
                options.dt, stable_dt_, type, omega_max_, stable_dt_);
     dt_ = options.dt;
   } else {
-    dt_ = options.cfl * reference_dt;
+    // Rounded down to 4 significant digits: the eigenvalue solve converges to
+    // 1e-8, and its last digits differ with the number of ranks; a rounded step
+    // keeps runs on different rank counts on the same time grid.
+    const double raw = options.cfl * reference_dt, scale = std::pow(10.0, std::floor(std::log10(raw)) - 3);
+    dt_ = std::floor(raw / scale) * scale;
   }
   PetscCall(TSSetTimeStep(ts_, dt_));
   PetscCall(TSSetTime(ts_, 0.0));

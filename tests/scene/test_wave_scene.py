@@ -1,0 +1,48 @@
+#!/usr/bin/python3
+"""Requirement: a short run of the paper scene (waves only) writes probes.csv,
+energy.csv and summary.json; the 2-rank probe series equal the serial ones to
+1e-10 of their amplitude; the energy budget closes (velocity Verlet) and the
+summary says the wave solver ran.
+
+usage: test_wave_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
+import csv, json, os, subprocess, sys, tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks
+
+exe, src, mpiexec = sys.argv[1:4]
+check = Checks("wave scene")
+probes = "0.025,0.099,0.025,0.03,0.01,0.05,0.04,0.07"
+runs = {}
+with tempfile.TemporaryDirectory() as tmp:
+    for ranks in (1, 2):
+        out = os.path.join(tmp, "np%d" % ranks)
+        cmd = [mpiexec, "-n", str(ranks), "--oversubscribe", exe, "-options_file", os.path.join(src, "options/paper.opts"),
+               "-final_time", "3e-5", "-probe_points", probes, "-probe_every", "10", "-output_dir", out]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr[-2000:]))
+        if r.returncode:
+            continue
+        rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+        energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        runs[ranks] = (rows, energy, summary)
+        check(summary["physics_ran"] == ["wave"], "physics_ran %s" % summary["physics_ran"])
+        check(summary["steps_wave"] > 100, "steps_wave %s" % summary["steps_wave"])
+        # budget_error divides by the work done so far: ill-conditioned in the first
+        # steps (work ~1e-9 J/m); 1 % overall (issue 7), 1e-3 once 2 % of the run is done.
+        check(summary["max_budget_error"] < 1e-2, "budget error %s" % summary["max_budget_error"])
+        late = [abs(float(e["budget_error"])) for e in energy if float(e["t"]) > 0.02 * 3e-5]
+        check(max(late) < 1e-3, "budget error after the start %s" % max(late))
+        check(float(energy[-1]["work_source"]) > 0, "the source did work")
+        check(len(rows) == 4 * (summary["steps_wave"] // 10), "probe rows %d" % len(rows))
+
+if 1 in runs and 2 in runs:
+    a, b = runs[1][0], runs[2][0]
+    check(len(a) == len(b), "row counts differ: %d vs %d" % (len(a), len(b)))
+    for col in ("ux", "uy", "vx", "vy"):
+        scale = max(abs(float(r[col])) for r in a) or 1.0
+        worst = max(abs(float(x[col]) - float(y[col])) for x, y in zip(a, b)) / scale
+        check(worst <= 1e-10, "%s: 2 ranks differ from serial by %.3g of the amplitude" % (col, worst))
+    check(all(float(x["t"]) == float(y["t"]) for x, y in zip(a, b)), "probe times differ")
+check.finish()
