@@ -3,7 +3,8 @@
 #include "vibrotherm/io/energy_log.hpp"
 #include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/io/progress.hpp"
-#include "vibrotherm/wave/wave_solver.hpp"
+#include <array>
+#include <cmath>
 
 namespace vibrotherm::coupling {
 
@@ -67,50 +68,61 @@ struct WaveRecorder {
 
 }  // namespace
 
-PetscErrorCode RunWaves(const mesh::Specimen& specimen, const std::string& dir, io::RunSummary* summary) {
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
-  PetscLogStage setup_stage, step_stage;
+  PetscLogStage setup_stage;
   PetscCall(PetscLogStageRegister("Wave setup", &setup_stage));
-  PetscCall(PetscLogStageRegister("Wave steps", &step_stage));
-
-  wave::ElasticMaterial material;
-  wave::Excitation excitation;
-  wave::WaveOptions wave_options;
-  DriverOptions options;
-  PetscCall(wave::ReadElasticMaterial(comm, &material));
-  PetscCall(wave::ReadExcitation(comm, &excitation));
-  PetscCall(wave::ReadWaveOptions(comm, &wave_options));
-  PetscCall(ReadDriverOptions(comm, &options));
-  const double final_time = options.final_time > 0.0 ? options.final_time : excitation.signal.duration;
-
-  double t0 = MPI_Wtime();
+  PetscCall(PetscLogStageRegister("Wave steps", &steps_stage_));
+  PetscCall(wave::ReadElasticMaterial(comm, &material_));
+  PetscCall(wave::ReadExcitation(comm, &excitation_));
+  PetscCall(wave::ReadWaveOptions(comm, &wave_options_));
+  PetscCall(ReadDriverOptions(comm, &options_));
+  final_time_ = options_.final_time > 0.0 ? options_.final_time : excitation_.signal.duration;
+  const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(setup_stage));
-  wave::WaveSolver solver;
-  PetscCall(solver.Setup(specimen.wave, material, excitation, wave_options));
-  WaveRecorder recorder{&options, {}, {}, {}};
-  PetscCall(recorder.probes.Setup(solver.space(), options.probe_points, dir + "/probes.csv"));
-  PetscCall(recorder.energy.Open(comm, dir + "/energy.csv"));
+  wave_ = std::make_unique<wave::WaveSolver>();
+  PetscCall(wave_->Setup(specimen.wave, material_, excitation_, wave_options_));
   PetscCall(PetscLogStagePop());
   summary->stages["wave_setup"] = MPI_Wtime() - t0;
+  // Probe points are input too: check them before anything is written.
+  for (std::size_t i = 0; i + 1 < options_.probe_points.size(); i += 2) {
+    PetscInt cell;
+    std::array<double, 2> ref;
+    PetscCall(wave_->space().Locate(options_.probe_points[i], options_.probe_points[i + 1], &cell, &ref));
+    PetscInt found = cell >= 0, anywhere;
+    PetscCallMPI(MPI_Allreduce(&found, &anywhere, 1, MPIU_INT, MPI_MAX, comm));
+    PetscCheck(anywhere, comm, PETSC_ERR_USER_INPUT, "-probe_points: point %zu (%g, %g) lies outside the specimen",
+               i / 2 + 1, options_.probe_points[i], options_.probe_points[i + 1]);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = *wave_;
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
+  WaveRecorder recorder{&options_, {}, {}, {}};
+  PetscCall(recorder.probes.Setup(solver.space(), options_.probe_points, dir + "/probes.csv"));
+  PetscCall(recorder.energy.Open(comm, dir + "/energy.csv"));
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), %.0f steps to t = %g s\n",
-                        solver.dofs(), wave_options.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
-                        std::ceil(final_time / solver.dt()), final_time));
-
+                        solver.dofs(), wave_options_.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
+                        std::ceil(final_time_ / solver.dt()), final_time_));
   solver.on_step = [&recorder](const wave::WaveSolver& w) { return recorder.OnStep(w); };
-  recorder.progress.Start(comm, "wave", 0.0, final_time);
-  t0 = MPI_Wtime();
-  PetscCall(PetscLogStagePush(step_stage));
+  recorder.progress.Start(comm, "wave", 0.0, final_time_);
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(steps_stage_));
   PetscCall(recorder.RecordEnergy(solver));  // t = 0
-  PetscCall(solver.AdvanceTo(final_time));
+  PetscCall(solver.AdvanceTo(final_time_));
   PetscCall(PetscLogStagePop());
   summary->stages["wave_steps"] = MPI_Wtime() - t0;
   recorder.progress.Done(solver.time(), solver.steps());
-  if (solver.steps() % options.energy_every != 0) PetscCall(recorder.RecordEnergy(solver));
+  if (solver.steps() % options_.energy_every != 0) PetscCall(recorder.RecordEnergy(solver));
   PetscCall(recorder.probes.Finish());
   PetscCall(recorder.energy.Finish());
+  solver.on_step = nullptr;
 
   summary->physics_ran.push_back("wave");
   summary->dofs_wave = solver.dofs();

@@ -46,5 +46,12 @@ expect_error "is degenerate: fewer than 2 elements" $box -crack_center 0.025,0.0
 expect_error "-crack_length is required" $box -crack_center 0.025,0.05
 expect_error "lies along an outer edge" $box -crack_center 0.025,0.0 -crack_length 0.01 -crack_angle 0
 
+# Wave-stage input is checked before anything is written too.
+expect_error "-wave_dt 1e-06 s exceeds the stability limit" $box $crack -wave_dt 1e-6
+expect_error "-wave_degree must be 1 or 2" $box $crack -wave_degree 3
+expect_error "-source_type: unknown value 'pulse'" $box $crack -source_type pulse
+expect_error "-probe_points: point 2 (0.2, 0.05) lies outside the specimen" $box $crack -probe_points 0.01,0.01,0.2,0.05
+expect_error "-material_nu must be in (-1, 0.5)" $box $crack -material_nu 0.5
+
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

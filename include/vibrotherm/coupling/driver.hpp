@@ -1,14 +1,19 @@
 // The run loop: which physics run, for how long, and what is recorded.
 // Today: elastic waves (issue 4); the crack interface and heat plug in here.
+//
+// Setup() reads and checks every option and builds the solvers; only then does
+// the application create the output directory, so bad input leaves no output.
 #pragma once
 
 #include <petscsys.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -20,8 +25,21 @@ struct DriverOptions {
 };
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options);
 
-/// Runs the wave solver on the specimen, writes probes.csv and energy.csv to dir
-/// and fills the wave part of the summary.
-PetscErrorCode RunWaves(const mesh::Specimen& specimen, const std::string& dir, io::RunSummary* summary);
+class Simulation {
+ public:
+  /// Reads the options and builds the wave solver on the specimen's wave mesh.
+  PetscErrorCode Setup(const mesh::Specimen& specimen, io::RunSummary* summary);
+  /// Runs to the final time, writing probes.csv and energy.csv into dir.
+  PetscErrorCode Run(const std::string& dir, io::RunSummary* summary);
+
+ private:
+  DriverOptions options_;
+  double final_time_ = 0.0;
+  wave::ElasticMaterial material_;
+  wave::Excitation excitation_;
+  wave::WaveOptions wave_options_;
+  std::unique_ptr<wave::WaveSolver> wave_;
+  PetscLogStage steps_stage_ = -1;
+};
 
 }  // namespace vibrotherm::coupling

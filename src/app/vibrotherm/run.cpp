@@ -52,15 +52,18 @@ PetscErrorCode Run(MPI_Comm comm) {
   double t = MPI_Wtime();
   PetscCall(mesh::SpecimenCreate(comm, &specimen));
   summary.stages["mesh"] = MPI_Wtime() - t;
-  PetscCall(MakeOutputDirectory(comm, dir));
   PetscCall(mesh::ComputeMeshSummary(specimen, &summary.mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary.mesh));
+  coupling::Simulation simulation;
+  if (!mesh_only) PetscCall(simulation.Setup(specimen, &summary));
 
+  // Everything has been checked: outputs from here on.
+  PetscCall(MakeOutputDirectory(comm, dir));
   t = MPI_Wtime();
   PetscCall(io::WriteMesh(specimen.wave, dir + "/mesh.h5"));
   summary.stages["output"] = MPI_Wtime() - t;
   if (!mesh_only) {
-    PetscCall(coupling::RunWaves(specimen, dir, &summary));
+    PetscCall(simulation.Run(dir, &summary));
     PetscCall(PetscPrintf(comm, "note: the crack interface and heat solvers are not implemented yet (issues 5-6): "
                                 "the crack is open (traction-free)\n"));
   }
