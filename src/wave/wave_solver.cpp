@@ -28,6 +28,9 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
 
 WaveSolver::~WaveSolver() {
   (void)TSDestroy(&ts_);
+  if (u_view_) (void)VecRestoreSubVector(X_, is_u_, &u_view_);
+  if (v_view_) (void)VecRestoreSubVector(X_, is_v_, &v_view_);
+  (void)MatDestroy(&J_);
   for (Vec* v : {&X_, &u_prev_, &v_prev_, &force_, &M_, &Minv_}) (void)VecDestroy(v);
   (void)ISDestroy(&is_u_);
   (void)ISDestroy(&is_v_);
@@ -69,11 +72,8 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(TSSetProblemType(ts_, TS_NONLINEAR));
   PetscCall(TSSetType(ts_, TSBASICSYMPLECTIC));
   PetscCall(TSBasicSymplecticSetType(ts_, TSBASICSYMPLECTICVELVERLET));
-  PetscCall(TSSetRHSFunction(ts_, nullptr, RHSFull, this));
   PetscCall(TSRHSSplitSetIS(ts_, "position", is_u_));
   PetscCall(TSRHSSplitSetIS(ts_, "momentum", is_v_));
-  PetscCall(TSRHSSplitSetRHSFunction(ts_, "position", nullptr, RHSPosition, this));
-  PetscCall(TSRHSSplitSetRHSFunction(ts_, "momentum", nullptr, RHSMomentum, this));
   PetscCall(TSSetPostStep(ts_, PostStep));
   PetscCall(TSSetExactFinalTime(ts_, TS_EXACTFINALTIME_STEPOVER));  // Advance() lands on the end time itself
   TSAdapt adapt;
@@ -83,6 +83,25 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   TSType type;
   PetscCall(TSGetType(ts_, &type));
   symplectic_ = std::string(type) == TSBASICSYMPLECTIC;
+  second_order_ = std::string(type) == TSALPHA2;
+  if (second_order_) {
+    // The TS works on views of the state, so every other part sees its solution.
+    PetscCall(VecGetSubVector(X_, is_u_, &u_view_));
+    PetscCall(VecGetSubVector(X_, is_v_, &v_view_));
+    PetscCall(TS2SetSolution(ts_, u_view_, v_view_));
+    PetscCall(DMCreateMatrix(dm, &J_));
+    PetscCall(TSSetI2Function(ts_, nullptr, I2Function, this));
+    PetscCall(TSSetI2Jacobian(ts_, J_, J_, I2Jacobian, this));
+    for (const Constraint& c : boundary_.constraints)
+      PetscCheck(std::abs(c.d[0] * c.d[1]) < 1e-12, comm, PETSC_ERR_SUP,
+                 "-wave_ts_type alpha2 supports prescribed components along x or y only (inclined source or roller "
+                 "edge found)");
+  } else {
+    // An RHS function would be subtracted from an implicit residual: only for explicit types.
+    PetscCall(TSSetRHSFunction(ts_, nullptr, RHSFull, this));
+    PetscCall(TSRHSSplitSetRHSFunction(ts_, "position", nullptr, RHSPosition, this));
+    PetscCall(TSRHSSplitSetRHSFunction(ts_, "momentum", nullptr, RHSMomentum, this));
+  }
   // Types 1 and 2 kick once per step with coefficient 1: the trapezoidal dashpot is exact there.
   char scheme[16] = TSBASICSYMPLECTICVELVERLET;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_basicsymplectic_type", scheme, sizeof(scheme), nullptr));
@@ -314,7 +333,7 @@ PetscErrorCode WaveSolver::AdvanceSteps(PetscInt n) {
   PetscCall(TSSetTimeStep(ts_, dt_));
   PetscCall(TSSetMaxSteps(ts_, done + n));
   PetscCall(TSSetMaxTime(ts_, 1e300));
-  PetscCall(TSSolve(ts_, X_));
+  PetscCall(TSSolve(ts_, second_order_ ? u_view_ : X_));
   PetscFunctionReturn(0);
 }
 
@@ -329,9 +348,92 @@ PetscErrorCode WaveSolver::AdvanceTo(double t_end) {
     PetscCall(TSGetStepNumber(ts_, &done));
     PetscCall(TSSetTimeStep(ts_, remaining));
     PetscCall(TSSetMaxSteps(ts_, done + 1));
-    PetscCall(TSSolve(ts_, X_));
+    PetscCall(TSSolve(ts_, second_order_ ? u_view_ : X_));
     PetscCall(TSSetTimeStep(ts_, dt_));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Forces(double t, Vec u, Vec v, Vec f) const {
+  PetscFunctionBeginUser;
+  PetscCall(MatMult(K_, u, f));
+  PetscCall(VecScale(f, -1.0));
+  double g, dg, ddg;
+  excitation_.signal.evaluate(t, &g, &dg, &ddg);
+  if (boundary_.traction_shape && g != 0.0) PetscCall(VecAXPY(f, g, boundary_.traction_shape));
+  PetscScalar* F;
+  const PetscScalar* V;
+  PetscCall(VecGetArray(f, &F));
+  PetscCall(VecGetArrayRead(v, &V));
+  for (const Dashpot& d : boundary_.dashpots) {
+    const PetscInt i = 2 * d.node;
+    F[i] -= d.xx * V[i] + d.xy * V[i + 1];
+    F[i + 1] -= d.xy * V[i] + d.yy * V[i + 1];
+  }
+  PetscCall(VecRestoreArrayRead(v, &V));
+  PetscCall(VecRestoreArray(f, &F));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::I2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<WaveSolver*>(ctx);
+  PetscCall(self->Forces(t, U, V, F));  // F = f(U, V, t)
+  PetscCall(VecScale(F, -1.0));
+  PetscCall(VecPointwiseMult(self->force_, self->M_, A));
+  PetscCall(VecAXPY(F, 1.0, self->force_));  // M A − f
+  double g, dg, ddg;
+  self->excitation_.signal.evaluate(t, &g, &dg, &ddg);
+  PetscScalar* R;
+  const PetscScalar *Acc, *Mass;
+  PetscCall(VecGetArray(F, &R));
+  PetscCall(VecGetArrayRead(A, &Acc));
+  PetscCall(VecGetArrayRead(self->M_, &Mass));
+  for (const Constraint& c : self->boundary_.constraints) {  // along d: m (A·d − ü_d)
+    const PetscInt i = 2 * c.node;
+    const double target = c.source ? ddg : 0.0, along = R[i] * c.d[0] + R[i + 1] * c.d[1];
+    const double want = Mass[i] * ((Acc[i] * c.d[0] + Acc[i + 1] * c.d[1]) - target);
+    R[i] += (want - along) * c.d[0];
+    R[i + 1] += (want - along) * c.d[1];
+  }
+  PetscCall(VecRestoreArrayRead(self->M_, &Mass));
+  PetscCall(VecRestoreArrayRead(A, &Acc));
+  PetscCall(VecRestoreArray(F, &R));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::I2Jacobian(TS, PetscReal, Vec, Vec, Vec, PetscReal shiftV, PetscReal shiftA, Mat J, Mat,
+                                      void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<WaveSolver*>(ctx);
+  PetscCall(MatCopy(self->K_, J, SAME_NONZERO_PATTERN));
+  PetscCall(VecCopy(self->M_, self->force_));
+  PetscCall(VecScale(self->force_, shiftA));
+  PetscCall(MatDiagonalSet(J, self->force_, ADD_VALUES));
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(self->M_, &rstart, nullptr));
+  for (const Dashpot& d : self->boundary_.dashpots) {
+    const PetscInt rows[2] = {rstart + 2 * d.node, rstart + 2 * d.node + 1};
+    const PetscScalar block[4] = {shiftV * d.xx, shiftV * d.xy, shiftV * d.xy, shiftV * d.yy};
+    PetscCall(MatSetValues(J, 2, rows, 2, rows, block, ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  // Constrained rows (x or y): m shiftA on the diagonal, zero elsewhere.
+  std::vector<PetscInt> rows;
+  std::vector<PetscScalar> diag;
+  const PetscScalar* Mass;
+  PetscCall(VecGetArrayRead(self->M_, &Mass));
+  for (const Constraint& c : self->boundary_.constraints) {
+    const PetscInt comp = std::abs(c.d[0]) > 0.5 ? 0 : 1;
+    rows.push_back(rstart + 2 * c.node + comp);
+    diag.push_back(Mass[2 * c.node] * shiftA);
+  }
+  PetscCall(VecRestoreArrayRead(self->M_, &Mass));
+  PetscCall(MatZeroRows(J, static_cast<PetscInt>(rows.size()), rows.data(), 0.0, nullptr, nullptr));
+  for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(MatSetValue(J, rows[k], rows[k], diag[k], INSERT_VALUES));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 

@@ -41,7 +41,13 @@ TEST(WaveEnergy, BudgetClosesWithSourceAndAbsorbingEdges) {
   const std::string resolved =
       "-specimen_width 0.01 -specimen_height 0.02 -mesh_h 5e-4 -mesh_h_crack 5e-4 -source_frequency 2e5 "
       "-source_amplitude 1e-8 -source_duration 1.5e-5 -source_ramp_cycles 1 ";
-  for (const auto& [ts, bound] : {std::pair<const char*, double>{"", 1e-3}, {"-wave_ts_type rk -wave_ts_rk_type 4", 1e-2}}) {
+  // alpha2 (implicit, generalized-α) also damps a little; at three times the
+  // explicit stability limit (dt = 1.6e-7 s vs 5.9e-8 s) it stays stable, and its
+  // accounting costs O((ω dt)²): measured 2.8 % at ω dt = 0.2.
+  for (const auto& [ts, bound] : {std::pair<const char*, double>{"", 1e-3},
+                                  {"-wave_ts_type rk -wave_ts_rk_type 4", 1e-2},
+                                  {"-wave_ts_type alpha2", 1e-2},
+                                  {"-wave_ts_type alpha2 -wave_dt 1.6e-7", 5e-2}}) {
     ScopedWave w(resolved + ts);
     ASSERT_EQ(w.status, 0) << ts;
     double worst = 0.0, max_work = 0.0, radiated = 0.0;
@@ -57,7 +63,7 @@ TEST(WaveEnergy, BudgetClosesWithSourceAndAbsorbingEdges) {
     }
     EXPECT_LT(worst, bound) << ts;
     EXPECT_GT(radiated, 0.9 * max_work) << ts << ": the energy should have left through the edges";
-    RecordProperty(std::string("budget_error") + (*ts ? "_rk4" : "_verlet"), std::to_string(worst));
+    RecordProperty(std::string("budget_error ") + (*ts ? ts : "verlet"), std::to_string(worst));
   }
 }
 

@@ -84,6 +84,12 @@ class WaveSolver {
   static PetscErrorCode RHSPosition(TS ts, PetscReal t, Vec v, Vec f, void* ctx);
   static PetscErrorCode RHSMomentum(TS ts, PetscReal t, Vec u, Vec f, void* ctx);
   static PetscErrorCode PostStep(TS ts);
+  // Implicit alpha2: M A + C V + K U = f(t), constraints on the acceleration.
+  static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
+  static PetscErrorCode I2Jacobian(TS ts, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA,
+                                   Mat J, Mat P, void* ctx);
+  /// f = −K u − C v + g(t) f_source (no mass scaling, no constraints).
+  PetscErrorCode Forces(double t, Vec u, Vec v, Vec f) const;
   /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
   PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
   PetscErrorCode ImposeConstraints(double t, Vec u, Vec v) const;
@@ -98,9 +104,11 @@ class WaveSolver {
   Mat K_ = nullptr;
   Vec M_ = nullptr, Minv_ = nullptr;
   Vec X_ = nullptr, u_prev_ = nullptr, v_prev_ = nullptr, force_ = nullptr;
+  Vec u_view_ = nullptr, v_view_ = nullptr;  ///< alpha2: the TS's solution and velocity, views into X_
+  Mat J_ = nullptr;                          ///< alpha2 Jacobian
   IS is_u_ = nullptr, is_v_ = nullptr;
   TS ts_ = nullptr;
-  bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false;
+  bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false, second_order_ = false;
   double dt_ = 0, stable_dt_ = 0, omega_max_ = 0, time_ = 0;
   PetscInt steps_ = 0, global_dofs_ = 0;
   WaveEnergy accounted_;            ///< radiated and source work so far
