@@ -40,7 +40,10 @@ PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components)
   PetscCall(PetscFEGetCellTabulation(fe_, 1, &tab_));
   nodes_ = static_cast<int>(tab_->Nb);
 
-  // Section: dofs per point from the dual space, on the closure of bulk cells only.
+  // Section: dofs per point from the dual space, on every point except the
+  // cohesive ones (tensor cells and their tensor edges). Decided by cell type,
+  // not by "in the closure of a local bulk cell", so that a point shared by two
+  // ranks has the same dofs on both even when the partition cuts along a crack.
   PetscDualSpace dual;
   const PetscInt* per_dim;
   PetscCall(PetscFEGetDualSpace(fe_, &dual));
@@ -52,18 +55,17 @@ PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components)
   PetscCall(PetscSectionSetNumFields(section, 1));
   PetscCall(PetscSectionSetFieldComponents(section, 0, components));
   PetscCall(PetscSectionSetChart(section, pStart, pEnd));
-  for (PetscInt c : cells_) {
-    PetscInt* closure = nullptr;
-    PetscInt n;
-    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
-    for (PetscInt i = 0; i < 2 * n; i += 2) {
-      PetscInt depth;
-      PetscCall(DMPlexGetPointDepth(dm, closure[i], &depth));
-      const PetscInt dofs = per_dim[depth] * components;
-      PetscCall(PetscSectionSetDof(section, closure[i], dofs));
-      PetscCall(PetscSectionSetFieldDof(section, closure[i], 0, dofs));
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+  for (PetscInt p = pStart; p < pEnd; ++p) {
+    DMPolytopeType type;
+    PetscCall(DMPlexGetCellType(dm, p, &type));
+    PetscInt depth = -1;
+    if (type == DM_POLYTOPE_POINT) depth = 0;
+    else if (type == DM_POLYTOPE_SEGMENT) depth = 1;
+    else if (type == DM_POLYTOPE_TRIANGLE || type == DM_POLYTOPE_QUADRILATERAL) depth = 2;
+    if (depth < 0) continue;  // tensor (cohesive) points carry no unknowns
+    const PetscInt dofs = per_dim[depth] * components;
+    PetscCall(PetscSectionSetDof(section, p, dofs));
+    PetscCall(PetscSectionSetFieldDof(section, p, 0, dofs));
   }
   PetscCall(PetscSectionSetUp(section));
   PetscCall(DMSetLocalSection(dm, section));

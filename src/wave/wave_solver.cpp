@@ -31,10 +31,11 @@ WaveSolver::~WaveSolver() {
   if (u_view_) (void)VecRestoreSubVector(X_, is_u_, &u_view_);
   if (v_view_) (void)VecRestoreSubVector(X_, is_v_, &v_view_);
   (void)MatDestroy(&J_);
-  for (Vec* v : {&X_, &u_prev_, &v_prev_, &force_, &M_, &Minv_}) (void)VecDestroy(v);
+  for (Vec* v : {&X_, &force_, &M_, &Minv_, &traction_accel_}) (void)VecDestroy(v);
   (void)ISDestroy(&is_u_);
   (void)ISDestroy(&is_v_);
   (void)MatDestroy(&K_);
+  (void)MatDestroy(&A_);
 }
 
 PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const Excitation& excitation,
@@ -61,9 +62,17 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(VecGetOwnershipRange(X_, &rstart, nullptr));
   PetscCall(ISCreateStride(comm, n, rstart, 1, &is_u_));
   PetscCall(ISCreateStride(comm, n, rstart + n, 1, &is_v_));
-  for (Vec* v : {&u_prev_, &v_prev_, &force_}) {
-    PetscCall(VecDuplicate(M_, v));
-    PetscCall(VecSet(*v, 0.0));
+  PetscCall(VecDuplicate(M_, &force_));
+  dashpot_v_prev_.assign(2 * boundary_.dashpots.size(), 0.0);
+  if (boundary_.traction_shape) {
+    PetscCall(VecDuplicate(M_, &traction_accel_));
+    PetscCall(VecPointwiseMult(traction_accel_, boundary_.traction_shape, Minv_));
+    const PetscScalar* S;
+    PetscCall(VecGetArrayRead(boundary_.traction_shape, &S));
+    for (PetscInt i = 0; i < n; ++i)
+      if (S[i] != 0.0) traction_dofs_.push_back(i);
+    PetscCall(VecRestoreArrayRead(boundary_.traction_shape, &S));
+    traction_u_prev_.assign(traction_dofs_.size(), 0.0);
   }
 
   PetscCall(TSCreate(comm, &ts_));
@@ -112,6 +121,16 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   double omega_dt_max;
   bool implicit;
   PetscCall(LargestAngularFrequency(K_, M_, &omega_max_));
+  // A = −M⁻¹K scaled in place; alpha2 keeps K for its Jacobian.
+  if (second_order_) {
+    PetscCall(MatDuplicate(K_, MAT_COPY_VALUES, &A_));
+  } else {
+    A_ = K_;
+    K_ = nullptr;
+  }
+  PetscCall(VecScale(Minv_, -1.0));
+  PetscCall(MatDiagonalScale(A_, Minv_, nullptr));
+  PetscCall(VecScale(Minv_, -1.0));
   PetscCall(OscillatorStabilityLimit("wave_", &omega_dt_max, &implicit));
   PetscCheck(implicit || omega_dt_max > 0.05, comm, PETSC_ERR_USER_INPUT,
              "-wave_ts_type %s is unstable for undamped waves (its stability region misses the imaginary axis); use "
@@ -139,44 +158,40 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
 
 PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt) {
   PetscFunctionBeginUser;
-  PetscCall(MatMult(K_, u, a));
-  PetscCall(VecScale(a, -1.0));
+  PetscCall(MatMult(A_, u, a));  // −M⁻¹K u
   double g, dg, ddg;
   excitation_.signal.evaluate(t, &g, &dg, &ddg);
-  if (boundary_.traction_shape && g != 0.0) PetscCall(VecAXPY(a, g, boundary_.traction_shape));
-  PetscScalar* A;
+  if (traction_accel_ && g != 0.0) PetscCall(VecAXPY(a, g, traction_accel_));
+  PetscScalar* Acc;
   const PetscScalar *V, *Mass;
-  PetscCall(VecGetArray(a, &A));
+  PetscCall(VecGetArray(a, &Acc));
   PetscCall(VecGetArrayRead(v, &V));
   PetscCall(VecGetArrayRead(M_, &Mass));
   for (const Dashpot& d : boundary_.dashpots) {
     const PetscInt i = 2 * d.node;
-    const double vx = V[i], vy = V[i + 1];
-    const double fx = A[i] - (d.xx * vx + d.xy * vy), fy = A[i + 1] - (d.xy * vx + d.yy * vy);
+    const double m = Mass[i], vx = V[i], vy = V[i + 1];
+    const double fx = m * Acc[i] - (d.xx * vx + d.xy * vy), fy = m * Acc[i + 1] - (d.xy * vx + d.yy * vy);
     if (kick_dt > 0.0) {
       // (m I + h/2 C) acc = F − C v: the dashpot acts on the mean velocity of the kick.
-      const double m = Mass[i], h = 0.5 * kick_dt;
+      const double h = 0.5 * kick_dt;
       const double a11 = m + h * d.xx, a12 = h * d.xy, a22 = m + h * d.yy, det = a11 * a22 - a12 * a12;
-      A[i] = m * (a22 * fx - a12 * fy) / det;
-      A[i + 1] = m * (a11 * fy - a12 * fx) / det;
+      Acc[i] = (a22 * fx - a12 * fy) / det;
+      Acc[i + 1] = (a11 * fy - a12 * fx) / det;
     } else {
-      A[i] = fx;
-      A[i + 1] = fy;
+      Acc[i] = fx / m;
+      Acc[i + 1] = fy / m;
     }
   }
   PetscCall(VecRestoreArrayRead(v, &V));
-  PetscCall(VecRestoreArray(a, &A));
-  PetscCall(VecPointwiseMult(a, a, Minv_));
-  PetscCall(VecGetArray(a, &A));
   for (std::size_t k = 0; k < boundary_.constraints.size(); ++k) {
     const Constraint& c = boundary_.constraints[k];
     const PetscInt i = 2 * c.node;
-    const double target = c.source ? ddg : 0.0, along = A[i] * c.d[0] + A[i + 1] * c.d[1];
+    const double target = c.source ? ddg : 0.0, along = Acc[i] * c.d[0] + Acc[i + 1] * c.d[1];
     reaction_[k] = Mass[i] * (target - along);  // what the support adds along d
-    A[i] += (target - along) * c.d[0];
-    A[i + 1] += (target - along) * c.d[1];
+    Acc[i] += (target - along) * c.d[0];
+    Acc[i + 1] += (target - along) * c.d[1];
   }
-  PetscCall(VecRestoreArray(a, &A));
+  PetscCall(VecRestoreArray(a, &Acc));
   PetscCall(VecRestoreArrayRead(M_, &Mass));
   PetscFunctionReturn(0);
 }
@@ -239,19 +254,20 @@ PetscErrorCode WaveSolver::ImposeConstraints(double t, Vec u, Vec v) const {
 
 PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  // Boundary quantities only: no full-vector copies, no reduction per step
+  // (Energy() sums the ranks' accounts).
   Vec u, v;
   PetscCall(GetFields(&u, &v));
-  double local[2] = {0.0, 0.0};  // radiated, source work
-  const PetscScalar *U, *V, *U0, *V0;
+  const PetscScalar *U, *V;
   PetscCall(VecGetArrayRead(u, &U));
   PetscCall(VecGetArrayRead(v, &V));
-  PetscCall(VecGetArrayRead(u_prev_, &U0));
-  PetscCall(VecGetArrayRead(v_prev_, &V0));
-  for (const Dashpot& d : boundary_.dashpots) {  // h v̄ᵀ C v̄ with the mean velocity of the step
+  for (std::size_t k = 0; k < boundary_.dashpots.size(); ++k) {  // h v̄ᵀ C v̄ with the mean velocity of the step
+    const Dashpot& d = boundary_.dashpots[k];
     const PetscInt i = 2 * d.node;
-    const double vx = 0.5 * (V[i] + V0[i]), vy = 0.5 * (V[i + 1] + V0[i + 1]);
-    local[0] += h * (d.xx * vx * vx + 2.0 * d.xy * vx * vy + d.yy * vy * vy);
+    const double vx = 0.5 * (V[i] + dashpot_v_prev_[2 * k]), vy = 0.5 * (V[i + 1] + dashpot_v_prev_[2 * k + 1]);
+    accounted_.radiated += h * (d.xx * vx * vx + 2.0 * d.xy * vx * vy + d.yy * vy * vy);
+    dashpot_v_prev_[2 * k] = V[i];
+    dashpot_v_prev_[2 * k + 1] = V[i + 1];
   }
   double g, dg, ddg, g0, dg0, ddg0, gm, dgm, ddgm;
   excitation_.signal.evaluate(t, &g, &dg, &ddg);
@@ -260,36 +276,27 @@ PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   if (excitation_.type == SourceType::Displacement) {
     if (reaction_from_kick_) {  // the kick's support force times the prescribed displacement increment
       for (std::size_t k = 0; k < boundary_.constraints.size(); ++k)
-        if (boundary_.constraints[k].source) local[1] += reaction_[k] * (g - g0);
+        if (boundary_.constraints[k].source) accounted_.work_source += reaction_[k] * (g - g0);
     } else {  // trapezoid of the support power, the force evaluated at the end state
       PetscCall(Acceleration(t, u, v, force_, 0.0));
       double power = 0.0;
       for (std::size_t k = 0; k < boundary_.constraints.size(); ++k)
         if (boundary_.constraints[k].source) power += reaction_[k] * dg;
-      double total_power;
-      PetscCallMPI(MPI_Allreduce(&power, &total_power, 1, MPI_DOUBLE, MPI_SUM, comm));
-      if (PetscGlobalRank == 0) local[1] += 0.5 * h * (source_power_prev_ + total_power);
-      source_power_prev_ = total_power;
+      accounted_.work_source += 0.5 * h * (source_power_prev_ + power);
+      source_power_prev_ = power;
     }
   } else if (boundary_.traction_shape) {  // g(t_mid) f · Δu
     const PetscScalar* S;
     PetscCall(VecGetArrayRead(boundary_.traction_shape, &S));
-    PetscInt n;
-    PetscCall(VecGetLocalSize(u, &n));
-    for (PetscInt i = 0; i < n; ++i)
-      if (S[i] != 0.0) local[1] += gm * S[i] * (U[i] - U0[i]);
+    for (std::size_t k = 0; k < traction_dofs_.size(); ++k) {
+      const PetscInt i = traction_dofs_[k];
+      accounted_.work_source += gm * S[i] * (U[i] - traction_u_prev_[k]);
+      traction_u_prev_[k] = U[i];
+    }
     PetscCall(VecRestoreArrayRead(boundary_.traction_shape, &S));
   }
   PetscCall(VecRestoreArrayRead(u, &U));
   PetscCall(VecRestoreArrayRead(v, &V));
-  PetscCall(VecRestoreArrayRead(u_prev_, &U0));
-  PetscCall(VecRestoreArrayRead(v_prev_, &V0));
-  double global[2];
-  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm));
-  accounted_.radiated += global[0];
-  accounted_.work_source += global[1];
-  PetscCall(VecCopy(u, u_prev_));
-  PetscCall(VecCopy(v, v_prev_));
   PetscCall(RestoreFields(&u, &v));
   PetscFunctionReturn(0);
 }
@@ -310,8 +317,19 @@ PetscErrorCode WaveSolver::PostStep(TS ts) {
   self->time_ = t;
   ++self->steps_;
   if (self->steps_ % 50 == 0) {
-    PetscReal norm;
-    PetscCall(VecNorm(self->X_, NORM_INFINITY, &norm));
+    // Local maximum and an explicit reduction: VecNorm may answer from a cached
+    // norm of X_, which the TS updates through views without changing its state.
+    const PetscScalar* x;
+    PetscInt n;
+    double local = 0.0, norm;
+    PetscCall(VecGetLocalSize(self->X_, &n));
+    PetscCall(VecGetArrayRead(self->X_, &x));
+    for (PetscInt i = 0; i < n; ++i) {
+      const double value = std::abs(PetscRealPart(x[i]));
+      local = std::isfinite(value) ? std::max(local, value) : INFINITY;
+    }
+    PetscCall(VecRestoreArrayRead(self->X_, &x));
+    PetscCallMPI(MPI_Allreduce(&local, &norm, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)ts)));
     PetscCheck(std::isfinite(norm), PetscObjectComm((PetscObject)ts), PETSC_ERR_NOT_CONVERGED,
                "wave solution blew up at step %" PetscInt_FMT " (t = %g s, dt = %g s, stability limit %g s): likely "
                "cause: a time step above the stability limit or a too stiff contact law",
@@ -356,8 +374,8 @@ PetscErrorCode WaveSolver::AdvanceTo(double t_end) {
 
 PetscErrorCode WaveSolver::Forces(double t, Vec u, Vec v, Vec f) const {
   PetscFunctionBeginUser;
-  PetscCall(MatMult(K_, u, f));
-  PetscCall(VecScale(f, -1.0));
+  PetscCall(MatMult(A_, u, f));
+  PetscCall(VecPointwiseMult(f, f, M_));  // −K u
   double g, dg, ddg;
   excitation_.signal.evaluate(t, &g, &dg, &ddg);
   if (boundary_.traction_shape && g != 0.0) PetscCall(VecAXPY(f, g, boundary_.traction_shape));
@@ -453,23 +471,31 @@ PetscErrorCode WaveSolver::RestoreFields(Vec* u, Vec* v) const {
 
 PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscFunctionBeginUser;
-  Vec u, v, work;
+  // With A = −M⁻¹K: uᵀKu = −(M∘u)·(A u).
+  Vec u, v, Au, Mu;
   PetscCall(GetFields(&u, &v));
-  PetscCall(VecDuplicate(u, &work));
-  PetscCall(VecPointwiseMult(work, v, v));
+  PetscCall(VecDuplicate(u, &Au));
+  PetscCall(VecDuplicate(u, &Mu));
+  PetscCall(VecPointwiseMult(Mu, v, M_));
   PetscScalar kinetic, strain, vKv = 0.0;
-  PetscCall(VecDot(work, M_, &kinetic));
-  PetscCall(MatMult(K_, u, work));
-  PetscCall(VecDot(u, work, &strain));
+  PetscCall(VecDot(Mu, v, &kinetic));
   if (velocity_verlet_) {
-    PetscCall(MatMult(K_, v, work));
-    PetscCall(VecDot(v, work, &vKv));
+    PetscCall(MatMult(A_, v, Au));
+    PetscCall(VecDot(Mu, Au, &vKv));
+    vKv = -vKv;
   }
-  PetscCall(VecDestroy(&work));
+  PetscCall(VecPointwiseMult(Mu, u, M_));
+  PetscCall(MatMult(A_, u, Au));
+  PetscCall(VecDot(Mu, Au, &strain));
+  PetscCall(VecDestroy(&Au));
+  PetscCall(VecDestroy(&Mu));
   PetscCall(RestoreFields(&u, &v));
-  *e = accounted_;
+  double local[2] = {accounted_.radiated, accounted_.work_source}, global[2];
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  e->radiated = global[0];
+  e->work_source = global[1];
   e->kinetic = 0.5 * PetscRealPart(kinetic);
-  e->strain = 0.5 * PetscRealPart(strain);
+  e->strain = -0.5 * PetscRealPart(strain);
   e->integrator = -dt_ * dt_ / 8.0 * PetscRealPart(vKv);
   PetscFunctionReturn(0);
 }

@@ -75,7 +75,8 @@ class WaveSolver {
   /// Displacement and velocity (global vectors of the DM; views into the state).
   PetscErrorCode GetFields(Vec* u, Vec* v) const;
   PetscErrorCode RestoreFields(Vec* u, Vec* v) const;
-  Mat stiffness() const { return K_; }
+  /// The stepping operator A = −M⁻¹K (one MatMult per force evaluation).
+  Mat stepping_operator() const { return A_; }
   Vec lumped_mass() const { return M_; }
   TS ts() const { return ts_; }
 
@@ -101,9 +102,10 @@ class WaveSolver {
   Excitation excitation_;
   WaveOptions options_;
   WaveBoundary boundary_;
-  Mat K_ = nullptr;
-  Vec M_ = nullptr, Minv_ = nullptr;
-  Vec X_ = nullptr, u_prev_ = nullptr, v_prev_ = nullptr, force_ = nullptr;
+  Mat A_ = nullptr;  ///< −M⁻¹K: the explicit step needs no separate mass scaling
+  Mat K_ = nullptr;  ///< the stiffness itself, kept for alpha2's Jacobian only
+  Vec M_ = nullptr, Minv_ = nullptr, traction_accel_ = nullptr;  ///< M⁻¹ f_source shape
+  Vec X_ = nullptr, force_ = nullptr;
   Vec u_view_ = nullptr, v_view_ = nullptr;  ///< alpha2: the TS's solution and velocity, views into X_
   Mat J_ = nullptr;                          ///< alpha2 Jacobian
   IS is_u_ = nullptr, is_v_ = nullptr;
@@ -111,10 +113,13 @@ class WaveSolver {
   bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false, second_order_ = false;
   double dt_ = 0, stable_dt_ = 0, omega_max_ = 0, time_ = 0;
   PetscInt steps_ = 0, global_dofs_ = 0;
-  WaveEnergy accounted_;            ///< radiated and source work so far
+  WaveEnergy accounted_;            ///< this rank's radiated energy and source work so far
+  std::vector<double> dashpot_v_prev_;   ///< velocities of the dashpot nodes at the last step
+  std::vector<PetscInt> traction_dofs_;  ///< owned dofs loaded by a traction source
+  std::vector<double> traction_u_prev_;  ///< their displacements at the last step
   std::vector<double> reaction_;    ///< per constraint: force the support applies (last kick)
   bool reaction_from_kick_ = false;
-  double source_power_prev_ = 0.0;  ///< for the trapezoid of non-symplectic types
+  double source_power_prev_ = 0.0;  ///< this rank's support power at the last step (trapezoid)
 };
 
 }  // namespace vibrotherm::wave
