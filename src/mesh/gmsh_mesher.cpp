@@ -215,12 +215,12 @@ MeshData read_mesh_file(const std::string& path) {
       append(mesh.kind_edges, edges);
       known = any_kind = true;
     }
-    if (!known) throw std::invalid_argument(where + ": unknown physical group '" + name +
-                                            "' (known: source, absorbing, free, roller, fixed, sink, crack*)");
+    if (!known) throw std::invalid_argument(where + ": unknown physical group '" + name + "' (known: " +
+                                            edge_kind_names() + ", sink, crack*)");
   }
   if (!any_kind)
-    throw std::invalid_argument(where + ": no boundary physical group (need at least one of source, absorbing, free, "
-                                        "roller, fixed)");
+    throw std::invalid_argument(where + ": no boundary physical group (need at least one of " + edge_kind_names() +
+                                ")");
   for (MeshEdge e : mesh.kind_edges) mesh.side_edges.push_back({e.v0, e.v1, -1});
   return mesh;
 }

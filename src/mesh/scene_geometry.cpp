@@ -12,16 +12,23 @@ const char* to_string(EdgeKind kind) {
     case EdgeKind::Absorbing: return "absorbing";
     case EdgeKind::Free: return "free";
     case EdgeKind::Roller: return "roller";
+    case EdgeKind::Antisymmetric: return "antisymmetric";
     case EdgeKind::Fixed: return "fixed";
     case EdgeKind::Source: return "source";
   }
   return "?";
 }
 
-const std::array<EdgeKind, 5>& all_edge_kinds() {
-  static const std::array<EdgeKind, 5> kinds = {EdgeKind::Absorbing, EdgeKind::Free, EdgeKind::Roller,
-                                                EdgeKind::Fixed, EdgeKind::Source};
+const std::array<EdgeKind, 6>& all_edge_kinds() {
+  static const std::array<EdgeKind, 6> kinds = {EdgeKind::Absorbing, EdgeKind::Free,  EdgeKind::Roller,
+                                                EdgeKind::Antisymmetric, EdgeKind::Fixed, EdgeKind::Source};
   return kinds;
+}
+
+std::string edge_kind_names() {
+  std::string names;
+  for (EdgeKind k : all_edge_kinds()) names += (names.empty() ? "" : "|") + std::string(to_string(k));
+  return names;
 }
 
 const char* to_string(Side side) {

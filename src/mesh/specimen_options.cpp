@@ -10,23 +10,21 @@ namespace {
 
 PetscErrorCode ReadEdgeKind(MPI_Comm comm, PetscOptionItems* PetscOptionsObject, Side side, EdgeKind* kind) {
   PetscFunctionBeginUser;
-  const char* names[] = {"absorbing", "free", "roller", "fixed", "source"};
   char option[32], current[32];
   PetscCall(PetscSNPrintf(option, sizeof(option), "-edge_%s", to_string(side)));
   PetscCall(PetscStrncpy(current, to_string(*kind), sizeof(current)));
+  const std::string help = "Mechanical kind of this outer edge: " + edge_kind_names();
   char value[64];
   PetscBool set;
-  PetscCall(PetscOptionsString(option, "Mechanical kind of this outer edge: absorbing|free|roller|fixed|source",
-                               nullptr, current, value, sizeof(value), &set));
+  PetscCall(PetscOptionsString(option, help.c_str(), nullptr, current, value, sizeof(value), &set));
   if (!set) PetscFunctionReturn(0);
-  for (int i = 0; i < 5; ++i) {
-    if (std::string(value) == names[i]) {
-      *kind = all_edge_kinds()[i];
+  for (EdgeKind k : all_edge_kinds()) {
+    if (std::string(value) == to_string(k)) {
+      *kind = k;
       PetscFunctionReturn(0);
     }
   }
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: absorbing|free|roller|fixed|source)", option,
-          value);
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option, value, edge_kind_names().c_str());
 }
 
 }  // namespace

@@ -46,8 +46,8 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
   // Local accumulators, 2 dofs per node like the solution: one pair of vectors per kind.
-  enum { Absorbing, Source, Roller, Fixed, Kinds };
-  const char* names[Kinds] = {"absorbing", "source", "roller", "fixed"};
+  enum { Absorbing, Source, Roller, Antisymmetric, Fixed, Kinds };
+  const char* names[Kinds] = {"absorbing", "source", "roller", "antisymmetric", "fixed"};
   Vec xx[Kinds], yy[Kinds], xy[Kinds], sum[Kinds];
   for (int k = 0; k < Kinds; ++k) {
     for (Vec* v : {&xx[k], &yy[k], &xy[k], &sum[k]}) {
@@ -58,7 +58,7 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
   const double rho = material.density, cp = material.cp(), cs = material.cs();
   std::vector<PetscInt> offsets;
   std::vector<double> weights;
-  double lengths[Kinds] = {0, 0, 0, 0};
+  double lengths[Kinds] = {0, 0, 0, 0, 0};
   for (int k = 0; k < Kinds; ++k) {
     DMLabel label;
     PetscCall(DMGetLabel(dm, names[k], &label));
@@ -84,8 +84,10 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
       PetscCall(space.FaceNodes(f[i], &offsets, &weights, &L));
       lengths[k] += L;
       // The direction each kind acts along.
-      const bool tangential = excitation.component == SourceComponent::Tangential;
-      const double* d = k == Source && tangential ? s : n;
+      // The direction each kind acts along: the source's chosen component, the
+      // tangent for an antisymmetry plane, the normal otherwise.
+      const bool tangential = (k == Source && excitation.component == SourceComponent::Tangential) || k == Antisymmetric;
+      const double* d = tangential ? s : n;
       for (std::size_t j = 0; j < offsets.size(); ++j) {
         const PetscInt o = offsets[j];
         const double w = weights[j];
@@ -166,6 +168,7 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
     double d[2];
     if (displacement && principal(Source, d)) bc->constraints.push_back({node, {d[0], d[1]}, true});
     if (principal(Roller, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
+    if (principal(Antisymmetric, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
   }
   PetscCall(PetscInfo(nullptr, "wave boundary: %zu dashpots, %zu constraints\n", bc->dashpots.size(), bc->constraints.size()));
   for (int k = 0; k < Kinds; ++k) {

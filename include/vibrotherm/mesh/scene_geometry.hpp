@@ -9,11 +9,16 @@
 
 namespace vibrotherm::mesh {
 
-/// Mechanical kind of an outer edge (a label of that name marks its faces).
-enum class EdgeKind { Absorbing, Free, Roller, Fixed, Source };
+/// Mechanical kind of an outer edge (a label of that name marks its faces):
+/// absorbing (dashpots), free, roller (zero normal displacement: a symmetry
+/// plane), antisymmetric (zero tangential displacement, free normal: an
+/// antisymmetry plane), fixed, source.
+enum class EdgeKind { Absorbing, Free, Roller, Antisymmetric, Fixed, Source };
 const char* to_string(EdgeKind kind);
 /// All kinds, in label order; label names are the to_string() names.
-const std::array<EdgeKind, 5>& all_edge_kinds();
+const std::array<EdgeKind, 6>& all_edge_kinds();
+/// "absorbing|free|roller|antisymmetric|fixed|source", for messages and help.
+std::string edge_kind_names();
 
 enum class Side { Bottom = 0, Right = 1, Top = 2, Left = 3 };
 const char* to_string(Side side);

@@ -3,7 +3,8 @@
 //              Σ_faces w ρ (c_p n nᵀ + c_s s sᵀ)  (w = ∫φ ds)
 //   source     the prescribed component (displacement source) or the load
 //              shape ∫φ d ds (traction source), d = tangent or outward normal
-//   roller     zero normal displacement;  fixed  zero displacement
+//   roller     zero normal displacement (symmetry plane);  antisymmetric  zero
+//              tangential displacement (antisymmetry plane);  fixed  zero displacement
 // Nodes are owned dofs of the global vector (x dof = 2·node, y dof = 2·node+1).
 #pragma once
 
