@@ -10,6 +10,44 @@
 
 namespace vibrotherm::testing {
 
+/// Displacement of a wave solver at a fixed point, reduced over ranks.
+class PointSampler {
+ public:
+  PointSampler(const fe::LagrangeSpace& space, double x, double y) : space_(space) {
+    std::array<double, 2> ref;
+    space.Locate(x, y, &cell_, &ref);
+    if (cell_ >= 0) space.BasisAt(ref, &phi_);
+  }
+  /// u at the point (collective).
+  std::array<double, 2> Sample(const wave::WaveSolver& s) const {
+    DM dm = space_.dm();
+    Vec u, v, ul;
+    s.GetFields(&u, &v);
+    DMGetLocalVector(dm, &ul);
+    DMGlobalToLocal(dm, u, INSERT_VALUES, ul);
+    double value[2] = {0.0, 0.0};
+    if (cell_ >= 0) {
+      PetscSection section;
+      PetscScalar* cu = nullptr;
+      PetscInt n;
+      DMGetLocalSection(dm, &section);
+      DMPlexVecGetClosure(dm, section, ul, cell_, &n, &cu);
+      for (std::size_t q = 0; q < phi_.size(); ++q)
+        for (int k = 0; k < 2; ++k) value[k] += phi_[q] * PetscRealPart(cu[2 * q + k]);
+      DMPlexVecRestoreClosure(dm, section, ul, cell_, &n, &cu);
+    }
+    DMRestoreLocalVector(dm, &ul);
+    s.RestoreFields(&u, &v);
+    MPI_Allreduce(MPI_IN_PLACE, value, 2, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    return {value[0], value[1]};
+  }
+
+ private:
+  const fe::LagrangeSpace& space_;
+  PetscInt cell_ = -1;
+  std::vector<double> phi_;
+};
+
 struct ScopedWave {
   std::unique_ptr<ScopedSpecimen> specimen;
   wave::WaveSolver solver;

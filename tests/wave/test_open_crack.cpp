@@ -35,11 +35,7 @@ Observation Observe(const std::string& options) {
   EXPECT_EQ(w.status, 0);
   const fe::LagrangeSpace& space = w.solver.space();
   DM dm = space.dm();
-  PetscInt cell;
-  std::array<double, 2> ref;
-  space.Locate(0.025, 0.012, &cell, &ref);
-  std::vector<double> phi;
-  if (cell >= 0) space.BasisAt(ref, &phi);
+  const PointSampler probe_below(space, 0.025, 0.012);
   // Crack node pairs: the tensor edges of the cohesive cells (side A, side B vertices).
   std::vector<std::array<PetscInt, 2>> pairs;
   PetscInt cStart, cEnd;
@@ -65,14 +61,7 @@ Observation Observe(const std::string& options) {
     PetscCall(DMGetLocalSection(dm, &section));
     const PetscScalar* a;
     PetscCall(VecGetArrayRead(ul, &a));
-    double probe = 0.0, jump = 0.0;
-    if (cell >= 0) {
-      PetscScalar* cu = nullptr;
-      PetscInt n;
-      PetscCall(DMPlexVecGetClosure(dm, section, ul, cell, &n, &cu));
-      for (std::size_t b = 0; b < phi.size(); ++b) probe += phi[b] * PetscRealPart(cu[2 * b]);
-      PetscCall(DMPlexVecRestoreClosure(dm, section, ul, cell, &n, &cu));
-    }
+    double jump = 0.0;
     for (const auto& p : pairs) {
       PetscInt oa, ob;
       PetscCall(PetscSectionGetOffset(section, p[0], &oa));
@@ -82,8 +71,8 @@ Observation Observe(const std::string& options) {
     PetscCall(VecRestoreArrayRead(ul, &a));
     PetscCall(DMRestoreLocalVector(dm, &ul));
     PetscCall(s.RestoreFields(&u, &v));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &probe, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &jump, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
+    const double probe = probe_below.Sample(s)[0];
     o.t.push_back(s.time());
     o.ux.push_back(probe);
     o.max_jump = std::max(o.max_jump, jump);

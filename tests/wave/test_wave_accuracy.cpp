@@ -74,30 +74,9 @@ double Reflection(const std::string& options, double c, double H, double probe_y
   // its dispersive tail) has passed by then since 2 probe_y / c > 1.5 burst.
   ProbeWindow incident{t_in, t_in + burst}, reflected{t_back - 0.05 * burst, t_back + burst};
   const double xp = 0.5 * std::stod(options.substr(options.find("-specimen_width ") + 16));
-  PetscInt cell;
-  std::array<double, 2> ref;
-  w.solver.space().Locate(xp, probe_y, &cell, &ref);
-  std::vector<double> phi;
-  if (cell >= 0) w.solver.space().BasisAt(ref, &phi);
+  const PointSampler probe(w.solver.space(), xp, probe_y);
   w.solver.on_step = [&](const wave::WaveSolver& s) -> PetscErrorCode {
-    DM dm = s.space().dm();
-    Vec u, v, ul;
-    PetscCall(s.GetFields(&u, &v));
-    PetscCall(DMGetLocalVector(dm, &ul));
-    PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, ul));
-    double value = 0.0;
-    if (cell >= 0) {
-      PetscSection section;
-      PetscScalar* cu = nullptr;
-      PetscInt n;
-      PetscCall(DMGetLocalSection(dm, &section));
-      PetscCall(DMPlexVecGetClosure(dm, section, ul, cell, &n, &cu));
-      for (std::size_t b = 0; b < phi.size(); ++b) value += phi[b] * PetscRealPart(cu[2 * b + component]);
-      PetscCall(DMPlexVecRestoreClosure(dm, section, ul, cell, &n, &cu));
-    }
-    PetscCall(DMRestoreLocalVector(dm, &ul));
-    PetscCall(s.RestoreFields(&u, &v));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
+    const double value = probe.Sample(s)[component];
     for (ProbeWindow* win : {&incident, &reflected})
       if (s.time() >= win->t0 && s.time() <= win->t1) win->max = std::max(win->max, std::abs(value));
     return 0;
@@ -173,34 +152,12 @@ TEST(AbsorbingEdges, ThirtyDegreeIncidenceReflectsLessThanTenPercent) {
     const std::string mesh = InclinedBottomMesh(P ? "roller" : "antisymmetric", W, top, angle, h);
     ScopedWave w("-mesh_file " + mesh + burst + (P ? " -source_component normal" : " -source_component tangential"));
     ASSERT_EQ(w.status, 0);
-    PetscInt cell;
-    std::array<double, 2> ref;
-    std::vector<double> phi;
-    w.solver.space().Locate(0.5 * W, probe_y, &cell, &ref);
-    if (cell >= 0) w.solver.space().BasisAt(ref, &phi);
+    const PointSampler probe(w.solver.space(), 0.5 * W, probe_y);
     double incident = 0.0, reflected = 0.0;
     w.solver.on_step = [&](const wave::WaveSolver& s) -> PetscErrorCode {
-      DM dm = s.space().dm();
-      Vec u, v, ul;
-      PetscCall(s.GetFields(&u, &v));
-      PetscCall(DMGetLocalVector(dm, &ul));
-      PetscCall(DMGlobalToLocal(dm, u, INSERT_VALUES, ul));
-      double value[2] = {0.0, 0.0};
-      if (cell >= 0) {
-        PetscSection section;
-        PetscScalar* cu = nullptr;
-        PetscInt n;
-        PetscCall(DMGetLocalSection(dm, &section));
-        PetscCall(DMPlexVecGetClosure(dm, section, ul, cell, &n, &cu));
-        for (std::size_t q = 0; q < phi.size(); ++q)
-          for (int k = 0; k < 2; ++k) value[k] += phi[q] * PetscRealPart(cu[2 * q + k]);
-        PetscCall(DMPlexVecRestoreClosure(dm, section, ul, cell, &n, &cu));
-      }
-      PetscCall(DMRestoreLocalVector(dm, &ul));
-      PetscCall(s.RestoreFields(&u, &v));
-      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, value, 2, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
       // After the incident burst has passed, anything at the probe (reflected P
       // and mode-converted S alike) came back from the inclined edge.
+      const auto value = probe.Sample(s);
       const double magnitude = std::hypot(value[0], value[1]);
       if (s.time() <= t_in + b) incident = std::max(incident, magnitude);
       if (s.time() >= t_back - 0.05 * b) reflected = std::max(reflected, magnitude);
