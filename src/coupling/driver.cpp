@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "vibrotherm/interface/contact_options.hpp"
+
 namespace vibrotherm::coupling {
 
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
@@ -48,6 +50,8 @@ struct WaveRecorder {
     row.strain = e.strain;
     row.radiated = e.radiated;
     row.integrator_correction = e.integrator;
+    row.interface_stored = e.interface_stored;
+    row.dissipated = e.dissipated;
     PetscCall(energy.Record(row, nullptr));
     PetscFunctionReturn(0);
   }
@@ -83,6 +87,17 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, io::RunSummary*
   PetscCall(PetscLogStagePush(setup_stage));
   wave_ = std::make_unique<wave::WaveSolver>();
   PetscCall(wave_->Setup(specimen.wave, material_, excitation_, wave_options_));
+  // The crack interface exists only when there is a crack whose law transmits tractions.
+  contact::ContactParameters contact_params;
+  PetscCall(ReadContactOptions(comm, contact_params));
+  interface::ApproachProfile a0;
+  PetscCall(interface::ReadApproachProfile(comm, &a0));
+  if (!specimen.cracks.empty() && contact_params.crack_law != "open") {
+    crack_ = std::make_unique<interface::CrackInterface>();
+    PetscCall(crack_->Setup(wave_->space(), wave_->mass(), contact_params, a0));
+    PetscCall(wave_->SetInterface(crack_.get()));
+    summary->contact_cells = crack_->global_cells();
+  }
   PetscCall(PetscLogStagePop());
   summary->stages["wave_setup"] = MPI_Wtime() - t0;
   // Probe points are input too: check them before anything is written.
@@ -125,6 +140,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   solver.on_step = nullptr;
 
   summary->physics_ran.push_back("wave");
+  if (crack_) summary->physics_ran.push_back("contact");
   summary->dofs_wave = solver.dofs();
   summary->steps_wave = solver.steps();
   summary->max_budget_error = recorder.energy.max_budget_error();

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -39,6 +40,7 @@ class Simulation {
   wave::Excitation excitation_;
   wave::WaveOptions wave_options_;
   std::unique_ptr<wave::WaveSolver> wave_;
+  std::unique_ptr<interface::CrackInterface> crack_;  ///< only when a crack transmits tractions
   PetscLogStage steps_stage_ = -1;
 };
 

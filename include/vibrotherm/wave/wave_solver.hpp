@@ -33,6 +33,21 @@ struct WaveOptions {
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
+/// Forces the wave solver does not own (the crack interface): evaluated as a
+/// pure function of u at every force evaluation, committed once per accepted step.
+class WaveInterface {
+ public:
+  virtual ~WaveInterface() = default;
+  /// a += M⁻¹ f(u): trial forces from the committed history.
+  virtual PetscErrorCode AddAcceleration(Vec u, Vec a) = 0;
+  /// Advances the history to u after an accepted step of size dt.
+  virtual PetscErrorCode Commit(Vec u, double dt) = 0;
+  /// Largest ω² the interface adds to M⁻¹K at its current state (for the stable step).
+  virtual PetscErrorCode MaxFrequencySquared(double* omega2) = 0;
+  /// Energy stored in the interface and dissipated so far [J/m] (global).
+  virtual PetscErrorCode Energies(double* stored, double* dissipated) = 0;
+};
+
 /// Energies of the wave field, J per metre of depth. For velocity Verlet the
 /// exactly conserved discrete energy of the linear system is
 ///   KE + SE − (dt²/8) vᵀKv
@@ -40,6 +55,7 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 /// last term, so that budgets close to rounding, not to O((ω dt)²).
 struct WaveEnergy {
   double kinetic = 0, strain = 0, radiated = 0, work_source = 0, integrator = 0;
+  double interface_stored = 0, dissipated = 0;  ///< from the WaveInterface, if any
 };
 
 class WaveSolver {
@@ -61,6 +77,12 @@ class WaveSolver {
   /// Steps of size dt that fit before t_end.
   PetscInt StepsUntil(double t_end) const;
 
+  /// Attaches an interface (not owned); call after Setup. The stable step then
+  /// includes its stiffness, and shrinks if the interface stiffens.
+  PetscErrorCode SetInterface(WaveInterface* interface);
+  /// The lumped mass (global vector).
+  Vec mass() const { return M_; }
+
   /// Called after every accepted step (probes, outputs, coupling).
   std::function<PetscErrorCode(const WaveSolver&)> on_step;
 
@@ -70,6 +92,7 @@ class WaveSolver {
   double dt() const { return dt_; }
   double stable_dt() const { return stable_dt_; }
   double omega_max() const { return omega_max_; }
+  PetscInt dt_reductions() const { return dt_reductions_; }
   PetscInt dofs() const { return global_dofs_; }
   const fe::LagrangeSpace& space() const { return space_; }
   /// Displacement and velocity (global vectors of the DM; views into the state).
@@ -112,6 +135,10 @@ class WaveSolver {
   TS ts_ = nullptr;
   bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false, second_order_ = false;
   double dt_ = 0, stable_dt_ = 0, omega_max_ = 0, time_ = 0;
+  double omega_dt_max_ = 0;              ///< (ω dt)_max of the TS type (0: implicit)
+  PetscInt dt_reductions_ = 0;           ///< times the contact forced a smaller step
+  WaveInterface* interface_ = nullptr;
+  PetscErrorCode CheckStableStep();     ///< shrinks dt when the interface stiffens
   PetscInt steps_ = 0, global_dofs_ = 0;
   WaveEnergy accounted_;            ///< this rank's radiated energy and source work so far
   std::vector<double> dashpot_v_prev_;   ///< velocities of the dashpot nodes at the last step

@@ -1,0 +1,336 @@
+#include "vibrotherm/interface/crack_interface.hpp"
+
+#include <petscdmplex.h>
+#include <petscsf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/util/errors.hpp"
+
+namespace vibrotherm::interface {
+
+double ApproachProfile::at(double xi) const {
+  const double e = elliptic ? max * std::sqrt(std::max(0.0, 1.0 - (2.0 * xi - 1.0) * (2.0 * xi - 1.0))) : 0.0;
+  return uniform + e;
+}
+
+PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
+  PetscFunctionBeginUser;
+  char profile[32] = "uniform";
+  PetscOptionsBegin(comm, nullptr, "Initial approach of the crack faces", nullptr);
+  PetscCall(PetscOptionsReal("-crack_a0", "Uniform initial approach a0 [m] (> 0: pre-closed)", nullptr, p->uniform,
+                             &p->uniform, nullptr));
+  PetscCall(PetscOptionsString("-crack_a0_profile", "uniform|elliptic", nullptr, profile, profile, sizeof(profile),
+                               nullptr));
+  PetscCall(PetscOptionsReal("-crack_a0_max", "Elliptic profile: a0 at the crack centre [m]", nullptr, p->max, &p->max,
+                             nullptr));
+  PetscOptionsEnd();
+  const std::string name(profile);
+  PetscCheck(name == "uniform" || name == "elliptic", comm, PETSC_ERR_USER_INPUT,
+             "-crack_a0_profile: unknown value '%s' (known: uniform|elliptic)", profile);
+  p->elliptic = name == "elliptic";
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+/// A crack facet as every rank needs to know it to orient the cells.
+struct FacetInfo {
+  PetscInt id, crack;
+  double mx, my, length;
+};
+
+/// Centroid of a cell from its closure vertices.
+std::array<double, 2> CellCentroid(DM dm, const mesh::VertexCoordinates& x, PetscInt cell) {
+  PetscInt* closure = nullptr;
+  PetscInt n, vStart, vEnd, count = 0;
+  std::array<double, 2> c = {0, 0};
+  (void)DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd);
+  (void)DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
+  for (PetscInt i = 0; i < 2 * n; i += 2)
+    if (closure[i] >= vStart && closure[i] < vEnd) {
+      const auto p = x(closure[i]);
+      c[0] += p[0], c[1] += p[1], ++count;
+    }
+  (void)DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
+  return {c[0] / count, c[1] / count};
+}
+
+}  // namespace
+
+CrackInterface::~CrackInterface() {
+  (void)VecScatterDestroy(&scatter_);
+  for (Vec* v : {&u_local_, &f_local_, &inv_mass_local_}) (void)VecDestroy(v);
+}
+
+PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_mass,
+                                     const contact::ContactParameters& params, const ApproachProfile& a0) {
+  PetscFunctionBeginUser;
+  DM dm = space.dm();
+  comm_ = PetscObjectComm((PetscObject)dm);
+  VibrothermCallCpp(comm_, law_ = contact::create_crack_law(params));
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  DMLabel crack_label, facet_label;
+  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
+  PetscCall(DMGetLabel(dm, mesh::labels::crack_face, &facet_label));
+  std::vector<bool> ghost;
+  PetscCall(mesh::GhostPoints(dm, &ghost));
+  PetscInt chart0, cStart, cEnd;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+
+  // Every rank learns every facet (a few hundred): orientation and position along each crack.
+  std::vector<PetscInt> cohesive;
+  std::vector<FacetInfo> mine;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool is_cohesive;
+    PetscCall(mesh::IsCohesiveCell(dm, c, &is_cohesive));
+    if (!is_cohesive) continue;
+    cohesive.push_back(c);
+    const PetscInt* cone;
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    PetscInt id, crack;
+    PetscCall(DMLabelGetValue(facet_label, cone[0], &id));
+    PetscCall(DMLabelGetValue(crack_label, cone[0], &crack));
+    const PetscInt* fv;
+    PetscCall(DMPlexGetCone(dm, cone[0], &fv));
+    const auto p = x(fv[0]), q = x(fv[1]);
+    mine.push_back({id, crack - 1, 0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), std::hypot(q[0] - p[0], q[1] - p[1])});
+  }
+  int nbytes = static_cast<int>(mine.size() * sizeof(FacetInfo)), size;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  std::vector<int> counts(size), displs(size, 0);
+  PetscCallMPI(MPI_Allgather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_));
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<FacetInfo> all((displs.back() + counts.back()) / sizeof(FacetInfo));
+  PetscCallMPI(MPI_Allgatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, comm_));
+  // Per crack: direction from its first facet to its last, centre and length.
+  struct CrackFrame {
+    PetscInt first = PETSC_MAX_INT, last = -1;
+    double fx = 0, fy = 0, lx = 0, ly = 0, length = 0, dx = 1, dy = 0, cx = 0, cy = 0;
+  };
+  std::map<PetscInt, CrackFrame> frames;
+  for (const FacetInfo& f : all) {
+    CrackFrame& fr = frames[f.crack];
+    fr.length += f.length;
+    if (f.id < fr.first) fr.first = f.id, fr.fx = f.mx, fr.fy = f.my;
+    if (f.id > fr.last) fr.last = f.id, fr.lx = f.mx, fr.ly = f.my;
+  }
+  for (auto& [c, fr] : frames) {
+    const double L = std::hypot(fr.lx - fr.fx, fr.ly - fr.fy);
+    if (L > 0) fr.dx = (fr.lx - fr.fx) / L, fr.dy = (fr.ly - fr.fy) / L;
+    fr.cx = 0.5 * (fr.fx + fr.lx);
+    fr.cy = 0.5 * (fr.fy + fr.ly);
+  }
+
+  // Contact cells: one per owned tensor edge with distinct vertices, accumulated over its facets.
+  struct Accumulator {
+    ContactCell cell{};
+    double sx = 0, sy = 0;
+  };
+  std::map<PetscInt, Accumulator> by_edge;
+  std::vector<PetscInt> offsets;
+  std::vector<double> weights;
+  for (PetscInt c : cohesive) {
+    const PetscInt* cone;
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    PetscInt crack;
+    PetscCall(DMLabelGetValue(crack_label, cone[0], &crack));
+    const CrackFrame& fr = frames[crack - 1];
+    // Facet tangent along the crack's direction; n = s rotated by +90°.
+    const PetscInt* fv;
+    PetscCall(DMPlexGetCone(dm, cone[0], &fv));
+    const auto p = x(fv[0]), q = x(fv[1]);
+    double sx = q[0] - p[0], sy = q[1] - p[1];
+    const double L = std::hypot(sx, sy);
+    sx /= L, sy /= L;
+    if (sx * fr.dx + sy * fr.dy < 0) sx = -sx, sy = -sy;
+    const double nx = -sy, ny = sx;
+    // Which face is +: the side whose bulk cell lies along +n.
+    int plus_face = -1;
+    for (int side = 0; side < 2 && plus_face < 0; ++side) {
+      const PetscInt* support;
+      PetscInt ns;
+      PetscCall(DMPlexGetSupportSize(dm, cone[side], &ns));
+      PetscCall(DMPlexGetSupport(dm, cone[side], &support));
+      for (PetscInt k = 0; k < ns; ++k) {
+        if (support[k] == c) continue;
+        const auto g = CellCentroid(dm, x, support[k]);
+        const bool along_n = (g[0] - 0.5 * (p[0] + q[0])) * nx + (g[1] - 0.5 * (p[1] + q[1])) * ny > 0;
+        plus_face = along_n ? side : 1 - side;
+      }
+    }
+    PetscCheck(plus_face >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cohesive cell %" PetscInt_FMT " has no local bulk neighbour", c);
+    double length;
+    PetscCall(space.FaceNodes(cone[0], &offsets, &weights, &length));
+    const PetscInt* face_a_vertices = fv;
+    for (int k = 2; k < 4; ++k) {
+      const PetscInt* pair;
+      PetscCall(DMPlexGetCone(dm, cone[k], &pair));
+      if (pair[0] == pair[1] || ghost[cone[k] - chart0]) continue;  // buried tip, or another rank's cell
+      Accumulator& acc = by_edge[cone[k]];
+      const double w = weights[pair[0] == face_a_vertices[0] ? 0 : 1];
+      acc.cell.plus = plus_face == 0 ? pair[0] : pair[1];
+      acc.cell.minus = plus_face == 0 ? pair[1] : pair[0];
+      acc.cell.weight += w;
+      acc.cell.crack = crack - 1;
+      acc.sx += w * sx;
+      acc.sy += w * sy;
+      const auto xv = x(pair[0]);
+      acc.cell.x = xv[0];
+      acc.cell.y = xv[1];
+    }
+  }
+  cells_.clear();
+  for (auto& [edge, acc] : by_edge) {
+    ContactCell cell = acc.cell;
+    const double norm = std::hypot(acc.sx, acc.sy);
+    cell.s[0] = acc.sx / norm;
+    cell.s[1] = acc.sy / norm;
+    cell.n[0] = -cell.s[1];
+    cell.n[1] = cell.s[0];
+    const CrackFrame& fr = frames[cell.crack];
+    cell.xi = std::clamp(0.5 + ((cell.x - fr.cx) * fr.dx + (cell.y - fr.cy) * fr.dy) / fr.length, 0.0, 1.0);
+    cell.a0 = a0.at(cell.xi) + params.a0;
+    cells_.push_back(cell);
+  }
+  PetscInt local_count = static_cast<PetscInt>(cells_.size());
+  PetscCallMPI(MPI_Allreduce(&local_count, &global_cells_, 1, MPIU_INT, MPI_SUM, comm_));
+
+  // Scatter global ↔ [u⁺x u⁺y u⁻x u⁻y] per cell.
+  PetscSection global;
+  PetscCall(DMGetGlobalSection(dm, &global));
+  std::vector<PetscInt> indices;
+  for (const ContactCell& cell : cells_)
+    for (PetscInt point : {cell.plus, cell.minus}) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(global, point, &off));
+      if (off < 0) off = -(off + 1);
+      indices.push_back(off);
+      indices.push_back(off + 1);
+    }
+  IS is;
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), &u_local_));
+  PetscCall(VecDuplicate(u_local_, &f_local_));
+  PetscCall(VecDuplicate(u_local_, &inv_mass_local_));
+  PetscCall(VecScatterCreate(lumped_mass, is, u_local_, nullptr, &scatter_));
+  PetscCall(ISDestroy(&is));
+  PetscCall(VecScatterBegin(scatter_, lumped_mass, inv_mass_local_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, lumped_mass, inv_mass_local_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecReciprocal(inv_mass_local_));
+
+  const std::size_t n = cells_.size();
+  a_.resize(n);
+  b_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) a_[i] = cells_[i].a0;
+  VibrothermCallCpp(comm_, law_->initialize(n, a_.data(), b_.data()));
+  power_.assign(n, 0.0);
+  W_.assign(n, 0.0);
+  last_.assign(n, contact::StepResult{});
+  dissipated_local_ = 0.0;
+  initial_stored_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    initial_stored_[i] = law_->stored_energy(i);
+    cells_[i].N0 = law_->trial(i, cells_[i].a0, 0.0).N;
+  }
+  PetscFunctionReturn(0);
+}
+
+void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, double* b) const {
+  const ContactCell& c = cells_[i];
+  const double jx = PetscRealPart(U[4 * i] - U[4 * i + 2]), jy = PetscRealPart(U[4 * i + 1] - U[4 * i + 3]);
+  *a = c.a0 - 0.5 * (jx * c.n[0] + jy * c.n[1]);
+  *b = 0.5 * (jx * c.s[0] + jy * c.s[1]);
+}
+
+PetscErrorCode CrackInterface::Gather(Vec u) {
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
+  PetscFunctionBeginUser;
+  PetscCall(Gather(u));
+  const PetscScalar *U, *minv;
+  PetscScalar* F;
+  PetscCall(VecGetArrayRead(u_local_, &U));
+  PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
+  PetscCall(VecGetArray(f_local_, &F));
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const ContactCell& c = cells_[i];
+    double a, b;
+    Kinematics(i, U, &a, &b);
+    const contact::Traction t = law_->trial(i, a, b);
+    // Only the change from the initial state: the pre-stress that holds a
+    // pre-closed crack (a0 > 0) at rest balances N(a0).
+    const double N = t.N - c.N0;
+    const double fx = c.weight * (N * c.n[0] - t.T * c.s[0]), fy = c.weight * (N * c.n[1] - t.T * c.s[1]);
+    F[4 * i] = fx * minv[4 * i];
+    F[4 * i + 1] = fy * minv[4 * i + 1];
+    F[4 * i + 2] = -fx * minv[4 * i + 2];
+    F[4 * i + 3] = -fy * minv[4 * i + 3];
+  }
+  PetscCall(VecRestoreArray(f_local_, &F));
+  PetscCall(VecRestoreArrayRead(inv_mass_local_, &minv));
+  PetscCall(VecRestoreArrayRead(u_local_, &U));
+  PetscCall(VecScatterBegin(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
+  PetscFunctionBeginUser;
+  PetscCall(Gather(u));
+  const PetscScalar* U;
+  PetscCall(VecGetArrayRead(u_local_, &U));
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    Kinematics(i, U, &a_[i], &b_[i]);
+    last_[i] = law_->commit(i, a_[i], b_[i]);
+    W_[i] += last_[i].dW;
+    power_[i] = dt > 0 ? last_[i].dW / dt : 0.0;
+    dissipated_local_ += cells_[i].weight * last_[i].dW;
+  }
+  PetscCall(VecRestoreArrayRead(u_local_, &U));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2) {
+  PetscFunctionBeginUser;
+  // A pair of nodes joined by a jump stiffness k (force per unit jump): ω² = k (1/m⁺ + 1/m⁻),
+  // k = w · max(dN/da, dT/db) / 2 (a and b are half jumps).
+  const PetscScalar* minv;
+  PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
+  double local = 0.0;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const contact::CellStiffness k = law_->stiffness(i, a_[i]);
+    const double kj = 0.5 * cells_[i].weight * std::max(k.normal, k.tangential);
+    local = std::max(local, kj * PetscRealPart(minv[4 * i] + minv[4 * i + 2]));
+  }
+  PetscCall(VecRestoreArrayRead(inv_mass_local_, &minv));
+  PetscCallMPI(MPI_Allreduce(&local, omega2, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::Energies(double* stored, double* dissipated) {
+  PetscFunctionBeginUser;
+  // Stored energy relative to the initial, pre-stressed state: U − U0 − 2 N(a0)(a − a0).
+  double local[2] = {0.0, dissipated_local_}, global[2];
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const ContactCell& c = cells_[i];
+    local[0] += c.weight * (law_->stored_energy(i) - initial_stored_[i] - 2.0 * c.N0 * (a_[i] - c.a0));
+  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm_));
+  *stored = global[0];
+  *dissipated = global[1];
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::interface
