@@ -95,7 +95,13 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, io::RunSummary*
   if (!specimen.cracks.empty() && contact_params.crack_law != "open") {
     crack_ = std::make_unique<interface::CrackInterface>();
     PetscCall(crack_->Setup(wave_->space(), wave_->mass(), contact_params, a0));
-    PetscCall(wave_->SetInterface(crack_.get()));
+    // Expected largest approach: twice the displacement amplitude the source imposes
+    // (for a traction source, the displacement of a plane S wave, A / (ρ c_s ω)).
+    const double omega = 2.0 * M_PI * excitation_.signal.frequency;
+    const double amplitude = excitation_.type == wave::SourceType::Displacement
+                                 ? excitation_.signal.amplitude
+                                 : excitation_.signal.amplitude / (material_.density * material_.cs() * omega);
+    PetscCall(wave_->SetInterface(crack_.get(), 2.0 * amplitude));
     summary->contact_cells = crack_->global_cells();
   }
   PetscCall(PetscLogStagePop());
@@ -141,6 +147,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
 
   summary->physics_ran.push_back("wave");
   if (crack_) summary->physics_ran.push_back("contact");
+  summary->wave_dt_reductions = solver.dt_reductions();
   summary->dofs_wave = solver.dofs();
   summary->steps_wave = solver.steps();
   summary->max_budget_error = recorder.energy.max_budget_error();

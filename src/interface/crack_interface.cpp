@@ -38,10 +38,12 @@ PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
 
 namespace {
 
-/// A crack facet as every rank needs to know it to orient the cells.
+/// A crack facet as every rank needs to know it: orientation, position and the
+/// tributary lengths of its end nodes (a node's facets may live on other ranks).
 struct FacetInfo {
   PetscInt id, crack;
   double mx, my, length;
+  double x0, y0, x1, y1;  ///< end points
 };
 
 /// Centroid of a cell from its closure vertices.
@@ -100,7 +102,8 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
     const PetscInt* fv;
     PetscCall(DMPlexGetCone(dm, cone[0], &fv));
     const auto p = x(fv[0]), q = x(fv[1]);
-    mine.push_back({id, crack - 1, 0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), std::hypot(q[0] - p[0], q[1] - p[1])});
+    mine.push_back({id, crack - 1, 0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), std::hypot(q[0] - p[0], q[1] - p[1]), p[0],
+                    p[1], q[0], q[1]});
   }
   int nbytes = static_cast<int>(mine.size() * sizeof(FacetInfo)), size;
   PetscCallMPI(MPI_Comm_size(comm_, &size));
@@ -128,14 +131,32 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
     fr.cy = 0.5 * (fr.fy + fr.ly);
   }
 
-  // Contact cells: one per owned tensor edge with distinct vertices, accumulated over its facets.
+  PetscCheck(space.degree() == 1, comm_, PETSC_ERR_SUP,
+             "crack contact with -wave_degree 2 is not supported yet (mid-side node pairs): use -wave_degree 1");
+  // Tributary length and mean tangent of every crack node, from all facets (by
+  // node coordinates: both faces of a split node share them).
+  struct NodeSum {
+    double weight = 0, sx = 0, sy = 0;
+  };
+  std::map<std::pair<double, double>, NodeSum> nodes;
+  for (const FacetInfo& f : all) {
+    const CrackFrame& fr = frames[f.crack];
+    double sx = (f.x1 - f.x0) / f.length, sy = (f.y1 - f.y0) / f.length;
+    if (sx * fr.dx + sy * fr.dy < 0) sx = -sx, sy = -sy;
+    for (const auto& end : {std::make_pair(f.x0, f.y0), std::make_pair(f.x1, f.y1)}) {
+      NodeSum& node = nodes[end];
+      node.weight += 0.5 * f.length;  // ∫φ ds of a linear node on the facet
+      node.sx += 0.5 * f.length * sx;
+      node.sy += 0.5 * f.length * sy;
+    }
+  }
+
+  // Contact cells: one per owned tensor edge with distinct vertices.
   struct Accumulator {
     ContactCell cell{};
     double sx = 0, sy = 0;
   };
   std::map<PetscInt, Accumulator> by_edge;
-  std::vector<PetscInt> offsets;
-  std::vector<double> weights;
   for (PetscInt c : cohesive) {
     const PetscInt* cone;
     PetscCall(DMPlexGetCone(dm, c, &cone));
@@ -166,22 +187,19 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
       }
     }
     PetscCheck(plus_face >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cohesive cell %" PetscInt_FMT " has no local bulk neighbour", c);
-    double length;
-    PetscCall(space.FaceNodes(cone[0], &offsets, &weights, &length));
-    const PetscInt* face_a_vertices = fv;
     for (int k = 2; k < 4; ++k) {
       const PetscInt* pair;
       PetscCall(DMPlexGetCone(dm, cone[k], &pair));
       if (pair[0] == pair[1] || ghost[cone[k] - chart0]) continue;  // buried tip, or another rank's cell
       Accumulator& acc = by_edge[cone[k]];
-      const double w = weights[pair[0] == face_a_vertices[0] ? 0 : 1];
+      const auto xv = x(pair[0]);
+      const NodeSum& node = nodes.at({xv[0], xv[1]});
       acc.cell.plus = plus_face == 0 ? pair[0] : pair[1];
       acc.cell.minus = plus_face == 0 ? pair[1] : pair[0];
-      acc.cell.weight += w;
+      acc.cell.weight = node.weight;
       acc.cell.crack = crack - 1;
-      acc.sx += w * sx;
-      acc.sy += w * sy;
-      const auto xv = x(pair[0]);
+      acc.sx = node.sx;
+      acc.sy = node.sy;
       acc.cell.x = xv[0];
       acc.cell.y = xv[1];
     }
@@ -302,7 +320,7 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2) {
+PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2, double extra_approach) {
   PetscFunctionBeginUser;
   // A pair of nodes joined by a jump stiffness k (force per unit jump): ω² = k (1/m⁺ + 1/m⁻),
   // k = w · max(dN/da, dT/db) / 2 (a and b are half jumps).
@@ -310,7 +328,8 @@ PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2) {
   PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
   double local = 0.0;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
-    const contact::CellStiffness k = law_->stiffness(i, a_[i]);
+    const double a = extra_approach >= 0.0 ? cells_[i].a0 + extra_approach : a_[i];
+    const contact::CellStiffness k = law_->stiffness(i, a);
     const double kj = 0.5 * cells_[i].weight * std::max(k.normal, k.tangential);
     local = std::max(local, kj * PetscRealPart(minv[4 * i] + minv[4 * i + 2]));
   }

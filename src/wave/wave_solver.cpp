@@ -303,11 +303,20 @@ PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface) {
+PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface, double expected_approach) {
   PetscFunctionBeginUser;
   PetscCheck(!second_order_, PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
              "-wave_ts_type alpha2 with a contact law is not supported yet: use an explicit type");
   interface_ = interface;
+  if (omega_dt_max_ > 0.0 && options_.dt <= 0.0) {
+    // A step that will rarely need to change: decided once, from the expected largest approach.
+    double omega2;
+    PetscCall(interface_->MaxFrequencySquared(&omega2, expected_approach));
+    const double raw = options_.cfl * omega_dt_max_ / std::sqrt(omega_max_ * omega_max_ + omega2);
+    const double scale = std::pow(10.0, std::floor(std::log10(raw)) - 3);
+    dt_ = std::min(dt_, std::floor(raw / scale) * scale);
+    PetscCall(TSSetTimeStep(ts_, dt_));
+  }
   PetscCall(CheckStableStep());
   PetscFunctionReturn(0);
 }

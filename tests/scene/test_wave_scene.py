@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Requirement: a short run of the paper scene (waves only) writes probes.csv,
+"""Requirement: a short run of the paper scene (waves and MMD contact) writes probes.csv,
 energy.csv and summary.json; the 2-rank probe series equal the serial ones to
 1e-10 of their amplitude; the energy budget closes (velocity Verlet) and the
 summary says the wave solver ran.
@@ -27,7 +27,8 @@ with tempfile.TemporaryDirectory() as tmp:
         energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
         summary = json.load(open(os.path.join(out, "summary.json")))
         runs[ranks] = (rows, energy, summary)
-        check(summary["physics_ran"] == ["wave"], "physics_ran %s" % summary["physics_ran"])
+        check(summary["physics_ran"] == ["wave", "contact"], "physics_ran %s" % summary["physics_ran"])
+        check(summary["contact_cells"] == 39, "contact cells %s" % summary["contact_cells"])
         check(summary["steps_wave"] > 100, "steps_wave %s" % summary["steps_wave"])
         # budget_error divides by the work done so far: ill-conditioned in the first
         # steps (work ~1e-9 J/m); 1 % overall (issue 7), 1e-3 once 2 % of the run is done.

@@ -16,6 +16,7 @@ struct RunSummary {
   long long dofs_wave = 0, dofs_heat = 0, contact_cells = 0, steps_wave = 0, steps_heat = 0;
   double wall_time_s = 0.0;
   double max_budget_error = 0.0;
+  long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
   std::map<std::string, double> stages;   ///< phase → wall seconds
   mesh::MeshSummary mesh;
 };

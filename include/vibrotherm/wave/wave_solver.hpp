@@ -42,8 +42,9 @@ class WaveInterface {
   virtual PetscErrorCode AddAcceleration(Vec u, Vec a) = 0;
   /// Advances the history to u after an accepted step of size dt.
   virtual PetscErrorCode Commit(Vec u, double dt) = 0;
-  /// Largest ω² the interface adds to M⁻¹K at its current state (for the stable step).
-  virtual PetscErrorCode MaxFrequencySquared(double* omega2) = 0;
+  /// Largest ω² the interface adds to M⁻¹K at its current state, or with every
+  /// cell pressed `extra_approach` beyond its initial approach (for the initial step).
+  virtual PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) = 0;
   /// Energy stored in the interface and dissipated so far [J/m] (global).
   virtual PetscErrorCode Energies(double* stored, double* dissipated) = 0;
 };
@@ -77,9 +78,10 @@ class WaveSolver {
   /// Steps of size dt that fit before t_end.
   PetscInt StepsUntil(double t_end) const;
 
-  /// Attaches an interface (not owned); call after Setup. The stable step then
-  /// includes its stiffness, and shrinks if the interface stiffens.
-  PetscErrorCode SetInterface(WaveInterface* interface);
+  /// Attaches an interface (not owned); call after Setup. The initial step
+  /// includes its stiffness at the expected largest approach (a0 + expected_approach);
+  /// a rarely needed safety net shrinks it later if the contact stiffens beyond that.
+  PetscErrorCode SetInterface(WaveInterface* interface, double expected_approach);
   /// The lumped mass (global vector).
   Vec mass() const { return M_; }
 
