@@ -148,6 +148,11 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   summary->physics_ran.push_back("wave");
   if (crack_) summary->physics_ran.push_back("contact");
   summary->wave_dt_reductions = solver.dt_reductions();
+  if (crack_) {
+    double stored;
+    PetscCall(crack_->Energies(&stored, &summary->dissipated_energy));
+    PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
+  }
   summary->dofs_wave = solver.dofs();
   summary->steps_wave = solver.steps();
   summary->max_budget_error = recorder.energy.max_budget_error();

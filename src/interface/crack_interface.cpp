@@ -75,6 +75,7 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
   DM dm = space.dm();
   comm_ = PetscObjectComm((PetscObject)dm);
   VibrothermCallCpp(comm_, law_ = contact::create_crack_law(params));
+  mu_ = params.crack_law == "clapping" || params.crack_law == "linear" ? INFINITY : params.mu;
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
   DMLabel crack_label, facet_label;
@@ -315,6 +316,8 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
     W_[i] += last_[i].dW;
     power_[i] = dt > 0 ? last_[i].dW / dt : 0.0;
     dissipated_local_ += cells_[i].weight * last_[i].dW;
+    if (last_[i].N > 0.0)
+      friction_excess_ = std::max(friction_excess_, (std::abs(last_[i].T) - mu_ * last_[i].N) / (mu_ * last_[i].N + 1e-300));
   }
   PetscCall(VecRestoreArrayRead(u_local_, &U));
   PetscFunctionReturn(0);
@@ -349,6 +352,13 @@ PetscErrorCode CrackInterface::Energies(double* stored, double* dissipated) {
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm_));
   *stored = global[0];
   *dissipated = global[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::MaxFrictionExcess(double* excess) const {
+  PetscFunctionBeginUser;
+  double local = std::isfinite(mu_) ? friction_excess_ : -1.0;
+  PetscCallMPI(MPI_Allreduce(&local, excess, 1, MPI_DOUBLE, MPI_MAX, comm_));
   PetscFunctionReturn(0);
 }
 

@@ -53,6 +53,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("contact_cells", s.contact_cells).value("steps_wave", s.steps_wave).value("steps_heat", s.steps_heat);
       json.value("wall_time_s", s.wall_time_s).value("max_budget_error", s.max_budget_error);
       json.value("wave_dt_reductions", s.wave_dt_reductions);
+      json.value("dissipated_energy", s.dissipated_energy).value("max_friction_excess", s.max_friction_excess);
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

@@ -70,6 +70,8 @@ class CrackInterface final : public wave::WaveInterface {
   double b(std::size_t i) const { return b_[i]; }
   double slip_offset(std::size_t i) const { return law_->slip_offset(i); }
   bool dissipative() const { return law_->can_dissipate(); }
+  /// Largest (|T| − μN)/(μN + ε) seen in any committed step (≤ 0: Coulomb's bound held), global.
+  PetscErrorCode MaxFrictionExcess(double* excess) const;
 
  private:
   PetscErrorCode Gather(Vec u);                       ///< ± displacements of every cell into u_local_
@@ -83,6 +85,7 @@ class CrackInterface final : public wave::WaveInterface {
   std::vector<double> initial_stored_;  ///< U of each cell in its initial state
   std::vector<contact::StepResult> last_;
   double dissipated_local_ = 0.0;
+  double friction_excess_ = -1.0, mu_ = 0.0;
   PetscInt global_cells_ = 0;
   MPI_Comm comm_ = MPI_COMM_NULL;
 };

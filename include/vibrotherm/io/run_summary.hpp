@@ -17,6 +17,8 @@ struct RunSummary {
   double wall_time_s = 0.0;
   double max_budget_error = 0.0;
   long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
+  double dissipated_energy = 0.0;     ///< [J/m]
+  double max_friction_excess = -1.0;  ///< max (|T| − μN)/(μN) over cells and steps (≤ 0 when Coulomb held)
   std::map<std::string, double> stages;   ///< phase → wall seconds
   mesh::MeshSummary mesh;
 };
