@@ -7,14 +7,15 @@
 #include <cmath>
 
 #include "vibrotherm/interface/contact_options.hpp"
+#include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::coupling {
 
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscFunctionBeginUser;
-  PetscReal points[256];
-  PetscInt npoints = 256;
-  PetscBool has_points = PETSC_FALSE;
+  PetscReal points[256], fractions[64];
+  PetscInt npoints = 256, nfractions = 64;
+  PetscBool has_points = PETSC_FALSE, has_fractions = PETSC_FALSE;
   PetscOptionsBegin(comm, nullptr, "Run control and recording", nullptr);
   PetscCall(PetscOptionsReal("-final_time", "Simulated time [s] (default: the source duration)", nullptr,
                              o->final_time, &o->final_time, nullptr));
@@ -24,7 +25,17 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
                             &o->probe_every, nullptr));
   PetscCall(PetscOptionsRealArray("-probe_points", "Probe points x1,y1,x2,y2,... [m]", nullptr, points, &npoints,
                                   &has_points));
+  PetscCall(PetscOptionsRealArray("-crack_probe", "Crack probes: fractions of the crack length (0.5: centre)", nullptr,
+                                  fractions, &nfractions, &has_fractions));
+  PetscCall(PetscOptionsInt("-crack_probe_crack", "Crack of the crack probes (1-based)", nullptr, o->crack_probe_crack,
+                            &o->crack_probe_crack, nullptr));
+  PetscCall(PetscOptionsInt("-crack_state_every", "Steps between crack_state.csv records (0: none)", nullptr,
+                            o->crack_state_every, &o->crack_state_every, nullptr));
   PetscOptionsEnd();
+  o->crack_probes.assign(fractions, fractions + (has_fractions ? nfractions : 0));
+  for (double s : o->crack_probes)
+    PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);
+  PetscCheck(o->crack_state_every >= 0, comm, PETSC_ERR_USER_INPUT, "-crack_state_every must be >= 0");
   PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");
   PetscCheck(o->probe_every >= 1, comm, PETSC_ERR_USER_INPUT, "-probe_every must be >= 1");
   o->probe_points.assign(points, points + (has_points ? npoints : 0));
@@ -38,6 +49,39 @@ struct WaveRecorder {
   io::PointProbes probes;
   io::EnergyLog energy;
   io::Progress progress;
+  interface::CrackInterface* crack = nullptr;
+  std::vector<PetscInt> crack_probe_cells;     ///< owned cell per crack probe (-1 elsewhere)
+  std::unique_ptr<io::AtomicFile> crack_state;  ///< rank 0
+
+  PetscErrorCode RecordCrack(const wave::WaveSolver& w) {
+    PetscFunctionBeginUser;
+    if (!crack) PetscFunctionReturn(0);
+    if (!crack_probe_cells.empty() && w.steps() % options->probe_every == 0) {
+      Vec u, v;
+      std::vector<double> rows;
+      PetscCall(w.GetFields(&u, &v));
+      PetscCall(crack->Rows(crack_probe_cells, u, &rows));
+      PetscCall(w.RestoreFields(&u, &v));
+      const int K = interface::CrackInterface::kRowValues;
+      for (std::size_t p = 0; p < crack_probe_cells.size() && !rows.empty(); ++p) {
+        const double* r = &rows[K * p];
+        probes.WriteCrackRow(w.time(), probes.count() + p, r[0], r[1], r[10], r[11], r + 2);
+      }
+    }
+    if (options->crack_state_every > 0 && w.steps() % options->crack_state_every == 0) {
+      std::vector<double> table;
+      PetscCall(crack->GatherState(&table));
+      static const char* states[] = {"loss", "slide", "partial", "stick"};
+      if (crack_state)
+        for (std::size_t k = 0; k + 11 <= table.size(); k += 11) {
+          std::ostream& out = crack_state->stream();
+          out << w.time();
+          for (int j = 0; j < 8; ++j) out << ',' << table[k + j];
+          out << ',' << states[static_cast<int>(table[k + 8])] << ',' << table[k + 9] << ',' << table[k + 10] << '\n';
+        }
+    }
+    PetscFunctionReturn(0);
+  }
 
   PetscErrorCode RecordEnergy(const wave::WaveSolver& w) {
     PetscFunctionBeginUser;
@@ -65,6 +109,7 @@ struct WaveRecorder {
       PetscCall(w.RestoreFields(&u, &v));
     }
     if (w.steps() % options->energy_every == 0) PetscCall(RecordEnergy(w));
+    PetscCall(RecordCrack(w));
     progress.Update(w.time(), w.steps());
     PetscFunctionReturn(0);
   }
@@ -123,9 +168,23 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = *wave_;
   MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
-  WaveRecorder recorder{&options_, {}, {}, {}};
+  WaveRecorder recorder{&options_, {}, {}, {}, nullptr, {}, nullptr};
   PetscCall(recorder.probes.Setup(solver.space(), options_.probe_points, dir + "/probes.csv"));
   PetscCall(recorder.energy.Open(comm, dir + "/energy.csv"));
+  if (crack_) {
+    recorder.crack = crack_.get();
+    for (double s : options_.crack_probes) {
+      PetscInt cell;
+      PetscCall(crack_->NearestCell(options_.crack_probe_crack - 1, s, &cell));
+      recorder.crack_probe_cells.push_back(cell);
+    }
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    if (rank == 0 && options_.crack_state_every > 0) {
+      VibrothermCallCpp(PETSC_COMM_SELF, recorder.crack_state = std::make_unique<io::AtomicFile>(dir + "/crack_state.csv"));
+      recorder.crack_state->stream() << "t,crack,xi,x,y,a,b,N,T,state,power,W\n";
+    }
+  }
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), %.0f steps to t = %g s\n",
@@ -143,6 +202,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   if (solver.steps() % options_.energy_every != 0) PetscCall(recorder.RecordEnergy(solver));
   PetscCall(recorder.probes.Finish());
   PetscCall(recorder.energy.Finish());
+  if (recorder.crack_state) VibrothermCallCpp(PETSC_COMM_SELF, recorder.crack_state->commit());
   solver.on_step = nullptr;
 
   summary->physics_ran.push_back("wave");

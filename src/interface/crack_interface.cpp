@@ -355,6 +355,91 @@ PetscErrorCode CrackInterface::Energies(double* stored, double* dissipated) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+double StateCode(contact::ContactState s) {
+  switch (s) {
+    case contact::ContactState::Loss: return 0;
+    case contact::ContactState::Slide: return 1;
+    case contact::ContactState::Partial: return 2;
+    case contact::ContactState::Stick: return 3;
+  }
+  return -1;
+}
+}  // namespace
+
+PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* owned_index) const {
+  PetscFunctionBeginUser;
+  struct {
+    double distance;
+    int rank;
+  } mine{INFINITY, 0}, best;
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  mine.rank = rank;
+  *owned_index = -1;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    if (cells_[i].crack != crack) continue;
+    const double d = std::abs(cells_[i].xi - xi);
+    if (d < mine.distance) mine.distance = d, *owned_index = static_cast<PetscInt>(i);
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_));
+  PetscCheck(std::isfinite(best.distance), comm_, PETSC_ERR_USER_INPUT, "-crack_probe: crack %" PetscInt_FMT " has no contact cells",
+             crack + 1);
+  if (best.rank != rank) *owned_index = -1;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::Rows(const std::vector<PetscInt>& owned_index, Vec u, std::vector<double>* rows) const {
+  PetscFunctionBeginUser;
+  PetscCall(const_cast<CrackInterface*>(this)->Gather(u));
+  const PetscScalar* U;
+  PetscCall(VecGetArrayRead(u_local_, &U));
+  std::vector<double> local(kRowValues * owned_index.size(), 0.0);
+  for (std::size_t p = 0; p < owned_index.size(); ++p) {
+    const PetscInt i = owned_index[p];
+    if (i < 0) continue;
+    const ContactCell& c = cells_[i];
+    const contact::StepResult& r = last_[i];
+    const double row[kRowValues] = {c.x,  c.y,  a_[i],          b_[i],     law_->slip_offset(i), r.N, r.T,
+                                    StateCode(r.state), power_[i], W_[i], PetscRealPart(U[4 * i]),
+                                    PetscRealPart(U[4 * i + 1])};
+    std::copy(row, row + kRowValues, local.begin() + kRowValues * p);
+  }
+  PetscCall(VecRestoreArrayRead(u_local_, &U));
+  rows->assign(local.size(), 0.0);
+  PetscCallMPI(MPI_Reduce(local.data(), rows->data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, 0, comm_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::GatherState(std::vector<double>* table) const {
+  PetscFunctionBeginUser;
+  constexpr int kValues = 11;
+  std::vector<double> local;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const ContactCell& c = cells_[i];
+    const contact::StepResult& r = last_[i];
+    const double row[kValues] = {double(c.crack + 1), c.xi, c.x, c.y, a_[i], b_[i], r.N, r.T, StateCode(r.state),
+                                 power_[i], W_[i]};
+    local.insert(local.end(), row, row + kValues);
+  }
+  int n = static_cast<int>(local.size()), size, rank;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  std::vector<int> counts(size), displs(size, 0);
+  PetscCallMPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_));
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  table->assign(rank == 0 ? displs.back() + counts.back() : 0, 0.0);
+  PetscCallMPI(MPI_Gatherv(local.data(), n, MPI_DOUBLE, table->data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm_));
+  // Rank 0 sorts by crack and position so the table reads along each crack.
+  if (rank == 0) {
+    std::vector<std::array<double, kValues>> rows(table->size() / kValues);
+    for (std::size_t k = 0; k < rows.size(); ++k) std::copy_n(table->begin() + kValues * k, kValues, rows[k].begin());
+    std::sort(rows.begin(), rows.end(), [](const auto& x, const auto& y) { return x[0] != y[0] ? x[0] < y[0] : x[1] < y[1]; });
+    for (std::size_t k = 0; k < rows.size(); ++k) std::copy(rows[k].begin(), rows[k].end(), table->begin() + kValues * k);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CrackInterface::MaxFrictionExcess(double* excess) const {
   PetscFunctionBeginUser;
   double local = std::isfinite(mu_) ? friction_excess_ : -1.0;

@@ -33,7 +33,7 @@ PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vec
   }
   if (rank == 0) {
     VibrothermCallCpp(PETSC_COMM_SELF, file_ = std::make_unique<AtomicFile>(path));
-    file_->stream() << "t,probe,x,y,ux,uy,vx,vy,temperature\n";
+    file_->stream() << "t,probe,x,y,ux,uy,vx,vy,temperature,a,b,b0,N,T,state,power,W\n";
   }
   PetscCall(DMCreateLocalVector(dm, &u_local_));
   PetscCall(DMCreateLocalVector(dm, &v_local_));
@@ -69,9 +69,19 @@ PetscErrorCode PointProbes::Record(double t, Vec u, Vec v) {
     std::ostream& out = file_->stream();
     for (std::size_t p = 0; p < points_.size(); ++p)
       out << t << ',' << p << ',' << points_[p][0] << ',' << points_[p][1] << ',' << all[4 * p] << ','
-          << all[4 * p + 1] << ',' << all[4 * p + 2] << ',' << all[4 * p + 3] << ",nan\n";
+          << all[4 * p + 1] << ',' << all[4 * p + 2] << ',' << all[4 * p + 3] << ",nan,nan,nan,nan,nan,nan,,nan,nan\n";
   }
   PetscFunctionReturn(0);
+}
+
+void PointProbes::WriteCrackRow(double t, std::size_t probe, double x, double y, double ux, double uy,
+                                const double* c) {
+  static const char* states[] = {"loss", "slide", "partial", "stick"};
+  if (!file_) return;
+  const int state = static_cast<int>(c[5]);
+  file_->stream() << t << ',' << probe << ',' << x << ',' << y << ',' << ux << ',' << uy << ",nan,nan,nan," << c[0]
+                  << ',' << c[1] << ',' << c[2] << ',' << c[3] << ',' << c[4] << ','
+                  << (state >= 0 && state < 4 ? states[state] : "?") << ',' << c[6] << ',' << c[7] << '\n';
 }
 
 PetscErrorCode PointProbes::Finish() {

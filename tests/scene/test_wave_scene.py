@@ -18,7 +18,8 @@ with tempfile.TemporaryDirectory() as tmp:
     for ranks in (1, 2):
         out = os.path.join(tmp, "np%d" % ranks)
         cmd = [mpiexec, "-n", str(ranks), "--oversubscribe", exe, "-options_file", os.path.join(src, "options/paper.opts"),
-               "-final_time", "3e-5", "-probe_points", probes, "-probe_every", "10", "-output_dir", out]
+               "-final_time", "3e-5", "-probe_points", probes, "-probe_every", "10", "-crack_probe", "0.5,0.2",
+               "-output_dir", out]
         r = subprocess.run(cmd, capture_output=True, text=True)
         check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr[-2000:]))
         if r.returncode:
@@ -36,14 +37,23 @@ with tempfile.TemporaryDirectory() as tmp:
         late = [abs(float(e["budget_error"])) for e in energy if float(e["t"]) > 0.02 * 3e-5]
         check(max(late) < 1e-3, "budget error after the start %s" % max(late))
         check(float(energy[-1]["work_source"]) > 0, "the source did work")
-        check(len(rows) == 4 * (summary["steps_wave"] // 10), "probe rows %d" % len(rows))
+        check(len(rows) == 6 * (summary["steps_wave"] // 10), "probe rows %d" % len(rows))
+        check(os.path.exists(os.path.join(out, "crack_state.csv")), "crack_state.csv written")
 
 if 1 in runs and 2 in runs:
     a, b = runs[1][0], runs[2][0]
     check(len(a) == len(b), "row counts differ: %d vs %d" % (len(a), len(b)))
+    point = [(x, y) for x, y in zip(a, b) if int(x["probe"]) < 4]
+    crack = [(x, y) for x, y in zip(a, b) if int(x["probe"]) >= 4]
     for col in ("ux", "uy", "vx", "vy"):
-        scale = max(abs(float(r[col])) for r in a) or 1.0
-        worst = max(abs(float(x[col]) - float(y[col])) for x, y in zip(a, b)) / scale
+        scale = max(abs(float(x[col])) for x, _ in point) or 1.0
+        worst = max(abs(float(x[col]) - float(y[col])) for x, y in point) / scale
         check(worst <= 1e-10, "%s: 2 ranks differ from serial by %.3g of the amplitude" % (col, worst))
+    check(len(crack) > 0, "crack probe rows")
+    for col in ("a", "b", "N", "T", "W"):
+        scale = max(abs(float(x[col])) for x, _ in crack) or 1.0
+        worst = max(abs(float(x[col]) - float(y[col])) for x, y in crack) / scale
+        check(worst <= 1e-9, "crack %s: 2 ranks differ from serial by %.3g of its amplitude" % (col, worst))
+    check(all(x["state"] == y["state"] for x, y in crack), "crack states differ between 1 and 2 ranks")
     check(all(float(x["t"]) == float(y["t"]) for x, y in zip(a, b)), "probe times differ")
 check.finish()

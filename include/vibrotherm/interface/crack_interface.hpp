@@ -70,6 +70,17 @@ class CrackInterface final : public wave::WaveInterface {
   double b(std::size_t i) const { return b_[i]; }
   double slip_offset(std::size_t i) const { return law_->slip_offset(i); }
   bool dissipative() const { return law_->can_dissipate(); }
+  /// One row of crack data per requested cell, reduced onto rank 0:
+  /// x, y, a, b, b0, N, T, state code (0 loss, 1 slide, 2 partial, 3 stick), power, W, and
+  /// the + node's ux, uy. `cells` are global cell choices from NearestCell.
+  static constexpr int kRowValues = 12;
+  PetscErrorCode Rows(const std::vector<PetscInt>& owned_index, Vec u, std::vector<double>* rows) const;
+  /// The owned cell nearest to fraction xi along crack `crack` (-1 on every
+  /// rank but the one owning the globally nearest cell).
+  PetscErrorCode NearestCell(PetscInt crack, double xi, PetscInt* owned_index) const;
+  /// All cells' state on rank 0 (others get nothing): per cell crack, xi, x, y, a, b, N, T, state, power, W.
+  PetscErrorCode GatherState(std::vector<double>* table) const;
+
   /// Largest (|T| − μN)/(μN + ε) seen in any committed step (≤ 0: Coulomb's bound held), global.
   PetscErrorCode MaxFrictionExcess(double* excess) const;
 

@@ -1,6 +1,7 @@
 // Point probes: a field of a LagrangeSpace evaluated at fixed points, written
-// by rank 0 to probes.csv (columns t,probe,x,y,ux,uy,vx,vy,temperature; a
-// column without data is nan). Each point is evaluated by exactly one rank.
+// by rank 0 to probes.csv. Columns: t,probe,x,y,ux,uy,vx,vy,temperature and, for
+// crack probes, a,b,b0,N,T,state,power,W (a column without data is nan). Each
+// point is evaluated by exactly one rank.
 #pragma once
 
 #include <petscvec.h>
@@ -22,6 +23,8 @@ class PointProbes {
   PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path);
   /// Appends one row per probe with displacement u and velocity v (global vectors).
   PetscErrorCode Record(double t, Vec u, Vec v);
+  /// Appends a crack-probe row (rank 0): x, y, ux, uy of the + node, then a, b, b0, N, T, state, power, W.
+  void WriteCrackRow(double t, std::size_t probe, double x, double y, double ux, double uy, const double* crack);
   /// Publishes probes.csv (call once at the end of a successful run).
   PetscErrorCode Finish();
   std::size_t count() const { return points_.size(); }
