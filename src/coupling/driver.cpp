@@ -146,7 +146,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, io::RunSummary*
     const double amplitude = excitation_.type == wave::SourceType::Displacement
                                  ? excitation_.signal.amplitude
                                  : excitation_.signal.amplitude / (material_.density * material_.cs() * omega);
-    PetscCall(wave_->SetInterface(crack_.get(), 2.0 * amplitude));
+    PetscCall(wave_->SetInterface(crack_.get(), 2.0 * std::abs(amplitude)));
     summary->contact_cells = crack_->global_cells();
   }
   PetscCall(PetscLogStagePop());

@@ -26,9 +26,9 @@ with tempfile.TemporaryDirectory() as tmp:
             expected = 1.0 / math.sqrt(1.0 + (ratio / 2.0) ** 2)
             t_in = (H - y_probe) / c
             out = os.path.join(tmp, "%s%g" % (wave, ratio))
-            args = [exe, "-specimen_width", "%g" % (20 * h), "-specimen_height", "%g" % H, "-mesh_h", "%g" % h,
-                    "-mesh_h_crack", "%g" % h, "-crack_center", "%g,%g" % (10 * h, y_crack), "-crack_length",
-                    "%g" % (20 * h), "-crack_angle", "0", "-crack_law", "linear", "-contact_normal_k", "%g" % (2 * K),
+            args = [exe, "-specimen_width", "%.17g" % (20 * h), "-specimen_height", "%g" % H, "-mesh_h", "%g" % h,
+                    "-mesh_h_crack", "%g" % h, "-crack_center", "%.17g,%.17g" % (10 * h, y_crack), "-crack_length",
+                    "%.17g" % (20 * h), "-crack_angle", "0", "-crack_law", "linear", "-contact_normal_k", "%g" % (2 * K),
                     "-contact_tangential_k", "%g" % (2 * K), "-edge_left", sides, "-edge_right", sides,
                     "-edge_bottom", "absorbing", "-source_component", "normal" if wave == "P" else "tangential",
                     "-source_frequency", "%g" % f, "-source_amplitude", "%g" % A, "-source_duration",
