@@ -209,7 +209,9 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   if (crack_) summary->physics_ran.push_back("contact");
   summary->wave_dt_reductions = solver.dt_reductions();
   if (crack_) {
-    double stored;
+    double stored, seconds = crack_->seconds();
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, comm));
+    summary->stages["contact"] = seconds;  // part of wave_steps
     PetscCall(crack_->Energies(&stored, &summary->dissipated_energy));
     PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
   }

@@ -1,5 +1,7 @@
 #include "vibrotherm/interface/crack_interface.hpp"
 
+#include "vibrotherm/contact/csv_rows.hpp"
+
 #include <petscdmplex.h>
 #include <petscsf.h>
 
@@ -14,13 +16,23 @@
 namespace vibrotherm::interface {
 
 double ApproachProfile::at(double xi) const {
-  const double e = elliptic ? max * std::sqrt(std::max(0.0, 1.0 - (2.0 * xi - 1.0) * (2.0 * xi - 1.0))) : 0.0;
-  return uniform + e;
+  double profile = elliptic ? max * std::sqrt(std::max(0.0, 1.0 - (2.0 * xi - 1.0) * (2.0 * xi - 1.0))) : 0.0;
+  if (!table.empty()) {
+    const auto it = std::lower_bound(table.begin(), table.end(), std::make_pair(xi, -1e300));
+    if (it == table.begin()) profile = table.front().second;
+    else if (it == table.end()) profile = table.back().second;
+    else {
+      const auto& [x1, y1] = *it;
+      const auto& [x0, y0] = *(it - 1);
+      profile = y0 + (y1 - y0) * (xi - x0) / (x1 - x0);
+    }
+  }
+  return uniform + profile;
 }
 
 PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
   PetscFunctionBeginUser;
-  char profile[32] = "uniform";
+  char profile[32] = "uniform", file[PETSC_MAX_PATH_LEN] = "";
   PetscOptionsBegin(comm, nullptr, "Initial approach of the crack faces", nullptr);
   PetscCall(PetscOptionsReal("-crack_a0", "Uniform initial approach a0 [m] (> 0: pre-closed)", nullptr, p->uniform,
                              &p->uniform, nullptr));
@@ -28,11 +40,25 @@ PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
                                nullptr));
   PetscCall(PetscOptionsReal("-crack_a0_max", "Elliptic profile: a0 at the crack centre [m]", nullptr, p->max, &p->max,
                              nullptr));
+  PetscCall(PetscOptionsString("-crack_a0_file", "file profile: CSV with columns xi,a0 (xi in [0,1] along the crack)",
+                               nullptr, file, file, sizeof(file), nullptr));
   PetscOptionsEnd();
   const std::string name(profile);
-  PetscCheck(name == "uniform" || name == "elliptic", comm, PETSC_ERR_USER_INPUT,
-             "-crack_a0_profile: unknown value '%s' (known: uniform|elliptic)", profile);
+  PetscCheck(name == "uniform" || name == "elliptic" || name == "file", comm, PETSC_ERR_USER_INPUT,
+             "-crack_a0_profile: unknown value '%s' (known: uniform|elliptic|file)", profile);
   p->elliptic = name == "elliptic";
+  if (name == "file") {
+    PetscCheck(file[0], comm, PETSC_ERR_USER_INPUT, "-crack_a0_profile file needs -crack_a0_file FILE");
+    VibrothermCallCpp(comm, {
+      for (const contact::CsvRow& r : contact::read_csv_rows(file, "-crack_a0_file", 2, "xi,a0")) {
+        if (!p->table.empty() && !(r.values[0] > p->table.back().first))
+          throw contact::InputError(std::string("-crack_a0_file ") + file + " line " + std::to_string(r.line) +
+                                    ": xi must increase");
+        p->table.emplace_back(r.values[0], r.values[1]);
+      }
+      if (p->table.empty()) throw contact::InputError(std::string("-crack_a0_file ") + file + ": no data rows");
+    });
+  }
   PetscFunctionReturn(0);
 }
 
@@ -74,6 +100,10 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
   PetscFunctionBeginUser;
   DM dm = space.dm();
   comm_ = PetscObjectComm((PetscObject)dm);
+  PetscClassId id;
+  PetscCall(PetscClassIdRegister("vibrotherm interface", &id));
+  PetscCall(PetscLogEventRegister("CrackForces", id, &force_event_));
+  PetscCall(PetscLogEventRegister("CrackCommit", id, &commit_event_));
   VibrothermCallCpp(comm_, law_ = contact::create_crack_law(params));
   mu_ = params.crack_law == "clapping" || params.crack_law == "linear" ? INFINITY : params.mu;
   mesh::VertexCoordinates x;
@@ -233,6 +263,13 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
       indices.push_back(off);
       indices.push_back(off + 1);
     }
+  // Direct access when every needed dof is owned here (always in serial, usually
+  // with METIS); a scatter otherwise.
+  PetscInt rstart, rend;
+  PetscCall(VecGetOwnershipRange(lumped_mass, &rstart, &rend));
+  int all_owned = std::all_of(indices.begin(), indices.end(), [&](PetscInt i) { return i >= rstart && i < rend; });
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &all_owned, 1, MPI_INT, MPI_MIN, comm_));
+  direct_ = all_owned;
   IS is;
   PetscCall(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), &u_local_));
@@ -243,6 +280,12 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
   PetscCall(VecScatterBegin(scatter_, lumped_mass, inv_mass_local_, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(scatter_, lumped_mass, inv_mass_local_, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecReciprocal(inv_mass_local_));
+  const PetscScalar* minv;
+  PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
+  inv_mass_.assign(minv, minv + indices.size());
+  PetscCall(VecRestoreArrayRead(inv_mass_local_, &minv));
+  owned_index_.resize(indices.size());
+  for (std::size_t k = 0; k < indices.size(); ++k) owned_index_[k] = indices[k] - rstart;
 
   const std::size_t n = cells_.size();
   a_.resize(n);
@@ -263,26 +306,41 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
 
 void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, double* b) const {
   const ContactCell& c = cells_[i];
-  const double jx = PetscRealPart(U[4 * i] - U[4 * i + 2]), jy = PetscRealPart(U[4 * i + 1] - U[4 * i + 3]);
+  const double jx = PetscRealPart(U[Slot(i, 0)] - U[Slot(i, 2)]), jy = PetscRealPart(U[Slot(i, 1)] - U[Slot(i, 3)]);
   *a = c.a0 - 0.5 * (jx * c.n[0] + jy * c.n[1]);
   *b = 0.5 * (jx * c.s[0] + jy * c.s[1]);
 }
 
-PetscErrorCode CrackInterface::Gather(Vec u) {
+PetscErrorCode CrackInterface::GatherBegin(Vec u, const PetscScalar** U) {
   PetscFunctionBeginUser;
-  PetscCall(VecScatterBegin(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
+  if (direct_) {
+    PetscCall(VecGetArrayRead(u, U));
+  } else {
+    PetscCall(VecScatterBegin(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(scatter_, u, u_local_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(u_local_, U));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::GatherEnd(Vec u, const PetscScalar** U) {
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(direct_ ? u : u_local_, U));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
   PetscFunctionBeginUser;
-  PetscCall(Gather(u));
-  const PetscScalar *U, *minv;
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogEventBegin(force_event_, 0, 0, 0, 0));
+  const PetscScalar* U;
   PetscScalar* F;
-  PetscCall(VecGetArrayRead(u_local_, &U));
-  PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
-  PetscCall(VecGetArray(f_local_, &F));
+  PetscCall(GatherBegin(u, &U));
+  if (direct_) {
+    PetscCall(VecGetArray(acc, &F));
+  } else {
+    PetscCall(VecGetArray(f_local_, &F));
+  }
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const ContactCell& c = cells_[i];
     double a, b;
@@ -292,24 +350,32 @@ PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
     // pre-closed crack (a0 > 0) at rest balances N(a0).
     const double N = t.N - c.N0;
     const double fx = c.weight * (N * c.n[0] - t.T * c.s[0]), fy = c.weight * (N * c.n[1] - t.T * c.s[1]);
-    F[4 * i] = fx * minv[4 * i];
-    F[4 * i + 1] = fy * minv[4 * i + 1];
-    F[4 * i + 2] = -fx * minv[4 * i + 2];
-    F[4 * i + 3] = -fy * minv[4 * i + 3];
+    const double f[4] = {fx, fy, -fx, -fy};
+    for (int k = 0; k < 4; ++k) {
+      const double value = f[k] * inv_mass_[4 * i + k];
+      if (direct_) F[Slot(i, k)] += value;
+      else F[4 * i + k] = value;
+    }
   }
-  PetscCall(VecRestoreArray(f_local_, &F));
-  PetscCall(VecRestoreArrayRead(inv_mass_local_, &minv));
-  PetscCall(VecRestoreArrayRead(u_local_, &U));
-  PetscCall(VecScatterBegin(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(GatherEnd(u, &U));
+  if (direct_) {
+    PetscCall(VecRestoreArray(acc, &F));
+  } else {
+    PetscCall(VecRestoreArray(f_local_, &F));
+    PetscCall(VecScatterBegin(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(scatter_, f_local_, acc, ADD_VALUES, SCATTER_REVERSE));
+  }
+  PetscCall(PetscLogEventEnd(force_event_, 0, 0, 0, 0));
+  seconds_ += MPI_Wtime() - t0;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
   PetscFunctionBeginUser;
-  PetscCall(Gather(u));
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogEventBegin(commit_event_, 0, 0, 0, 0));
   const PetscScalar* U;
-  PetscCall(VecGetArrayRead(u_local_, &U));
+  PetscCall(GatherBegin(u, &U));
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Kinematics(i, U, &a_[i], &b_[i]);
     last_[i] = law_->commit(i, a_[i], b_[i]);
@@ -319,7 +385,9 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
     if (last_[i].N > 0.0)
       friction_excess_ = std::max(friction_excess_, (std::abs(last_[i].T) - mu_ * last_[i].N) / (mu_ * last_[i].N + 1e-300));
   }
-  PetscCall(VecRestoreArrayRead(u_local_, &U));
+  PetscCall(GatherEnd(u, &U));
+  PetscCall(PetscLogEventEnd(commit_event_, 0, 0, 0, 0));
+  seconds_ += MPI_Wtime() - t0;
   PetscFunctionReturn(0);
 }
 
@@ -327,16 +395,13 @@ PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2, double extra_
   PetscFunctionBeginUser;
   // A pair of nodes joined by a jump stiffness k (force per unit jump): ω² = k (1/m⁺ + 1/m⁻),
   // k = w · max(dN/da, dT/db) / 2 (a and b are half jumps).
-  const PetscScalar* minv;
-  PetscCall(VecGetArrayRead(inv_mass_local_, &minv));
   double local = 0.0;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const double a = extra_approach >= 0.0 ? cells_[i].a0 + extra_approach : a_[i];
     const contact::CellStiffness k = law_->stiffness(i, a);
     const double kj = 0.5 * cells_[i].weight * std::max(k.normal, k.tangential);
-    local = std::max(local, kj * PetscRealPart(minv[4 * i] + minv[4 * i + 2]));
+    local = std::max(local, kj * (inv_mass_[4 * i] + inv_mass_[4 * i + 2]));
   }
-  PetscCall(VecRestoreArrayRead(inv_mass_local_, &minv));
   PetscCallMPI(MPI_Allreduce(&local, omega2, 1, MPI_DOUBLE, MPI_MAX, comm_));
   PetscFunctionReturn(0);
 }
@@ -391,9 +456,8 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
 
 PetscErrorCode CrackInterface::Rows(const std::vector<PetscInt>& owned_index, Vec u, std::vector<double>* rows) const {
   PetscFunctionBeginUser;
-  PetscCall(const_cast<CrackInterface*>(this)->Gather(u));
   const PetscScalar* U;
-  PetscCall(VecGetArrayRead(u_local_, &U));
+  PetscCall(const_cast<CrackInterface*>(this)->GatherBegin(u, &U));
   std::vector<double> local(kRowValues * owned_index.size(), 0.0);
   for (std::size_t p = 0; p < owned_index.size(); ++p) {
     const PetscInt i = owned_index[p];
@@ -401,11 +465,11 @@ PetscErrorCode CrackInterface::Rows(const std::vector<PetscInt>& owned_index, Ve
     const ContactCell& c = cells_[i];
     const contact::StepResult& r = last_[i];
     const double row[kRowValues] = {c.x,  c.y,  a_[i],          b_[i],     law_->slip_offset(i), r.N, r.T,
-                                    StateCode(r.state), power_[i], W_[i], PetscRealPart(U[4 * i]),
-                                    PetscRealPart(U[4 * i + 1])};
+                                    StateCode(r.state), power_[i], W_[i], PetscRealPart(U[Slot(i, 0)]),
+                                    PetscRealPart(U[Slot(i, 1)])};
     std::copy(row, row + kRowValues, local.begin() + kRowValues * p);
   }
-  PetscCall(VecRestoreArrayRead(u_local_, &U));
+  PetscCall(const_cast<CrackInterface*>(this)->GatherEnd(u, &U));
   rows->assign(local.size(), 0.0);
   PetscCallMPI(MPI_Reduce(local.data(), rows->data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, 0, comm_));
   PetscFunctionReturn(0);

@@ -24,12 +24,14 @@
 
 namespace vibrotherm::interface {
 
-/// Initial approach along the cracks: -crack_a0 VALUE (uniform), or
-/// -crack_a0_profile elliptic -crack_a0_max VALUE (a0_max √(1 − (2ξ − 1)²),
-/// ξ ∈ [0, 1] along the crack), plus -contact_a0.
+/// Initial approach along the cracks: -crack_a0 VALUE (uniform), plus either
+/// -crack_a0_profile elliptic -crack_a0_max VALUE (a0_max √(1 − (2ξ − 1)²)) or
+/// -crack_a0_profile file -crack_a0_file F (CSV xi,a0, linear in ξ), ξ ∈ [0, 1]
+/// along the crack; plus -contact_a0.
 struct ApproachProfile {
   double uniform = 0.0, max = 0.0;
   bool elliptic = false;
+  std::vector<std::pair<double, double>> table;  ///< (ξ, a0), increasing ξ
   double at(double xi) const;
 };
 PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* profile);
@@ -85,18 +87,32 @@ class CrackInterface final : public wave::WaveInterface {
   PetscErrorCode MaxFrictionExcess(double* excess) const;
 
  private:
-  PetscErrorCode Gather(Vec u);                       ///< ± displacements of every cell into u_local_
+  /// ± displacements of every cell, [u⁺x u⁺y u⁻x u⁻y] per cell: *U points into
+  /// u itself (all dofs owned here: no communication) or into u_local_.
+  PetscErrorCode GatherBegin(Vec u, const PetscScalar** U);
+  PetscErrorCode GatherEnd(Vec u, const PetscScalar** U);
+  /// Index of value k of cell i in the array GatherBegin returned.
+  PetscInt Slot(std::size_t i, int k) const { return direct_ ? owned_index_[4 * i + k] : 4 * static_cast<PetscInt>(i) + k; }
   void Kinematics(std::size_t i, const PetscScalar* U, double* a, double* b) const;
 
   std::vector<ContactCell> cells_;
   std::unique_ptr<contact::CrackLaw> law_;
-  VecScatter scatter_ = nullptr;  ///< global ↔ [u⁺x u⁺y u⁻x u⁻y] per cell
+  VecScatter scatter_ = nullptr;  ///< global ↔ [u⁺x u⁺y u⁻x u⁻y] per cell (when some dofs live elsewhere)
+  bool direct_ = false;            ///< every needed dof is owned by this rank
+  std::vector<PetscInt> owned_index_;  ///< their positions in the owned block
+  std::vector<double> inv_mass_;   ///< 1/m per needed dof
   Vec u_local_ = nullptr, f_local_ = nullptr, inv_mass_local_ = nullptr;
   std::vector<double> a_, b_, power_, W_;
   std::vector<double> initial_stored_;  ///< U of each cell in its initial state
   std::vector<contact::StepResult> last_;
   double dissipated_local_ = 0.0;
   double friction_excess_ = -1.0, mu_ = 0.0;
+  PetscLogEvent force_event_ = 0, commit_event_ = 0;
+  double seconds_ = 0.0;  ///< time spent in the interface on this rank
+
+ public:
+  /// Wall time spent evaluating and committing the interface (this rank).
+  double seconds() const { return seconds_; }
   PetscInt global_cells_ = 0;
   MPI_Comm comm_ = MPI_COMM_NULL;
 };
