@@ -162,8 +162,10 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
     fr.cy = 0.5 * (fr.fy + fr.ly);
   }
 
-  PetscCheck(space.degree() == 1, comm_, PETSC_ERR_SUP,
-             "crack contact with -wave_degree 2 is not supported yet (mid-side node pairs): use -wave_degree 1");
+  // Lumped face weights ∫φ ds: degree 1 L/2 per end; degree 2 (Simpson) L/6 per
+  // end and 4L/6 for the mid-side node, which is a contact cell of its own.
+  const bool quadratic = space.degree() == 2;
+  const double end_weight = quadratic ? 1.0 / 6.0 : 0.5, mid_weight = 4.0 / 6.0;
   // Tributary length and mean tangent of every crack node, from all facets (by
   // node coordinates: both faces of a split node share them).
   struct NodeSum {
@@ -176,9 +178,9 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
     if (sx * fr.dx + sy * fr.dy < 0) sx = -sx, sy = -sy;
     for (const auto& end : {std::make_pair(f.x0, f.y0), std::make_pair(f.x1, f.y1)}) {
       NodeSum& node = nodes[end];
-      node.weight += 0.5 * f.length;  // ∫φ ds of a linear node on the facet
-      node.sx += 0.5 * f.length * sx;
-      node.sy += 0.5 * f.length * sy;
+      node.weight += end_weight * f.length;
+      node.sx += end_weight * f.length * sx;
+      node.sy += end_weight * f.length * sy;
     }
   }
 
@@ -218,6 +220,17 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
       }
     }
     PetscCheck(plus_face >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cohesive cell %" PetscInt_FMT " has no local bulk neighbour", c);
+    if (quadratic) {  // the mid-side pair: the two faces' edge nodes (cohesive cells are never ghosts)
+      Accumulator& acc = by_edge[c];
+      acc.cell.plus = cone[plus_face];
+      acc.cell.minus = cone[1 - plus_face];
+      acc.cell.weight = mid_weight * L;
+      acc.cell.crack = crack - 1;
+      acc.sx = sx;
+      acc.sy = sy;
+      acc.cell.x = 0.5 * (p[0] + q[0]);
+      acc.cell.y = 0.5 * (p[1] + q[1]);
+    }
     for (int k = 2; k < 4; ++k) {
       const PetscInt* pair;
       PetscCall(DMPlexGetCone(dm, cone[k], &pair));
