@@ -20,8 +20,17 @@ struct GmshSession {
   GmshSession() {
     gmsh::initialize();
     gmsh::option::setNumber("General.Terminal", 0);
+    // One thread: an error inside gmsh's OpenMP region would abort the process
+    // instead of reaching our error handling.
+    gmsh::option::setNumber("General.NumThreads", 1);
+    gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() {
+    try {  // may run while a gmsh error unwinds the stack: never throw from here
+      gmsh::finalize();
+    } catch (...) {
+    }
+  }
 };
 
 /// gmsh node tags → dense 0-based vertex indices, with coordinates.
@@ -79,6 +88,16 @@ std::vector<MeshEdge> curve_edges(const NodeMap& nodes, int curve, int tag) {
 
 void append(std::vector<MeshEdge>& to, const std::vector<MeshEdge>& from) { to.insert(to.end(), from.begin(), from.end()); }
 
+/// Whether the current 2D mesh contains triangles.
+bool has_triangles() {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i] == 2 && !tags[i].empty()) return true;
+  return false;
+}
+
 /// Size field: h_crack within a band around the cracks, growing by `grading` per metre to h.
 void set_size_field(const SpecimenGeometry& g, const std::vector<double>& crack_curves) {
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -134,6 +153,17 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // blossom
   }
   gmsh::model::mesh::generate(2);
+  if (g.quads && has_triangles()) {
+    // Strong grading can leave triangles after recombination: mesh at twice the
+    // size and subdivide every element into quads (back to the requested size).
+    SpecimenGeometry coarse = g;
+    coarse.h *= 2.0;
+    coarse.h_crack *= 2.0;
+    gmsh::model::mesh::clear();
+    set_size_field(coarse, all_crack_curves);
+    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+    gmsh::model::mesh::generate(2);
+  }
 
   MeshData mesh;
   const NodeMap nodes = collect_nodes();
