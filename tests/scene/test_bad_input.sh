@@ -53,5 +53,12 @@ expect_error "-source_type: unknown value 'pulse'" $box $crack -source_type puls
 expect_error "-probe_points: point 2 (0.2, 0.05) lies outside the specimen" $box $crack -probe_points 0.01,0.01,0.2,0.05
 expect_error "-material_nu must be in (-1, 0.5)" $box $crack -material_nu 0.5
 
+# Crack-interface input.
+expect_error "-crack_probe: fractions must be in [0, 1], got 1.5" $box $crack -crack_probe 1.5
+expect_error "-crack_a0_profile: unknown value 'wavy'" $box $crack -crack_a0_profile wavy
+expect_error "-crack_a0_profile file needs -crack_a0_file FILE" $box $crack -crack_a0_profile file
+expect_error "-crack_a0_file $work/nofile.csv: cannot open the file" $box $crack -crack_a0_profile file -crack_a0_file "$work/nofile.csv"
+expect_error "-contact_normal_table $work/none.csv: cannot open the file" $box $crack -contact_normal_law table -contact_normal_table "$work/none.csv"
+
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
