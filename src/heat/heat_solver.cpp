@@ -219,28 +219,22 @@ PetscErrorCode HeatSolver::TemperatureAt(double x, double y, double* T) const {
   std::array<double, 2> ref;
   PetscCall(space_.Locate(x, y, &cell, &ref));
   double local[2] = {0.0, 0.0};
+  Vec l;  // collective: every rank fills its local vector
+  PetscCall(DMGetLocalVector(dm_, &l));
+  PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, l));
   if (cell >= 0) {
     std::vector<double> phi;
     PetscCall(space_.BasisAt(ref, &phi));
-    Vec l;
     PetscSection section;
     PetscScalar* c = nullptr;
     PetscInt n;
     PetscCall(DMGetLocalSection(dm_, &section));
-    PetscCall(DMGetLocalVector(dm_, &l));
-    PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, l));
     PetscCall(DMPlexVecGetClosure(dm_, section, l, cell, &n, &c));
     for (std::size_t b = 0; b < phi.size(); ++b) local[0] += phi[b] * PetscRealPart(c[b]);
     PetscCall(DMPlexVecRestoreClosure(dm_, section, l, cell, &n, &c));
-    PetscCall(DMRestoreLocalVector(dm_, &l));
     local[1] = 1.0;
-  } else {
-    // The collective DMGlobalToLocal must be matched on every rank.
-    Vec l;
-    PetscCall(DMGetLocalVector(dm_, &l));
-    PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, l));
-    PetscCall(DMRestoreLocalVector(dm_, &l));
   }
+  PetscCall(DMRestoreLocalVector(dm_, &l));
   double global[2];
   PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
   *T = global[1] > 0 ? global[0] / global[1] : NAN;

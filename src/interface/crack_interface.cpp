@@ -72,22 +72,6 @@ struct FacetInfo {
   double x0, y0, x1, y1;  ///< end points
 };
 
-/// Centroid of a cell from its closure vertices.
-std::array<double, 2> CellCentroid(DM dm, const mesh::VertexCoordinates& x, PetscInt cell) {
-  PetscInt* closure = nullptr;
-  PetscInt n, vStart, vEnd, count = 0;
-  std::array<double, 2> c = {0, 0};
-  (void)DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd);
-  (void)DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
-  for (PetscInt i = 0; i < 2 * n; i += 2)
-    if (closure[i] >= vStart && closure[i] < vEnd) {
-      const auto p = x(closure[i]);
-      c[0] += p[0], c[1] += p[1], ++count;
-    }
-  (void)DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
-  return {c[0] / count, c[1] / count};
-}
-
 }  // namespace
 
 CrackInterface::~CrackInterface() {
@@ -214,7 +198,7 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
       PetscCall(DMPlexGetSupport(dm, cone[side], &support));
       for (PetscInt k = 0; k < ns; ++k) {
         if (support[k] == c) continue;
-        const auto g = CellCentroid(dm, x, support[k]);
+        const auto g = mesh::CellCentroid(dm, x, support[k]);
         const bool along_n = (g[0] - 0.5 * (p[0] + q[0])) * nx + (g[1] - 0.5 * (p[1] + q[1])) * ny > 0;
         plus_face = along_n ? side : 1 - side;
       }

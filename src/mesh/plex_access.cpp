@@ -23,6 +23,21 @@ std::array<double, 2> VertexCoordinates::operator()(PetscInt vertex) const {
   return {PetscRealPart(array_[offset]), PetscRealPart(array_[offset + 1])};
 }
 
+std::array<double, 2> CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell) {
+  PetscInt* closure = nullptr;
+  PetscInt n, vStart, vEnd, count = 0;
+  std::array<double, 2> c = {0, 0};
+  (void)DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd);
+  (void)DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
+  for (PetscInt i = 0; i < 2 * n; i += 2)
+    if (closure[i] >= vStart && closure[i] < vEnd) {
+      const auto p = x(closure[i]);
+      c[0] += p[0], c[1] += p[1], ++count;
+    }
+  (void)DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
+  return {c[0] / count, c[1] / count};
+}
+
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost) {
   PetscFunctionBeginUser;
   PetscInt pStart, pEnd, nleaves;

@@ -19,18 +19,8 @@ PetscErrorCode FaceFrame(DM dm, const mesh::VertexCoordinates& x, PetscInt face,
   n[0] = (b[1] - a[1]) / L;
   n[1] = -(b[0] - a[0]) / L;
   // Orient away from the cell's centroid.
-  PetscInt* closure = nullptr;
-  PetscInt nc, vStart, vEnd, count = 0;
-  double cx = 0, cy = 0;
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(DMPlexGetTransitiveClosure(dm, support[0], PETSC_TRUE, &nc, &closure));
-  for (PetscInt i = 0; i < 2 * nc; i += 2)
-    if (closure[i] >= vStart && closure[i] < vEnd) {
-      const auto p = x(closure[i]);
-      cx += p[0], cy += p[1], ++count;
-    }
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, support[0], PETSC_TRUE, &nc, &closure));
-  if ((0.5 * (a[0] + b[0]) - cx / count) * n[0] + (0.5 * (a[1] + b[1]) - cy / count) * n[1] < 0) n[0] = -n[0], n[1] = -n[1];
+  const auto centroid = mesh::CellCentroid(dm, x, support[0]);
+  if ((0.5 * (a[0] + b[0]) - centroid[0]) * n[0] + (0.5 * (a[1] + b[1]) - centroid[1]) * n[1] < 0) n[0] = -n[0], n[1] = -n[1];
   s[0] = n[1];
   s[1] = -n[0];
   PetscFunctionReturn(0);

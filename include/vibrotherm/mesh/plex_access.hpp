@@ -21,6 +21,9 @@ class VertexCoordinates {
   PetscSection section_ = nullptr;
 };
 
+/// Centroid of a cell: the mean of its closure vertices.
+std::array<double, 2> CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell);
+
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);
 
