@@ -429,6 +429,8 @@ double StateCode(contact::ContactState s) {
 }
 }  // namespace
 
+double CrackInterface::state_code(std::size_t i) const { return StateCode(last_[i].state); }
+
 PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* owned_index) const {
   PetscFunctionBeginUser;
   struct {

@@ -2,9 +2,18 @@
 
 #include <petscdmplex.h>
 
+#include <cmath>
+
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::io {
+
+double TemperatureBracket::at(std::size_t probe, double t) const {
+  if (probe >= T1.size()) return NAN;
+  if (t1 <= t0 || probe >= T0.size()) return T1[probe];
+  const double s = std::min(1.0, std::max(0.0, (t - t0) / (t1 - t0)));
+  return (1.0 - s) * T0[probe] + s * T1[probe];
+}
 
 PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy,
                                   const std::string& path) {
@@ -15,21 +24,13 @@ PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vec
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCheck(xy.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT, "-probe_points needs x,y pairs");
+  std::vector<bool> inside;
+  PetscCall(fe::LocatePoints(space, xy, &probes_, &inside));
   points_.clear();
-  probes_.clear();
-  for (std::size_t i = 0; i < xy.size(); i += 2) {
-    Probe p;
-    std::array<double, 2> ref;
-    PetscCall(space.Locate(xy[i], xy[i + 1], &p.cell, &ref));
-    // The lowest rank holding the point evaluates it.
-    PetscMPIInt mine = p.cell >= 0 ? rank : PETSC_MPI_INT_MAX, owner;
-    PetscCallMPI(MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MIN, comm));
-    PetscCheck(owner != PETSC_MPI_INT_MAX, comm, PETSC_ERR_USER_INPUT,
-               "-probe_points: point %zu (%g, %g) lies outside the specimen", i / 2 + 1, xy[i], xy[i + 1]);
-    if (owner != rank) p.cell = -1;
-    if (p.cell >= 0) PetscCall(space.BasisAt(ref, &p.phi));
-    points_.push_back({xy[i], xy[i + 1]});
-    probes_.push_back(std::move(p));
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    PetscCheck(inside[i], comm, PETSC_ERR_USER_INPUT, "-probe_points: point %zu (%g, %g) lies outside the specimen",
+               i + 1, xy[2 * i], xy[2 * i + 1]);
+    points_.push_back({xy[2 * i], xy[2 * i + 1]});
   }
   if (rank == 0) {
     VibrothermCallCpp(PETSC_COMM_SELF, file_ = std::make_unique<AtomicFile>(path));
@@ -65,27 +66,49 @@ PetscErrorCode PointProbes::Record(double t, Vec u, Vec v) {
     PetscCall(DMPlexVecRestoreClosure(dm, section, v_local_, probes_[p].cell, &n, &cv));
   }
   PetscCallMPI(MPI_Reduce(values.data(), all.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, 0, comm));
-  if (file_) {
-    std::ostream& out = file_->stream();
+  if (file_)
     for (std::size_t p = 0; p < points_.size(); ++p)
-      out << t << ',' << p << ',' << points_[p][0] << ',' << points_[p][1] << ',' << all[4 * p] << ','
-          << all[4 * p + 1] << ',' << all[4 * p + 2] << ',' << all[4 * p + 3] << ",nan,nan,nan,nan,nan,nan,,nan,nan\n";
-  }
+      pending_.push_back({t, p, points_[p][0], points_[p][1], all[4 * p], all[4 * p + 1], all[4 * p + 2],
+                          all[4 * p + 3], false, {}});
   PetscFunctionReturn(0);
 }
 
-void PointProbes::WriteCrackRow(double t, std::size_t probe, double x, double y, double ux, double uy,
-                                const double* c) {
+void PointProbes::RecordCrack(double t, std::size_t probe, double x, double y, double ux, double uy,
+                              const double* c) {
+  if (!file_) return;
+  Row row{t, probe, x, y, ux, uy, NAN, NAN, true, {}};
+  std::copy(c, c + 8, row.c.begin());
+  pending_.push_back(row);
+}
+
+void PointProbes::Flush(const TemperatureBracket* temperature) {
   static const char* states[] = {"loss", "slide", "partial", "stick"};
   if (!file_) return;
-  const int state = static_cast<int>(c[5]);
-  file_->stream() << t << ',' << probe << ',' << x << ',' << y << ',' << ux << ',' << uy << ",nan,nan,nan," << c[0]
-                  << ',' << c[1] << ',' << c[2] << ',' << c[3] << ',' << c[4] << ','
-                  << (state >= 0 && state < 4 ? states[state] : "?") << ',' << c[6] << ',' << c[7] << '\n';
+  std::ostream& out = file_->stream();
+  for (const Row& r : pending_) {
+    const double T = temperature ? temperature->at(r.probe, r.t) : NAN;
+    out << r.t << ',' << r.probe << ',' << r.x << ',' << r.y << ',' << r.ux << ',' << r.uy << ',' << r.vx << ','
+        << r.vy << ',' << T;
+    if (r.crack) {
+      const int state = static_cast<int>(r.c[5]);
+      out << ',' << r.c[0] << ',' << r.c[1] << ',' << r.c[2] << ',' << r.c[3] << ',' << r.c[4] << ','
+          << (state >= 0 && state < 4 ? states[state] : "?") << ',' << r.c[6] << ',' << r.c[7] << '\n';
+    } else {
+      out << ",nan,nan,nan,nan,nan,,nan,nan\n";
+    }
+  }
+  pending_.clear();
+}
+
+void PointProbes::WriteTemperature(double t, std::size_t probe, double x, double y, double temperature) {
+  if (!file_) return;
+  file_->stream() << t << ',' << probe << ',' << x << ',' << y << ",nan,nan,nan,nan," << temperature
+                  << ",nan,nan,nan,nan,nan,,nan,nan\n";
 }
 
 PetscErrorCode PointProbes::Finish() {
   PetscFunctionBeginUser;
+  Flush(nullptr);
   if (file_) VibrothermCallCpp(PETSC_COMM_SELF, file_->commit());
   PetscCall(VecDestroy(&u_local_));
   PetscCall(VecDestroy(&v_local_));

@@ -53,7 +53,31 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("contact_cells", s.contact_cells).value("steps_wave", s.steps_wave).value("steps_heat", s.steps_heat);
       json.value("wall_time_s", s.wall_time_s).value("max_budget_error", s.max_budget_error);
       json.value("wave_dt_reductions", s.wave_dt_reductions);
+      json.value("wave_energy_left", s.wave_energy_left);
       json.value("dissipated_energy", s.dissipated_energy).value("max_friction_excess", s.max_friction_excess);
+      json.begin_object("physics_time");
+      for (const auto& [name, span] : s.physics_time) {
+        json.begin_array(name.c_str());
+        json.value(nullptr, span.first).value(nullptr, span.second);
+        json.end_array();
+      }
+      json.end_object();
+      json.value("heat_deposited", s.heat_deposited).value("heat_content", s.heat_content);
+      json.value("heat_boundary_loss", s.heat_boundary_loss);
+      json.begin_object("probe_labels");
+      for (const auto& [k, label] : s.probe_labels) json.value(std::to_string(k).c_str(), label);
+      json.end_object();
+      json.begin_object("probe_max_temperature_rise");
+      for (const auto& [k, rise] : s.probe_max_temperature_rise) json.value(std::to_string(k).c_str(), rise);
+      json.end_object();
+      json.begin_array("output_temperature_rise");
+      for (const auto& [t, rises] : s.output_temperature_rise) {
+        json.begin_object();
+        json.value("t", t);
+        for (const auto& [k, rise] : rises) json.value(std::to_string(k).c_str(), rise);
+        json.end_object();
+      }
+      json.end_array();
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
-"""Requirement: a short run of the paper scene (waves and MMD contact) writes probes.csv,
-energy.csv and summary.json; the 2-rank probe series equal the serial ones to
-1e-10 of their amplitude; the energy budget closes (velocity Verlet) and the
-summary says the wave solver ran.
+"""Requirement: a short run of the paper scene (waves, MMD contact, heat) writes probes.csv,
+energy.csv, fields.h5/.xmf and summary.json; the 2-rank probe series (displacements,
+crack tractions, temperatures) equal the serial ones to 1e-10 of their amplitude; the
+energy budget closes (velocity Verlet); the heat deposited equals the energy the
+interface dissipated to 1e-12 and the heat content equals deposited minus boundary
+loss to 1e-3; the summary says which physics ran.
 
 usage: test_wave_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
@@ -18,7 +20,7 @@ with tempfile.TemporaryDirectory() as tmp:
     for ranks in (1, 2):
         out = os.path.join(tmp, "np%d" % ranks)
         cmd = [mpiexec, "-n", str(ranks), "--oversubscribe", exe, "-options_file", os.path.join(src, "options/paper.opts"),
-               "-final_time", "3e-5", "-probe_points", probes, "-probe_every", "10", "-crack_probe", "0.5,0.2",
+               "-final_time", "3e-5", "-output_times", "1e-5,3e-5", "-probe_points", probes, "-probe_every", "10", "-crack_probe", "0.5,0.2",
                "-output_dir", out]
         r = subprocess.run(cmd, capture_output=True, text=True)
         check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr[-2000:]))
@@ -28,7 +30,20 @@ with tempfile.TemporaryDirectory() as tmp:
         energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
         summary = json.load(open(os.path.join(out, "summary.json")))
         runs[ranks] = (rows, energy, summary)
-        check(summary["physics_ran"] == ["wave", "contact"], "physics_ran %s" % summary["physics_ran"])
+        check(summary["physics_ran"] == ["wave", "contact", "heat"], "physics_ran %s" % summary["physics_ran"])
+        dissipated, deposited = summary["dissipated_energy"], summary["heat_deposited"]
+        check(dissipated > 0 and abs(deposited - dissipated) <= 1e-12 * dissipated,
+              "heat deposited %r vs dissipated %r" % (deposited, dissipated))
+        for e in energy:
+            dep, content, loss = (float(e[k]) for k in ("heat_deposited", "heat_content", "heat_boundary_loss"))
+            if dep > 1e-3 * deposited:
+                check(abs(content - (dep - loss)) <= 1e-3 * dep, "t=%s: heat content %g vs deposited-loss %g"
+                      % (e["t"], content, dep - loss))
+        check(all(float(e["heat_deposited"]) <= float(e["dissipated"]) * (1 + 1e-12) for e in energy),
+              "heat is never deposited before it is dissipated")
+        check(max(float(r["temperature"]) for r in rows if r["probe"] == "4") > 293.15, "crack centre heats")
+        for name in ("fields.h5", "fields.xmf"):
+            check(os.path.exists(os.path.join(out, name)), name + " written")
         check(summary["contact_cells"] == 39, "contact cells %s" % summary["contact_cells"])
         check(summary["steps_wave"] > 100, "steps_wave %s" % summary["steps_wave"])
         # budget_error divides by the work done so far: ill-conditioned in the first
@@ -45,9 +60,11 @@ if 1 in runs and 2 in runs:
     check(len(a) == len(b), "row counts differ: %d vs %d" % (len(a), len(b)))
     point = [(x, y) for x, y in zip(a, b) if int(x["probe"]) < 4]
     crack = [(x, y) for x, y in zip(a, b) if int(x["probe"]) >= 4]
-    for col in ("ux", "uy", "vx", "vy"):
-        scale = max(abs(float(x[col])) for x, _ in point) or 1.0
-        worst = max(abs(float(x[col]) - float(y[col])) for x, y in point) / scale
+    for col in ("ux", "uy", "vx", "vy", "temperature"):
+        base = 293.15 if col == "temperature" else 0.0
+        pairs = list(zip(a, b)) if base else point
+        scale = max(abs(float(x[col]) - base) for x, _ in pairs) or 1.0
+        worst = max(abs(float(x[col]) - float(y[col])) for x, y in pairs) / scale
         check(worst <= 1e-10, "%s: 2 ranks differ from serial by %.3g of the amplitude" % (col, worst))
     check(len(crack) > 0, "crack probe rows")
     for col in ("a", "b", "N", "T", "W"):

@@ -72,6 +72,8 @@ class CrackInterface final : public wave::WaveInterface {
   double b(std::size_t i) const { return b_[i]; }
   double slip_offset(std::size_t i) const { return law_->slip_offset(i); }
   bool dissipative() const { return law_->can_dissipate(); }
+  /// State of owned cell i in its last step: 0 loss, 1 slide, 2 partial, 3 stick.
+  double state_code(std::size_t i) const;
   /// One row of crack data per requested cell, reduced onto rank 0:
   /// x, y, a, b, b0, N, T, state code (0 loss, 1 slide, 2 partial, 3 stick), power, W, and
   /// the + node's ux, uy. `cells` are global cell choices from NearestCell.

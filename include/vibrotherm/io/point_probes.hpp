@@ -2,6 +2,10 @@
 // by rank 0 to probes.csv. Columns: t,probe,x,y,ux,uy,vx,vy,temperature and, for
 // crack probes, a,b,b0,N,T,state,power,W (a column without data is nan). Each
 // point is evaluated by exactly one rank.
+//
+// Rows are held until Flush(): the temperature comes from the heat solver,
+// which only knows it at coupling times, so rows recorded between two coupling
+// times get the temperature interpolated linearly between them.
 #pragma once
 
 #include <petscvec.h>
@@ -11,32 +15,48 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/io/atomic_file.hpp"
 
 namespace vibrotherm::io {
+
+/// Probe temperatures at two times; rows in between are interpolated.
+struct TemperatureBracket {
+  double t0 = 0, t1 = 0;
+  std::vector<double> T0, T1;  ///< by probe index (point probes, then crack probes)
+  double at(std::size_t probe, double t) const;
+};
 
 class PointProbes {
  public:
   /// Locates the points (x, y pairs) in space; errors name -probe_points when a
   /// point lies outside the specimen. Rank 0 opens `path` (written atomically).
   PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path);
-  /// Appends one row per probe with displacement u and velocity v (global vectors).
+  /// Holds one row per probe with displacement u and velocity v (global vectors).
   PetscErrorCode Record(double t, Vec u, Vec v);
-  /// Appends a crack-probe row (rank 0): x, y, ux, uy of the + node, then a, b, b0, N, T, state, power, W.
-  void WriteCrackRow(double t, std::size_t probe, double x, double y, double ux, double uy, const double* crack);
+  /// Holds a crack-probe row (rank 0): x, y, ux, uy of the + node, then a, b, b0, N, T, state, power, W.
+  void RecordCrack(double t, std::size_t probe, double x, double y, double ux, double uy, const double* crack);
+  /// Writes the held rows; temperature from `temperature` (nullptr: nan).
+  void Flush(const TemperatureBracket* temperature);
+  /// Writes a row with only a temperature (after the waves have stopped).
+  void WriteTemperature(double t, std::size_t probe, double x, double y, double temperature);
   /// Publishes probes.csv (call once at the end of a successful run).
   PetscErrorCode Finish();
   std::size_t count() const { return points_.size(); }
+  const std::vector<std::array<double, 2>>& points() const { return points_; }
 
  private:
-  struct Probe {
-    PetscInt cell = -1;  ///< local cell if this rank evaluates it
-    std::vector<double> phi;
+  struct Row {
+    double t;
+    std::size_t probe;
+    double x, y, ux, uy, vx, vy;
+    bool crack;
+    std::array<double, 8> c;  ///< a, b, b0, N, T, state, power, W
   };
   const fe::LagrangeSpace* space_ = nullptr;
   std::vector<std::array<double, 2>> points_;
-  std::vector<Probe> probes_;
+  std::vector<fe::LocatedPoint> probes_;
+  std::vector<Row> pending_;           ///< rank 0
   std::unique_ptr<AtomicFile> file_;  ///< rank 0
   Vec u_local_ = nullptr, v_local_ = nullptr;
 };

@@ -4,6 +4,7 @@
 #include <petscsys.h>
 
 #include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,17 @@ struct RunSummary {
   double max_budget_error = 0.0;
   long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
   double dissipated_energy = 0.0;     ///< [J/m]
+  double wave_energy_left = 0.0;      ///< mechanical energy when the waves stopped [J/m]
   double max_friction_excess = -1.0;  ///< max (|T| − μN)/(μN) over cells and steps (≤ 0 when Coulomb held)
   std::map<std::string, double> stages;   ///< phase → wall seconds
+  /// Simulated interval [start, end] of each physics that ran (s).
+  std::map<std::string, std::pair<double, double>> physics_time;
+  double heat_deposited = 0.0, heat_content = 0.0, heat_boundary_loss = 0.0;  ///< [J/m] at the end
+  /// Probe index (as in probes.csv) → description, largest rise above T0 [K],
+  /// and the rise at each output time.
+  std::map<int, std::string> probe_labels;
+  std::map<int, double> probe_max_temperature_rise;
+  std::vector<std::pair<double, std::map<int, double>>> output_temperature_rise;
   mesh::MeshSummary mesh;
 };
 

@@ -1,0 +1,31 @@
+// Run control: which physics run, how they are coupled, what is recorded.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace vibrotherm::coupling {
+
+enum class PhysicsChoice { All, Wave, Heat };  ///< -physics all|wave|heat
+enum class HeatChoice { Auto, On, Off };       ///< -heat auto|on|off
+
+struct DriverOptions {
+  PhysicsChoice physics = PhysicsChoice::All;
+  HeatChoice heat = HeatChoice::Auto;  ///< auto: only when the crack can dissipate
+  double heat_crack_power = 0.0;      ///< -heat_crack_power [W/m²] (-physics heat)
+  double final_time = -1.0;           ///< -final_time [s] (default: the source duration)
+  double couple_dt = -1.0;            ///< -couple_dt [s] (default: 1/8 of the source period)
+  double quiet_fraction = 1e-2;       ///< -wave_quiet_fraction
+  std::vector<double> output_times;   ///< -output_times t1,t2,... (fields.h5)
+  PetscInt energy_every = 10;         ///< -energy_every: steps between energy.csv rows (waves without heat)
+  PetscInt probe_every = 1;           ///< -probe_every: steps between probe rows
+  std::vector<double> probe_points;   ///< -probe_points x1,y1,x2,y2,...
+  std::vector<double> crack_probes;   ///< -crack_probe s1,s2,...: fractions along a crack (0.5: centre)
+  PetscInt crack_probe_crack = 1;     ///< -crack_probe_crack: which crack (1-based)
+  PetscInt crack_state_every = 20;    ///< -crack_state_every: steps between crack_state.csv records (0: none)
+};
+PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options);
+
+}  // namespace vibrotherm::coupling

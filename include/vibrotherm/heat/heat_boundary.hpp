@@ -1,0 +1,43 @@
+// Thermal conditions on the outer edges of the heat mesh (PHYSICS.md §2):
+//   sink        T = T0 (held; the default on faces labelled `sink`, i.e. every
+//               outer edge of a generated specimen)
+//   insulated   no flux (the natural condition)
+//   convective  flux h (T − T_ext) out of the body (-heat_h, -heat_T_ext)
+// Chosen by -heat_bc KIND for every outer edge and -heat_bc_bottom|right|top|left
+// KIND per side of a generated specimen; without either, faces labelled sink
+// are sinks and the others insulated.
+#pragma once
+
+#include <petscdm.h>
+
+#include <string>
+#include <vector>
+
+#include "vibrotherm/fe/lagrange_space.hpp"
+
+namespace vibrotherm::heat {
+
+enum class ThermalEdge { Sink, Insulated, Convective };
+
+struct HeatBoundaryOptions {
+  std::string all;        ///< -heat_bc ("" when not given)
+  std::string side[4];    ///< -heat_bc_<side> by mesh::Side ("" when not given)
+  double h = 10.0;        ///< -heat_h [W/(m² K)]
+  double T_ext = -1.0;    ///< -heat_T_ext [K] (default: T0)
+};
+PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* options);
+
+/// The outer-edge terms of one heat space.
+struct HeatBoundary {
+  std::vector<PetscInt> sink_rows;   ///< owned global rows held at T0
+  /// Convective edges, lumped: per owned global row, h ∫φ ds (the diagonal added to K).
+  std::vector<PetscInt> convective_rows;
+  std::vector<double> convective_h;
+  double T_ext = 0.0;
+  PetscInt sink_faces = 0, insulated_faces = 0, convective_faces = 0;  ///< global counts
+};
+/// Classifies every outer face of space's DM and collects the rows. Collective.
+PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBoundaryOptions& options,
+                                 HeatBoundary* boundary);
+
+}  // namespace vibrotherm::heat

@@ -1,0 +1,28 @@
+// A crack as a polyline, rebuilt from the facets of a distributed mesh (any of
+// the two: the crack_face ids number the facets along each crack), for points
+// given as a fraction of the crack length (probes at ξ = 0.5: the centre).
+#pragma once
+
+#include <petscdm.h>
+
+#include <array>
+#include <vector>
+
+namespace vibrotherm::mesh {
+
+class CrackLine {
+ public:
+  /// Gathers the facets of crack `crack` (0-based) on every rank. Collective.
+  PetscErrorCode Setup(DM dm, PetscInt crack);
+  /// The point at fraction xi ∈ [0, 1] of the length from the first facet's free end.
+  std::array<double, 2> At(double xi) const;
+  double length() const { return length_; }
+  bool empty() const { return points_.size() < 2; }
+
+ private:
+  std::vector<std::array<double, 2>> points_;  ///< vertices in order along the crack
+  std::vector<double> arc_;                    ///< arc length at each vertex
+  double length_ = 0.0;
+};
+
+}  // namespace vibrotherm::mesh

@@ -1,0 +1,162 @@
+#include "vibrotherm/heat/heat_boundary.hpp"
+
+#include <petscdmplex.h>
+#include <petscsf.h>
+
+#include <map>
+
+#include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/scene_geometry.hpp"
+
+namespace vibrotherm::heat {
+namespace {
+
+PetscErrorCode ParseKind(MPI_Comm comm, const char* option, const std::string& value, ThermalEdge* kind) {
+  PetscFunctionBeginUser;
+  static const std::map<std::string, ThermalEdge> kinds = {
+      {"sink", ThermalEdge::Sink}, {"insulated", ThermalEdge::Insulated}, {"convective", ThermalEdge::Convective}};
+  auto it = kinds.find(value);
+  PetscCheck(it != kinds.end(), comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (sink, insulated, convective)",
+             option, value.c_str());
+  *kind = it->second;
+  PetscFunctionReturn(0);
+}
+
+/// Points that exist on more than one rank (leaves and roots with leaves of the point SF).
+PetscErrorCode SharedPoints(DM dm, std::vector<bool>* shared) {
+  PetscFunctionBeginUser;
+  PetscInt pStart, pEnd, nroots, nleaves;
+  const PetscInt* leaves;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  shared->assign(pEnd - pStart, false);
+  PetscSF sf;
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &leaves, nullptr));
+  if (nroots < 0) PetscFunctionReturn(0);  // serial: no graph
+  for (PetscInt i = 0; i < nleaves; ++i) (*shared)[(leaves ? leaves[i] : i) - pStart] = true;
+  const PetscInt* degree;
+  PetscCall(PetscSFComputeDegreeBegin(sf, &degree));
+  PetscCall(PetscSFComputeDegreeEnd(sf, &degree));
+  for (PetscInt p = 0; p < nroots; ++p)
+    if (degree[p] > 0) (*shared)[p] = true;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* o) {
+  PetscFunctionBeginUser;
+  char value[64];
+  PetscBool set;
+  PetscOptionsBegin(comm, nullptr, "Thermal edges", nullptr);
+  value[0] = 0;
+  PetscCall(PetscOptionsString("-heat_bc", "Every outer edge: sink, insulated, convective (default: sink edges)",
+                               nullptr, value, value, sizeof(value), &set));
+  o->all = set ? value : "";
+  for (int s = 0; s < 4; ++s) {
+    const std::string name = std::string("-heat_bc_") + mesh::to_string(static_cast<mesh::Side>(s));
+    value[0] = 0;
+    PetscCall(PetscOptionsString(name.c_str(), "One side of a generated specimen: sink, insulated, convective", nullptr,
+                                 value, value, sizeof(value), &set));
+    o->side[s] = set ? value : "";
+  }
+  PetscCall(PetscOptionsReal("-heat_h", "Convective film coefficient [W/(m^2 K)]", nullptr, o->h, &o->h, nullptr));
+  o->T_ext = T0;
+  PetscCall(PetscOptionsReal("-heat_T_ext", "Ambient temperature of convective edges [K] (default: -heat_T0)",
+                             nullptr, o->T_ext, &o->T_ext, nullptr));
+  PetscOptionsEnd();
+  ThermalEdge kind;
+  if (!o->all.empty()) PetscCall(ParseKind(comm, "-heat_bc", o->all, &kind));
+  for (int s = 0; s < 4; ++s)
+    if (!o->side[s].empty()) {
+      const std::string name = std::string("-heat_bc_") + mesh::to_string(static_cast<mesh::Side>(s));
+      PetscCall(ParseKind(comm, name.c_str(), o->side[s], &kind));
+    }
+  PetscCheck(o->h >= 0, comm, PETSC_ERR_USER_INPUT, "-heat_h must be >= 0, got %g", o->h);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBoundaryOptions& o, HeatBoundary* b) {
+  PetscFunctionBeginUser;
+  DM dm = space.dm();
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  *b = HeatBoundary{};
+  b->T_ext = o.T_ext;
+  DMLabel side, sink;
+  PetscCall(DMGetLabel(dm, mesh::labels::side, &side));
+  PetscCall(DMGetLabel(dm, mesh::labels::sink, &sink));
+  std::vector<bool> ghost, shared;
+  PetscCall(mesh::GhostPoints(dm, &ghost));
+  PetscCall(SharedPoints(dm, &shared));
+  PetscInt chart0, fStart, fEnd;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  // Marks go through local vectors and an ADD to the global one: a vertex shared
+  // by two ranks gets the contribution of an outer face only one of them holds.
+  Vec sink_local, h_local, sink_global, h_global;
+  PetscCall(DMGetLocalVector(dm, &sink_local));
+  PetscCall(DMGetLocalVector(dm, &h_local));
+  PetscCall(VecSet(sink_local, 0.0));
+  PetscCall(VecSet(h_local, 0.0));
+  PetscScalar *sink_mark, *hw;
+  PetscCall(VecGetArray(sink_local, &sink_mark));
+  PetscCall(VecGetArray(h_local, &hw));
+  PetscInt counts[3] = {0, 0, 0};
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    // Outer: one cell, and not a face the partition cut (those have their other cell elsewhere).
+    PetscInt support;
+    PetscCall(DMPlexGetSupportSize(dm, f, &support));
+    if (support != 1 || shared[f - chart0]) continue;
+    ThermalEdge kind = ThermalEdge::Insulated;
+    PetscInt s = -1, is_sink = -1;
+    if (side) PetscCall(DMLabelGetValue(side, f, &s));
+    if (sink) PetscCall(DMLabelGetValue(sink, f, &is_sink));
+    if (s >= 0 && s < 4 && !o.side[s].empty()) PetscCall(ParseKind(comm, "-heat_bc_<side>", o.side[s], &kind));
+    else if (!o.all.empty()) PetscCall(ParseKind(comm, "-heat_bc", o.all, &kind));
+    else kind = is_sink == 1 ? ThermalEdge::Sink : ThermalEdge::Insulated;
+    ++counts[static_cast<int>(kind)];
+    if (kind == ThermalEdge::Insulated) continue;
+    std::vector<PetscInt> offsets;
+    std::vector<double> weights;
+    double length;
+    PetscCall(space.FaceNodes(f, &offsets, &weights, &length));
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+      if (kind == ThermalEdge::Sink) sink_mark[offsets[j]] += 1.0;
+      else hw[offsets[j]] += o.h * weights[j];
+    }
+  }
+  PetscCall(VecRestoreArray(sink_local, &sink_mark));
+  PetscCall(VecRestoreArray(h_local, &hw));
+  PetscCall(DMGetGlobalVector(dm, &sink_global));
+  PetscCall(DMGetGlobalVector(dm, &h_global));
+  PetscCall(VecSet(sink_global, 0.0));
+  PetscCall(VecSet(h_global, 0.0));
+  PetscCall(DMLocalToGlobal(dm, sink_local, ADD_VALUES, sink_global));
+  PetscCall(DMLocalToGlobal(dm, h_local, ADD_VALUES, h_global));
+  PetscInt rstart, n;
+  PetscCall(VecGetOwnershipRange(sink_global, &rstart, nullptr));
+  PetscCall(VecGetLocalSize(sink_global, &n));
+  const PetscScalar *sg, *hg;
+  PetscCall(VecGetArrayRead(sink_global, &sg));
+  PetscCall(VecGetArrayRead(h_global, &hg));
+  for (PetscInt i = 0; i < n; ++i) {
+    if (PetscRealPart(sg[i]) > 0) b->sink_rows.push_back(rstart + i);
+    else if (PetscRealPart(hg[i]) > 0) {  // a corner between a sink and a convective edge is held
+      b->convective_rows.push_back(rstart + i);
+      b->convective_h.push_back(PetscRealPart(hg[i]));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(sink_global, &sg));
+  PetscCall(VecRestoreArrayRead(h_global, &hg));
+  for (Vec* v : {&sink_global, &h_global}) PetscCall(DMRestoreGlobalVector(dm, v));
+  for (Vec* v : {&sink_local, &h_local}) PetscCall(DMRestoreLocalVector(dm, v));
+  PetscInt global_counts[3];
+  PetscCallMPI(MPI_Allreduce(counts, global_counts, 3, MPIU_INT, MPI_SUM, comm));
+  b->sink_faces = global_counts[0];
+  b->insulated_faces = global_counts[1];
+  b->convective_faces = global_counts[2];
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::heat
