@@ -295,6 +295,7 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary*) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)heat_->space().dm());
   if (!cell_energy_.empty()) PetscCall(heat_->SetSourcePowers(std::vector<double>(cell_energy_.size(), 0.0)));
+  PetscCall(heat_->UseFreeIntegrator());
   const double t_begin = heat_->time();
   recorder.progress().Start(comm, "heat", t_begin, final_time_);
   const double t0 = MPI_Wtime();

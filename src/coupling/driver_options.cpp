@@ -1,6 +1,8 @@
 #include "vibrotherm/coupling/driver_options.hpp"
 
 #include <algorithm>
+#include <map>
+#include <string>
 
 namespace vibrotherm::coupling {
 
@@ -9,14 +11,12 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscReal points[256], fractions[64], times[64];
   PetscInt npoints = 256, nfractions = 64, ntimes = 64;
   PetscBool has_points = PETSC_FALSE, has_fractions = PETSC_FALSE, has_times = PETSC_FALSE;
-  const char* physics_names[] = {"all", "wave", "heat", "PhysicsChoice", "PHYSICS_", nullptr};
-  const char* heat_names[] = {"auto", "on", "off", "HeatChoice", "HEAT_", nullptr};
-  PetscEnum physics = static_cast<PetscEnum>(o->physics), heat = static_cast<PetscEnum>(o->heat);
+  char physics[32] = "all", heat[32] = "auto";
   PetscOptionsBegin(comm, nullptr, "Run control and recording", nullptr);
-  PetscCall(PetscOptionsEnum("-physics", "Physics to run: all (waves, contact, heat as the scene needs), wave, heat",
-                             nullptr, physics_names, physics, &physics, nullptr));
-  PetscCall(PetscOptionsEnum("-heat", "Heat solver: auto (when friction can dissipate), on, off", nullptr, heat_names,
-                             heat, &heat, nullptr));
+  PetscCall(PetscOptionsString("-physics", "Physics to run: all (waves, contact, heat as the scene needs), wave, heat",
+                               nullptr, physics, physics, sizeof(physics), nullptr));
+  PetscCall(PetscOptionsString("-heat", "Heat solver: auto (when friction can dissipate), on, off", nullptr, heat, heat,
+                               sizeof(heat), nullptr));
   PetscCall(PetscOptionsReal("-heat_crack_power", "-physics heat: power per unit crack area on every crack [W/m^2]",
                              nullptr, o->heat_crack_power, &o->heat_crack_power, nullptr));
   PetscCall(PetscOptionsReal("-final_time", "Simulated time [s] (default: the source duration)", nullptr,
@@ -43,8 +43,15 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscCall(PetscOptionsInt("-crack_state_every", "Steps between crack_state.csv records (0: none)", nullptr,
                             o->crack_state_every, &o->crack_state_every, nullptr));
   PetscOptionsEnd();
-  o->physics = static_cast<PhysicsChoice>(physics);
-  o->heat = static_cast<HeatChoice>(heat);
+  const std::map<std::string, PhysicsChoice> physics_choices = {
+      {"all", PhysicsChoice::All}, {"wave", PhysicsChoice::Wave}, {"heat", PhysicsChoice::Heat}};
+  const std::map<std::string, HeatChoice> heat_choices = {
+      {"auto", HeatChoice::Auto}, {"on", HeatChoice::On}, {"off", HeatChoice::Off}};
+  PetscCheck(physics_choices.count(physics), comm, PETSC_ERR_USER_INPUT,
+             "-physics: unknown value '%s' (all, wave, heat)", physics);
+  PetscCheck(heat_choices.count(heat), comm, PETSC_ERR_USER_INPUT, "-heat: unknown value '%s' (auto, on, off)", heat);
+  o->physics = physics_choices.at(physics);
+  o->heat = heat_choices.at(heat);
   o->crack_probes.assign(fractions, fractions + (has_fractions ? nfractions : 0));
   for (double s : o->crack_probes)
     PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);

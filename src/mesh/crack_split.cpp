@@ -29,8 +29,9 @@ PetscErrorCode SplitCracks(DM dm, DM* split) {
   PetscCallMPI(MPI_Allreduce(&nfaces, &total, 1, MPIU_INT, MPI_SUM, comm));
   if (total == 0) {
     PetscCall(DMLabelDestroy(&fault));
-    PetscCall(PetscObjectReference((PetscObject)dm));  // nothing to split: the same mesh
-    *split = dm;
+    // Nothing to split: the same topology, but its own DM, so the wave and heat
+    // spaces do not overwrite each other's section.
+    PetscCall(DMClone(dm, split));
     PetscFunctionReturn(0);
   }
   PetscCall(DMPlexLabelComplete(dm, fault));

@@ -59,6 +59,14 @@ expect_error "-crack_a0_profile: unknown value 'wavy'" $box $crack -crack_a0_pro
 expect_error "-crack_a0_profile file needs -crack_a0_file FILE" $box $crack -crack_a0_profile file
 expect_error "-crack_a0_file $work/nofile.csv: cannot open the file" $box $crack -crack_a0_profile file -crack_a0_file "$work/nofile.csv"
 expect_error "-contact_normal_table $work/none.csv: cannot open the file" $box $crack -contact_normal_law table -contact_normal_table "$work/none.csv"
+expect_error "-heat_bc: unknown value 'hot'" $box $crack -heat_bc hot
+expect_error "-heat_bc_top: unknown value 'warm'" $box $crack -heat_bc_top warm
+expect_error "-heat_h must be >= 0" $box $crack -heat_h -5
+expect_error "-heat_crack_power must be >= 0" $box $crack -physics heat -heat_crack_power -1
+expect_error "-wave_quiet_fraction must be in [0, 1)" $box $crack -wave_quiet_fraction 2
+expect_error "-physics: unknown value 'plasma'" $box $crack -physics plasma
+expect_error "-heat: unknown value 'maybe'" $box $crack -heat maybe
+expect_error "-heat_conductivity must be > 0" $box $crack -heat_conductivity 0
 
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
