@@ -291,12 +291,13 @@ PetscErrorCode Simulation::StopWaves(Recorder& recorder, io::RunSummary* summary
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary*) {
+PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)heat_->space().dm());
   if (!cell_energy_.empty()) PetscCall(heat_->SetSourcePowers(std::vector<double>(cell_energy_.size(), 0.0)));
   PetscCall(heat_->UseFreeIntegrator());
   const double t_begin = heat_->time();
+  const PetscInt steps_before = heat_->steps();
   recorder.progress().Start(comm, "heat", t_begin, final_time_);
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
@@ -320,6 +321,8 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary*) {
     if (recorder.OutputDue(heat_->time())) PetscCall(recorder.WriteFields(heat_->time(), nullptr, heat_.get()));
   }
   heat_->on_step = nullptr;
+  summary->stages["heat_free"] = MPI_Wtime() - t0;
+  summary->steps_heat_free = heat_->steps() - steps_before;
   PetscCall(PetscLogStagePop());
   heat_seconds_ += MPI_Wtime() - t0;
   recorder.progress().Done(heat_->time(), heat_->steps());

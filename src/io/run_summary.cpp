@@ -51,6 +51,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.end_array();
       json.value("ranks", s.mesh.ranks).value("dofs_wave", s.dofs_wave).value("dofs_heat", s.dofs_heat);
       json.value("contact_cells", s.contact_cells).value("steps_wave", s.steps_wave).value("steps_heat", s.steps_heat);
+      json.value("steps_heat_free", s.steps_heat_free);
       json.value("wall_time_s", s.wall_time_s).value("max_budget_error", s.max_budget_error);
       json.value("wave_dt_reductions", s.wave_dt_reductions);
       json.value("wave_energy_left", s.wave_energy_left);

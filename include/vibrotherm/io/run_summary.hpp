@@ -15,6 +15,7 @@ namespace vibrotherm::io {
 struct RunSummary {
   std::vector<std::string> physics_ran;   ///< "wave", "contact", "heat"
   long long dofs_wave = 0, dofs_heat = 0, contact_cells = 0, steps_wave = 0, steps_heat = 0;
+  long long steps_heat_free = 0;  ///< heat steps after the waves stopped
   double wall_time_s = 0.0;
   double max_budget_error = 0.0;
   long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
