@@ -29,7 +29,7 @@ HeatSolver::~HeatSolver() {
   (void)TSDestroy(&coupled_ts_);
   (void)TSDestroy(&free_ts_);
   for (Mat* m : {&M_, &K_}) (void)MatDestroy(m);
-  for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_}) (void)VecDestroy(v);
+  for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) (void)VecDestroy(v);
 }
 
 PetscErrorCode HeatSolver::Setup(DM dm, const HeatMaterial& material) {
@@ -73,7 +73,7 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatMaterial& material) {
   // Edges: the lumped film H on the diagonal of K, G = H (T_ext − T0).
   PetscCall(BuildHeatBoundary(space_, bc, &boundary_));
   PetscCall(DMCreateGlobalVector(dm, &theta_));
-  for (Vec* v : {&theta_prev_, &Q_, &G_, &H_, &work_}) PetscCall(VecDuplicate(theta_, v));
+  for (Vec* v : {&theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) PetscCall(VecDuplicate(theta_, v));
   for (Vec v : {theta_, theta_prev_, Q_, G_, H_}) PetscCall(VecSet(v, 0.0));
   for (std::size_t i = 0; i < boundary_.convective_rows.size(); ++i) {
     const PetscInt row = boundary_.convective_rows[i];
@@ -304,9 +304,7 @@ PetscErrorCode HeatSolver::Account(double h) {
   PetscCall(PetscObjectTypeCompareAny((PetscObject)ts_, &theta_family, TSTHETA, TSBEULER, TSCN, ""));
   if (theta_family) PetscCall(TSThetaGetTheta(ts_, &w));
   // r = M Δθ + h((K + H)θ_w − Q − G): the residual the sink rows would carry if free.
-  Vec r, mix;
-  PetscCall(VecDuplicate(theta_, &r));
-  PetscCall(VecDuplicate(theta_, &mix));
+  Vec r = residual_, mix = mix_;
   PetscCall(VecWAXPY(work_, -1.0, theta_prev_, theta_));
   PetscCall(MatMult(M_, work_, r));
   PetscCall(VecWAXPY(mix, w, work_, theta_prev_));
@@ -325,8 +323,6 @@ PetscErrorCode HeatSolver::Account(double h) {
   PetscScalar film;
   PetscCall(VecDot(H_, mix, &film));
   boundary_loss_ += h * (PetscRealPart(film) - film_total_) - sink;
-  PetscCall(VecDestroy(&r));
-  PetscCall(VecDestroy(&mix));
   PetscCall(VecCopy(theta_, theta_prev_));
   ++steps_;
   PetscFunctionReturn(0);

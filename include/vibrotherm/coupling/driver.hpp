@@ -51,7 +51,7 @@ class Simulation {
   PetscErrorCode Exchange(double interval);
   /// Whether the waves are over: source ended and, for a whole period, the mechanical energy
   /// left below -wave_quiet_fraction of the energy dissipated (of its peak without dissipation).
-  PetscErrorCode WavesQuiet(double interval, bool* quiet);
+  PetscErrorCode WavesQuiet(const io::EnergyRow& energy_now, bool* quiet);
   PetscErrorCode StopWaves(Recorder& recorder, io::RunSummary* summary);
   /// The heat TS alone (adaptive steps) to the final time.
   PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);

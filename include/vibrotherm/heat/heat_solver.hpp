@@ -103,6 +103,7 @@ class HeatSolver {
   HeatBoundary boundary_;
   Mat M_ = nullptr, K_ = nullptr;  ///< K includes the convective film H
   Vec theta_ = nullptr, theta_prev_ = nullptr, Q_ = nullptr, G_ = nullptr, H_ = nullptr, work_ = nullptr;
+  Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   /// Per crack facet id: (local dof offsets, weights) to build Q.
   struct FacetLoad {
