@@ -79,6 +79,12 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
         json.end_object();
       }
       json.end_array();
+      if (!s.modes.empty()) {
+        json.begin_array("modes");
+        for (const auto& [frequency, participation] : s.modes)
+          json.begin_object().value("frequency", frequency).value("participation", participation).end_object();
+        json.end_array();
+      }
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

@@ -85,4 +85,15 @@ std::array<double, 2> CrackLine::At(double xi) const {
           points_[k - 1][1] + w * (points_[k][1] - points_[k - 1][1])};
 }
 
+double CrackLine::Distance(double x, double y) const {
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const auto &p = points_[i], &q = points_[i + 1];
+    const double dx = q[0] - p[0], dy = q[1] - p[1], len2 = dx * dx + dy * dy;
+    const double s = len2 > 0.0 ? std::clamp(((x - p[0]) * dx + (y - p[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(x - p[0] - s * dx, y - p[1] - s * dy));
+  }
+  return best;
+}
+
 }  // namespace vibrotherm::mesh

@@ -1,8 +1,26 @@
 #include "vibrotherm/wave/elastic_operator.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace vibrotherm::wave {
+
+void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, double* Ke) {
+  const int Nb = q.nodes, n = 2 * Nb;
+  std::fill(Ke, Ke + n * n, 0.0);
+  for (int p = 0; p < q.points; ++p) {
+    const double w = q.weight[p];
+    const double* g = &q.grad[p * Nb * 2];
+    for (int a = 0; a < Nb; ++a)
+      for (int b = 0; b < Nb; ++b) {
+        const double dot = g[2 * a] * g[2 * b] + g[2 * a + 1] * g[2 * b + 1];
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j)
+            Ke[(2 * a + i) * n + 2 * b + j] +=
+                w * (lambda * g[2 * a + i] * g[2 * b + j] + G * ((i == j ? dot : 0.0) + g[2 * a + j] * g[2 * b + i]));
+      }
+  }
+}
 
 PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
                                         Vec* lumped_mass) {
@@ -23,26 +41,18 @@ PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const El
   fe::CellQuadrature q;
   for (PetscInt c : space.cells()) {
     PetscCall(space.Evaluate(c, &q));
-    std::fill(Ke.begin(), Ke.end(), 0.0);
     std::vector<double> row_sum(Nb, 0.0), diag(Nb, 0.0);
     double cell_mass = 0.0;
     for (int p = 0; p < q.points; ++p) {
       const double w = q.weight[p];
-      const double* g = &q.grad[p * Nb * 2];
       const double* phi = q.value + p * Nb;
       cell_mass += w * rho;
       for (int a = 0; a < Nb; ++a) {
         row_sum[a] += w * rho * phi[a];
         diag[a] += w * rho * phi[a] * phi[a];
-        for (int b = 0; b < Nb; ++b) {
-          const double dot = g[2 * a] * g[2 * b] + g[2 * a + 1] * g[2 * b + 1];
-          for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j)
-              Ke[(2 * a + i) * n + 2 * b + j] += w * (lambda * g[2 * a + i] * g[2 * b + j] +
-                                                      G * ((i == j ? dot : 0.0) + g[2 * a + j] * g[2 * b + i]));
-        }
       }
     }
+    ElementStiffness(q, lambda, G, Ke.data());
     double diag_sum = 0.0;
     for (double d : diag) diag_sum += d;
     for (int a = 0; a < Nb; ++a) me[2 * a] = me[2 * a + 1] = hrz ? diag[a] * cell_mass / diag_sum : row_sum[a];

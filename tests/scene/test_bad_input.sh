@@ -67,6 +67,9 @@ expect_error "-wave_quiet_fraction must be in [0, 1)" $box $crack -wave_quiet_fr
 expect_error "-physics: unknown value 'plasma'" $box $crack -physics plasma
 expect_error "-heat: unknown value 'maybe'" $box $crack -heat maybe
 expect_error "-heat_conductivity must be > 0" $box $crack -heat_conductivity 0
+expect_error "-modes_n must be >= 1" $box $crack -modes -modes_n 0
+expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_target_frequency -5
+expect_error "-modes_defect_radius must be >= 0" $box $crack -modes -modes_defect_radius -1
 
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

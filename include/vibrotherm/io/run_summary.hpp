@@ -31,6 +31,8 @@ struct RunSummary {
   std::map<int, std::string> probe_labels;
   std::map<int, double> probe_max_temperature_rise;
   std::vector<std::pair<double, std::map<int, double>>> output_temperature_rise;
+  /// -modes: (frequency [Hz], defect participation) of each mode found.
+  std::vector<std::pair<double, double>> modes;
   mesh::MeshSummary mesh;
 };
 

@@ -16,6 +16,8 @@ class CrackLine {
   PetscErrorCode Setup(DM dm, PetscInt crack);
   /// The point at fraction xi ∈ [0, 1] of the length from the first facet's free end.
   std::array<double, 2> At(double xi) const;
+  /// Shortest distance from (x, y) to the crack.
+  double Distance(double x, double y) const;
   double length() const { return length_; }
   bool empty() const { return points_.size() < 2; }
 

@@ -16,6 +16,9 @@
 
 namespace vibrotherm::wave {
 
+/// The element stiffness of one cell (2·nodes square, node-major, components
+/// interleaved as the cell closure), from its quadrature data.
+void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, double* Ke);
 /// Creates and assembles K (global, from DMCreateMatrix) and the lumped mass (global vector).
 PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
                                         Vec* lumped_mass);

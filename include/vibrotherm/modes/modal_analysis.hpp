@@ -1,0 +1,70 @@
+// Natural modes of the specimen for local defect resonance (LDR):
+//
+//   K φ = ω² M φ      on the crack-split mesh (the crack faces are free: the
+//                     open crack, which is also the contact linearised at
+//                     a0 = 0 for laws with N(0) = N'(0) = 0, e.g. Biwa's),
+//
+// with the wave solver's own K and lumped M, so the frequencies are those the
+// explicit wave solver resonates at. Edges: roller, antisymmetric, fixed and
+// the prescribed component of a displacement source are constraints; absorbing
+// edges are free (their dashpots damp, they do not constrain). Constraints are
+// eliminated exactly: K_r = Pᵀ K P, M_r = Pᵀ M P, with P mapping the free
+// directions of every node onto the full displacement.
+//
+// SLEPc solves it by shift-and-invert around -modes_target_frequency (LU by
+// MUMPS), -modes_n eigenpairs; -modes_eps_* and -modes_st_* tune SLEPc.
+// The defect participation of a mode is the share of its strain energy in the
+// cells whose centroid lies within -modes_defect_radius of a crack.
+#pragma once
+#include <slepceps.h>
+#include <string>
+#include <vector>
+#include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/mesh/crack_line.hpp"
+#include "vibrotherm/wave/excitation.hpp"
+#include "vibrotherm/wave/material.hpp"
+
+namespace vibrotherm::modes {
+
+struct ModesOptions {
+  PetscInt n = 10;                ///< -modes_n: eigenpairs wanted
+  double target_frequency = 0.0;  ///< -modes_target_frequency [Hz] (default: -source_frequency)
+  double defect_radius = 0.0;     ///< -modes_defect_radius [m] (default: half the longest crack)
+};
+PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
+
+struct Mode {
+  double frequency;      ///< [Hz]
+  double participation;  ///< strain energy near the cracks / total (nan without a crack, or for a rigid motion)
+  double error;          ///< relative residual ‖Kφ − ω²Mφ‖ / ‖Kφ‖ (SLEPc)
+};
+
+class ModalAnalysis {
+ public:
+  ModalAnalysis() = default;
+  ModalAnalysis(const ModalAnalysis&) = delete;
+  ModalAnalysis& operator=(const ModalAnalysis&) = delete;
+  ~ModalAnalysis();
+  /// Assembles the reduced K and M on the wave mesh. Collective.
+  PetscErrorCode Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
+                       const wave::Excitation& excitation);
+  /// Solves for the modes nearest the target; cracks give the participation.
+  PetscErrorCode Solve(const ModesOptions& options, const std::vector<mesh::CrackLine>& cracks);
+  /// modes.csv (rank 0) and the mode shapes in modes.h5 + modes.xmf ("time" = frequency).
+  PetscErrorCode Write(const std::string& dir) const;
+  const std::vector<Mode>& modes() const { return modes_; }
+  PetscInt dofs() const { return reduced_dofs_; }
+
+ private:
+  /// Share of the strain energy of φ (full displacement) near the cracks.
+  PetscErrorCode DefectParticipation(Vec phi, const std::vector<mesh::CrackLine>& cracks, double radius,
+                                     double* share) const;
+  fe::LagrangeSpace space_;
+  wave::ElasticMaterial material_;
+  Mat P_ = nullptr, K_ = nullptr, M_ = nullptr;  ///< prolongation, reduced stiffness and mass
+  PetscInt reduced_dofs_ = 0;
+  std::vector<Mode> modes_;
+  std::vector<Vec> shapes_;  ///< full displacement of each mode, max |u| = 1
+};
+
+}  // namespace vibrotherm::modes

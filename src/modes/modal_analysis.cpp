@@ -1,0 +1,242 @@
+#include "vibrotherm/modes/modal_analysis.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+
+#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/io/field_output.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/wave/elastic_operator.hpp"
+#include "vibrotherm/wave/wave_boundary.hpp"
+
+namespace vibrotherm::modes {
+
+PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o) {
+  PetscFunctionBeginUser;
+  o->target_frequency = default_frequency;
+  o->defect_radius = default_radius;
+  PetscOptionsBegin(comm, nullptr, "Natural modes (-modes)", nullptr);
+  PetscCall(PetscOptionsInt("-modes_n", "Number of modes", nullptr, o->n, &o->n, nullptr));
+  PetscCall(PetscOptionsReal("-modes_target_frequency", "Modes nearest this frequency [Hz]", nullptr,
+                             o->target_frequency, &o->target_frequency, nullptr));
+  PetscCall(PetscOptionsReal("-modes_defect_radius", "Distance from the crack counted as the defect [m]", nullptr,
+                             o->defect_radius, &o->defect_radius, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(o->n >= 1, comm, PETSC_ERR_USER_INPUT, "-modes_n must be >= 1, got %" PetscInt_FMT, o->n);
+  PetscCheck(o->target_frequency > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-modes_target_frequency must be > 0 Hz (a free specimen's rigid motions sit at 0), got %g",
+             o->target_frequency);
+  PetscCheck(o->defect_radius >= 0.0, comm, PETSC_ERR_USER_INPUT, "-modes_defect_radius must be >= 0, got %g",
+             o->defect_radius);
+  PetscFunctionReturn(0);
+}
+
+ModalAnalysis::~ModalAnalysis() {
+  for (Mat* m : {&P_, &K_, &M_}) (void)MatDestroy(m);
+  for (Vec& v : shapes_) (void)VecDestroy(&v);
+}
+
+namespace {
+
+/// Free directions of every owned node (2 − independent constraints of it).
+std::vector<std::vector<std::array<double, 2>>> FreeDirections(PetscInt nodes,
+                                                              const std::vector<wave::Constraint>& constraints) {
+  std::vector<std::vector<std::array<double, 2>>> constrained(nodes), free(nodes);
+  for (const wave::Constraint& c : constraints) {
+    auto& dirs = constrained[c.node];
+    const bool repeated = std::any_of(dirs.begin(), dirs.end(), [&](const std::array<double, 2>& d) {
+      return std::abs(d[0] * c.d[1] - d[1] * c.d[0]) < 1e-8;
+    });
+    if (!repeated) dirs.push_back({c.d[0], c.d[1]});
+  }
+  for (PetscInt i = 0; i < nodes; ++i) {
+    if (constrained[i].empty())
+      free[i] = {{1.0, 0.0}, {0.0, 1.0}};
+    else if (constrained[i].size() == 1)
+      free[i] = {{-constrained[i][0][1], constrained[i][0][0]}};
+  }
+  return free;
+}
+
+}  // namespace
+
+PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
+                                    const wave::Excitation& excitation) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)wave_dm);
+  material_ = material;
+  PetscCall(space_.Setup(wave_dm, degree, 2));
+  Mat K;
+  Vec mass;
+  PetscCall(wave::AssembleElasticOperators(space_, material, &K, &mass));
+  wave::WaveBoundary boundary;
+  PetscCall(wave::BuildWaveBoundary(space_, material, excitation, &boundary));
+
+  // P: one row per full dof, one column per free direction of its node.
+  PetscInt n_full, row_start;
+  PetscCall(VecGetLocalSize(mass, &n_full));
+  PetscCall(VecGetOwnershipRange(mass, &row_start, nullptr));
+  const auto free = FreeDirections(n_full / 2, boundary.constraints);
+  PetscInt n_reduced = 0, col_start = 0;
+  for (const auto& f : free) n_reduced += static_cast<PetscInt>(f.size());
+  PetscCallMPI(MPI_Exscan(&n_reduced, &col_start, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&n_reduced, &reduced_dofs_, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(MatCreateAIJ(comm, n_full, n_reduced, PETSC_DETERMINE, PETSC_DETERMINE, 2, nullptr, 2, nullptr, &P_));
+  PetscInt col = col_start;
+  for (std::size_t node = 0; node < free.size(); ++node)
+    for (const auto& t : free[node]) {
+      for (PetscInt i = 0; i < 2; ++i)
+        if (t[i] != 0.0) PetscCall(MatSetValue(P_, row_start + 2 * node + i, col, t[i], INSERT_VALUES));
+      ++col;
+    }
+  PetscCall(MatAssemblyBegin(P_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P_, MAT_FINAL_ASSEMBLY));
+
+  // K_r = Pᵀ K P (K as AIJ: PtAP of a block matrix with a scalar P is not offered); M_r likewise.
+  Mat K_aij, M_full;
+  PetscCall(MatConvert(K, MATAIJ, MAT_INITIAL_MATRIX, &K_aij));
+  PetscCall(MatPtAP(K_aij, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &K_));
+  PetscCall(MatCreateAIJ(comm, n_full, n_full, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &M_full));
+  PetscCall(MatDiagonalSet(M_full, mass, INSERT_VALUES));
+  PetscCall(MatPtAP(M_full, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &M_));
+  for (Mat* m : {&K, &K_aij, &M_full}) PetscCall(MatDestroy(m));
+  PetscCall(VecDestroy(&mass));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<mesh::CrackLine>& cracks, double radius,
+                                                  double* share) const {
+  PetscFunctionBeginUser;
+  DM dm = space_.dm();
+  Vec local;
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(DMGlobalToLocal(dm, phi, INSERT_VALUES, local));
+  PetscSection section;
+  PetscCall(DMGetLocalSection(dm, &section));
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  const int n = 2 * space_.nodes_per_cell();
+  std::vector<double> Ke(n * n);
+  fe::CellQuadrature q;
+  double energy[2] = {0.0, 0.0};  // near the cracks, everywhere
+  for (PetscInt c : space_.cells()) {
+    PetscCall(space_.Evaluate(c, &q));
+    wave::ElementStiffness(q, material_.lambda(), material_.shear_modulus(), Ke.data());
+    PetscScalar* u = nullptr;
+    PetscCall(DMPlexVecGetClosure(dm, section, local, c, nullptr, &u));
+    double e = 0.0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) e += 0.5 * u[i] * Ke[i * n + j] * u[j];
+    PetscCall(DMPlexVecRestoreClosure(dm, section, local, c, nullptr, &u));
+    const auto centre = mesh::CellCentroid(dm, x, c);
+    const bool near = std::any_of(cracks.begin(), cracks.end(), [&](const mesh::CrackLine& crack) {
+      return crack.Distance(centre[0], centre[1]) <= radius;
+    });
+    energy[0] += near ? e : 0.0;
+    energy[1] += e;
+  }
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, energy, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  *share = cracks.empty() ? NAN : energy[0] / energy[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const std::vector<mesh::CrackLine>& cracks) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)K_);
+  PetscLogEvent solve_event;
+  PetscCall(PetscLogEventRegister("ModesSolve", EPS_CLASSID, &solve_event));
+  EPS eps;
+  ST st;
+  KSP ksp;
+  PC pc;
+  PetscCall(EPSCreate(comm, &eps));
+  PetscCall(EPSSetOptionsPrefix(eps, "modes_"));
+  PetscCall(EPSSetOperators(eps, K_, M_));
+  PetscCall(EPSSetProblemType(eps, EPS_GHEP));
+  PetscCall(EPSSetDimensions(eps, options.n, PETSC_DEFAULT, PETSC_DEFAULT));
+  const double omega_target = 2.0 * M_PI * options.target_frequency;
+  PetscCall(EPSSetTarget(eps, omega_target * omega_target));
+  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTolerances(eps, 1e-10, PETSC_DEFAULT));
+  PetscCall(EPSGetST(eps, &st));
+  PetscCall(STSetType(st, STSINVERT));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(EPSSetFromOptions(eps));
+  PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
+  PetscCall(EPSSolve(eps));
+  PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));
+  PetscInt converged;
+  PetscCall(EPSGetConverged(eps, &converged));
+  PetscCheck(converged > 0, comm, PETSC_ERR_NOT_CONVERGED,
+             "-modes: SLEPc found no mode near %g Hz (try -modes_eps_max_it or another -modes_target_frequency)",
+             options.target_frequency);
+  Vec reduced, full;
+  PetscCall(MatCreateVecs(K_, &reduced, nullptr));
+  PetscCall(MatCreateVecs(P_, nullptr, &full));
+  struct Found {
+    Mode mode;
+    Vec shape;
+  };
+  std::vector<Found> found;
+  for (PetscInt i = 0; i < std::min(converged, options.n); ++i) {
+    PetscScalar lambda;
+    PetscReal error;
+    PetscCall(EPSGetEigenpair(eps, i, &lambda, nullptr, reduced, nullptr));
+    PetscCall(EPSComputeError(eps, i, EPS_ERROR_RELATIVE, &error));
+    Vec shape;
+    PetscCall(VecDuplicate(full, &shape));
+    PetscCall(MatMult(P_, reduced, shape));
+    PetscReal peak;
+    PetscCall(VecNorm(shape, NORM_INFINITY, &peak));
+    PetscCall(VecScale(shape, 1.0 / peak));
+    Mode mode{std::sqrt(std::max(PetscRealPart(lambda), 0.0)) / (2.0 * M_PI), NAN, error};
+    // A rigid motion (a free specimen's zero mode) strains nothing: no participation.
+    const bool rigid = mode.frequency < 1e-3 * options.target_frequency;
+    if (!rigid) PetscCall(DefectParticipation(shape, cracks, options.defect_radius, &mode.participation));
+    found.push_back({mode, shape});
+  }
+  std::sort(found.begin(), found.end(),
+            [](const Found& a, const Found& b) { return a.mode.frequency < b.mode.frequency; });
+  for (const Found& f : found) {
+    modes_.push_back(f.mode);
+    shapes_.push_back(f.shape);
+  }
+  PetscCall(VecDestroy(&reduced));
+  PetscCall(VecDestroy(&full));
+  PetscCall(EPSDestroy(&eps));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalAnalysis::Write(const std::string& dir) const {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)K_);
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    VibrothermCallCpp(PETSC_COMM_SELF, {
+      io::AtomicFile file(dir + "/modes.csv");
+      auto& out = file.stream();
+      out << "mode,frequency,participation,error\n" << std::setprecision(10);
+      for (std::size_t k = 0; k < modes_.size(); ++k)
+        out << k << ',' << modes_[k].frequency << ',' << modes_[k].participation << ',' << modes_[k].error << '\n';
+      file.commit();
+    });
+  }
+  io::FieldFile shapes;
+  PetscCall(shapes.Open(comm, dir + "/modes.h5"));
+  PetscCall(shapes.AddMesh("wave", space_));
+  for (std::size_t k = 0; k < shapes_.size(); ++k)
+    PetscCall(shapes.WriteField("wave", "mode", shapes_[k], static_cast<int>(k), modes_[k].frequency));
+  PetscCall(shapes.Finish());
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::modes
