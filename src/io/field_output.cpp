@@ -151,7 +151,9 @@ PetscErrorCode FieldFile::WriteVertexValues(const std::string& mesh, const std::
   PetscInt vStart, vEnd;
   PetscCall(DMPlexGetDepthStratum(m.space->dm(), 0, &vStart, &vEnd));
   std::vector<double> by_vertex(vEnd - vStart, fill);
-  for (const auto& [v, value] : pairs) by_vertex[v - vStart] = value;
+  // The file holds vertex fields: values at other points (degree-2 edge nodes) are not written.
+  for (const auto& [v, value] : pairs)
+    if (v >= vStart && v < vEnd) by_vertex[v - vStart] = value;
   const PetscInt* number;
   PetscCall(ISGetIndices(m.numbering, &number));
   std::vector<PetscInt> rows;

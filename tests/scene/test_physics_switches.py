@@ -55,4 +55,12 @@ with tempfile.TemporaryDirectory() as tmp:
         d, h = summary["dissipated_energy"], summary["heat_deposited"]
         check(d > 0 and abs(h - d) <= 1e-12 * d, "heat deposited %r vs dissipated %r" % (h, d))
         print("waves stopped at %.4g s; dissipated %.4g J/m; heat deposited %.4g J/m" % (wave_end, d, h))
+    # Degree 2 with field output (once overflowed the vertex buffer with edge nodes).
+    summary, log = run(tmp, "degree2", crack + ["-contact_mu", "1", "-wave_degree", "2", "-output_times", "1e-5,2e-5"])
+    if summary:
+        import h5py
+        with h5py.File(os.path.join(tmp, "degree2", "fields.h5"), "r") as f:
+            state = f["wave/contact_state_1"][:]
+        check(set(state.ravel()) <= {-1.0, 0.0, 1.0, 2.0, 3.0} and (state >= 0).sum() >= 2,
+              "degree 2: contact_state values %s" % sorted(set(state.ravel()))[:8])
 check.finish()

@@ -27,7 +27,8 @@ class FieldFile {
   PetscErrorCode AddMesh(const std::string& name, const fe::LagrangeSpace& space);
   /// Writes the vertex values of a global vector of the mesh's space at output k (time t).
   PetscErrorCode WriteField(const std::string& mesh, const std::string& field, Vec global, int k, double t);
-  /// Writes a scalar vertex field given as (local vertex, value) pairs, `fill` elsewhere.
+  /// Writes a scalar vertex field given as (local point, value) pairs, `fill` elsewhere
+  /// (pairs at points that are not vertices, e.g. degree-2 edge nodes, are skipped).
   PetscErrorCode WriteVertexValues(const std::string& mesh, const std::string& field,
                                    const std::vector<std::pair<PetscInt, double>>& values, double fill, int k,
                                    double t);
