@@ -247,10 +247,14 @@ double MemoryDiagram::stored_energy(const MmdConfig& cfg) const {
   double Ut = 0.0;
   for (std::size_t k = 0; k + 1 < pts_.size(); ++k) {
     const Breakpoint &A = pts_[k], &B = pts_[k + 1];
-    const double m = (B.f - A.f) / (B.alpha - A.alpha);
-    const double c = bt - A.f + m * A.alpha;
-    Ut += m * (c * (B.law.N - A.law.N) -
-               m * ((B.alpha * B.law.N - B.law.M) - (A.alpha * A.law.N - A.law.M)));
+    // m (bt − f_A) ΔN + m² ∫_A^B (N − N_B) dα: the same sum as with the line through A,
+    // without the two m²·α_A·ΔN terms that cancel. The integral, M_B − M_A − Δα N_B, is
+    // O(Δα²) from O(Δα) parts: on a segment much shorter than α it would keep no digit,
+    // and there the trapezoid rule −Δα ΔN / 2 is exact to O(Δα/α).
+    const double dalpha = B.alpha - A.alpha, m = (B.f - A.f) / dalpha, dN = B.law.N - A.law.N;
+    const double integral = std::abs(dalpha) < 1e-4 * std::abs(B.alpha) ? -0.5 * dalpha * dN
+                                                                          : (B.law.M - A.law.M) - dalpha * B.law.N;
+    Ut += m * (bt - A.f) * dN + m * m * integral;
   }
   return 2.0 * pts_.back().law.M + 2.0 * Ut / cfg.theta;
 }
