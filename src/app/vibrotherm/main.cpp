@@ -1,7 +1,7 @@
 // vibrotherm: vibrothermography of cracked solids.
 //
-// Today this builds the specimen (mesh, crack split, distribution) and writes
-// the mesh outputs; the wave, interface and heat stages follow (issues 4-6).
+// Builds the specimen, then either runs the scene (waves, crack contact, heat;
+// coupling/driver.hpp) or, with -modes, solves for its natural modes.
 #include <slepcsys.h>
 
 #include "vibrotherm/util/errors.hpp"
