@@ -107,8 +107,22 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<mesh::CrackLine>& cracks, double radius,
-                                                  double* share) const {
+PetscErrorCode ModalAnalysis::CellsNearCracks(const std::vector<mesh::CrackLine>& cracks, double radius,
+                                              std::vector<bool>* near) const {
+  PetscFunctionBeginUser;
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(space_.dm()));
+  near->clear();
+  for (PetscInt c : space_.cells()) {
+    const auto centre = mesh::CellCentroid(space_.dm(), x, c);
+    near->push_back(std::any_of(cracks.begin(), cracks.end(), [&](const mesh::CrackLine& crack) {
+      return crack.Distance(centre[0], centre[1]) <= radius;
+    }));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<bool>& near, double* share) const {
   PetscFunctionBeginUser;
   DM dm = space_.dm();
   Vec local;
@@ -116,13 +130,12 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<mes
   PetscCall(DMGlobalToLocal(dm, phi, INSERT_VALUES, local));
   PetscSection section;
   PetscCall(DMGetLocalSection(dm, &section));
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
   const int n = 2 * space_.nodes_per_cell();
   std::vector<double> Ke(n * n);
   fe::CellQuadrature q;
   double energy[2] = {0.0, 0.0};  // near the cracks, everywhere
-  for (PetscInt c : space_.cells()) {
+  for (std::size_t k = 0; k < space_.cells().size(); ++k) {
+    const PetscInt c = space_.cells()[k];
     PetscCall(space_.Evaluate(c, &q));
     wave::ElementStiffness(q, material_.lambda(), material_.shear_modulus(), Ke.data());
     PetscScalar* u = nullptr;
@@ -131,16 +144,12 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<mes
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) e += 0.5 * u[i] * Ke[i * n + j] * u[j];
     PetscCall(DMPlexVecRestoreClosure(dm, section, local, c, nullptr, &u));
-    const auto centre = mesh::CellCentroid(dm, x, c);
-    const bool near = std::any_of(cracks.begin(), cracks.end(), [&](const mesh::CrackLine& crack) {
-      return crack.Distance(centre[0], centre[1]) <= radius;
-    });
-    energy[0] += near ? e : 0.0;
+    energy[0] += near[k] ? e : 0.0;
     energy[1] += e;
   }
   PetscCall(DMRestoreLocalVector(dm, &local));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, energy, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm)));
-  *share = cracks.empty() ? NAN : energy[0] / energy[1];
+  *share = energy[0] / energy[1];
   PetscFunctionReturn(0);
 }
 
@@ -178,6 +187,8 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const std::vect
   PetscCheck(converged > 0, comm, PETSC_ERR_NOT_CONVERGED,
              "-modes: SLEPc found no mode near %g Hz (try -modes_eps_max_it or another -modes_target_frequency)",
              options.target_frequency);
+  std::vector<bool> near;
+  PetscCall(CellsNearCracks(cracks, options.defect_radius, &near));
   Vec reduced, full;
   PetscCall(MatCreateVecs(K_, &reduced, nullptr));
   PetscCall(MatCreateVecs(P_, nullptr, &full));
@@ -200,7 +211,7 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const std::vect
     Mode mode{std::sqrt(std::max(PetscRealPart(lambda), 0.0)) / (2.0 * M_PI), NAN, error};
     // A rigid motion (a free specimen's zero mode) strains nothing: no participation.
     const bool rigid = mode.frequency < 1e-3 * options.target_frequency;
-    if (!rigid) PetscCall(DefectParticipation(shape, cracks, options.defect_radius, &mode.participation));
+    if (!rigid && !cracks.empty()) PetscCall(DefectParticipation(shape, near, &mode.participation));
     found.push_back({mode, shape});
   }
   std::sort(found.begin(), found.end(),

@@ -56,9 +56,11 @@ class ModalAnalysis {
   PetscInt dofs() const { return reduced_dofs_; }
 
  private:
-  /// Share of the strain energy of φ (full displacement) near the cracks.
-  PetscErrorCode DefectParticipation(Vec phi, const std::vector<mesh::CrackLine>& cracks, double radius,
-                                     double* share) const;
+  /// Per local bulk cell (space order): whether its centroid lies within radius of a crack.
+  PetscErrorCode CellsNearCracks(const std::vector<mesh::CrackLine>& cracks, double radius,
+                                 std::vector<bool>* near) const;
+  /// Share of the strain energy of φ (full displacement) in the cells marked near.
+  PetscErrorCode DefectParticipation(Vec phi, const std::vector<bool>& near, double* share) const;
   fe::LagrangeSpace space_;
   wave::ElasticMaterial material_;
   Mat P_ = nullptr, K_ = nullptr, M_ = nullptr;  ///< prolongation, reduced stiffness and mass
