@@ -10,7 +10,7 @@ DEBIAN_PACKAGES=(
   petsc-dev slepc-dev libhdf5-openmpi-dev openmpi-bin
   libmetis-dev libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-numpy python3-h5py python3-matplotlib
+  python3-numpy python3-h5py python3-matplotlib python3-scipy
 )
 
 log() { printf '[vibrotherm] %s\n' "$*" >&2; }

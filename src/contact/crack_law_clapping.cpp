@@ -1,4 +1,5 @@
 // Clapping: the normal law alone, frictionless faces (T = 0, no dissipation).
+#include <limits>
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
 
@@ -26,6 +27,7 @@ class ClappingLaw final : public CrackLaw {
     return {a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero(), 0.0};
   }
   bool can_dissipate() const override { return false; }
+  double friction_bound() const override { return std::numeric_limits<double>::infinity(); }
   bool has_contact() const override { return true; }
 
  private:

@@ -63,6 +63,7 @@ class CoulombLaw final : public CrackLaw {
     return {a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero(), kt_};
   }
   bool can_dissipate() const override { return mu_ > 0.0; }
+  double friction_bound() const override { return mu_; }
   bool has_contact() const override { return true; }
 
  private:
@@ -83,8 +84,16 @@ class CoulombLaw final : public CrackLaw {
 
 }  // namespace
 
+const ContactParameterList& coulomb_law_parameters() {
+  static const ContactParameterList list = {
+      real_parameter("-crack_coulomb_kt", &ContactParameters::coulomb_kt, "1e14", Range::positive(), "Pa/m",
+                     "coulomb crack law: tangential stiffness k_t while the faces stick"),
+  };
+  return list;
+}
+
 std::unique_ptr<CrackLaw> create_coulomb_law(const ContactParameters& params) {
-  return std::make_unique<CoulombLaw>(create_normal_law(params), params.mu, params.tangential_k);
+  return std::make_unique<CoulombLaw>(create_normal_law(params), params.mu, params.coulomb_kt);
 }
 
 }  // namespace vibrotherm::contact

@@ -1,6 +1,7 @@
 // Schoenberg's linear slip interface: N = k_n a and T = k_t b for both signs of
 // a (the faces are glued by springs). In full-jump terms the interface
 // stiffnesses per unit area are K_n = k_n/2 and K_t = k_t/2.
+#include <limits>
 #include "vibrotherm/contact/crack_law.hpp"
 
 namespace vibrotherm::contact {
@@ -25,6 +26,7 @@ class LinearSlipLaw final : public CrackLaw {
   double slip_offset(std::size_t) const override { return 0.0; }
   CellStiffness stiffness(std::size_t, double) const override { return {kn_, kt_}; }
   bool can_dissipate() const override { return false; }
+  double friction_bound() const override { return std::numeric_limits<double>::infinity(); }
   bool has_contact() const override { return true; }
 
  private:
@@ -34,9 +36,19 @@ class LinearSlipLaw final : public CrackLaw {
 
 }  // namespace
 
+const ContactParameterList& linear_slip_law_parameters() {
+  using P = ContactParameters;
+  static const ContactParameterList list = {
+      real_parameter("-crack_linear_kn", &P::linear_kn, "1e14", Range::positive(), "Pa/m",
+                     "linear crack law: normal stiffness k_n in N = k_n a"),
+      real_parameter("-crack_linear_kt", &P::linear_kt, "1e14", Range::positive(), "Pa/m",
+                     "linear crack law: tangential stiffness k_t in T = k_t b"),
+  };
+  return list;
+}
+
 std::unique_ptr<CrackLaw> create_linear_slip_law(const ContactParameters& params) {
-  if (!(params.normal_k > 0.0)) throw InputError("-contact_normal_k must be > 0 for the linear crack law");
-  return std::make_unique<LinearSlipLaw>(params.normal_k, params.tangential_k);
+  return std::make_unique<LinearSlipLaw>(params.linear_kn, params.linear_kt);
 }
 
 }  // namespace vibrotherm::contact

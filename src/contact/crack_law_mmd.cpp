@@ -28,6 +28,7 @@ class MmdLaw final : public CrackLaw {
     return {k, k / cfg_.theta};
   }
   bool can_dissipate() const override { return cfg_.mu > 0.0; }
+  double friction_bound() const override { return cfg_.mu; }
   bool has_contact() const override { return true; }
 
   const MemoryDiagram& diagram(std::size_t cell) const { return diagrams_[cell]; }
@@ -39,6 +40,21 @@ class MmdLaw final : public CrackLaw {
 };
 
 }  // namespace
+
+const ContactParameterList& mmd_law_parameters() {
+  using P = ContactParameters;
+  // -material_nu is the simulator's material option: one Poisson ratio for the
+  // elastic waves and for θ. The default matches wave::ElasticMaterial's.
+  static const ContactParameterList list = {
+      real_parameter("-material_nu", &P::nu, "0.33", Range::open(-1.0, 0.5), "",
+                     "mmd crack law: the material's Poisson ratio, for Mindlin's theta = (2 - nu)/(2 (1 - nu))"),
+      real_parameter("-crack_mmd_tol", &P::mmd_rel_tol, "1e-9", Range::open(0.0, 1e-2), "",
+                     "mmd crack law: shortest kept memory-diagram segment, relative to a"),
+      integer_parameter("-crack_mmd_max_breakpoints", &P::mmd_max_breakpoints, "1024", Range::between(3, 1e7),
+                        "mmd crack law: hard bound on the memory-diagram breakpoints per cell"),
+  };
+  return list;
+}
 
 std::unique_ptr<CrackLaw> create_mmd_law(const ContactParameters& params) {
   const MmdConfig cfg{params.mu, params.theta(), params.mmd_rel_tol,

@@ -1,4 +1,5 @@
 // Open crack: the faces never touch, tractions are zero.
+#include <limits>
 #include "vibrotherm/contact/crack_law.hpp"
 
 namespace vibrotherm::contact {
@@ -18,6 +19,7 @@ class OpenLaw final : public CrackLaw {
   double slip_offset(std::size_t cell) const override { return b_[cell]; }
   CellStiffness stiffness(std::size_t, double) const override { return {}; }
   bool can_dissipate() const override { return false; }
+  double friction_bound() const override { return std::numeric_limits<double>::infinity(); }
   bool has_contact() const override { return false; }
 
  private:

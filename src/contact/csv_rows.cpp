@@ -2,37 +2,78 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <fstream>
-#include <sstream>
 
-#include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/contact/parameter_spec.hpp"
 
 namespace vibrotherm::contact {
+namespace {
 
-std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option, std::size_t columns,
-                                  const std::string& header_hint) {
-  const std::string where = option + " " + path;
-  std::ifstream in(path);
-  if (!in) throw InputError(where + ": cannot open the file");
-  std::vector<CsvRow> rows;
-  std::string text;
-  int line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
-    if (rows.empty() && std::isalpha(static_cast<unsigned char>(text[first]))) continue;  // header
-    std::replace(text.begin(), text.end(), ',', ' ');
-    std::istringstream fields(text);
-    CsvRow row{std::vector<double>(columns), line};
-    bool ok = true;
-    for (double& v : row.values) ok = ok && (fields >> v) && std::isfinite(v);
-    if (!ok)
-      throw InputError(where + " line " + std::to_string(line) + ": expected " + std::to_string(columns) +
-                       " numbers '" + header_hint + "'");
-    rows.push_back(std::move(row));
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::vector<std::string> split_fields(const std::string& text) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    fields.push_back(trimmed(text.substr(start, comma - start)));
+    if (comma == std::string::npos) return fields;
+    start = comma + 1;
   }
+}
+
+bool same_name(const std::string& a, const std::string& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+bool is_header(const std::vector<std::string>& fields, const std::vector<std::string>& columns) {
+  return fields.size() == columns.size() && std::equal(fields.begin(), fields.end(), columns.begin(), same_name);
+}
+
+std::string joined(const std::vector<std::string>& columns) {
+  std::string text;
+  for (const std::string& c : columns) text += (text.empty() ? "" : ",") + c;
+  return text;
+}
+
+/// The numbers of one data row; InputError prefixed with `where` (file and line).
+std::vector<double> parse_row(const std::vector<std::string>& fields, const std::vector<std::string>& columns,
+                              const std::string& where) {
+  if (fields.size() != columns.size())
+    throw InputError(where + ": expected " + std::to_string(columns.size()) + " fields " + joined(columns) + ", got " +
+                     std::to_string(fields.size()) + (fields.size() > columns.size() ? " (a decimal comma?)" : ""));
+  std::vector<double> values;
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    values.push_back(parse_real(fields[i], where + ": field " + std::to_string(i + 1) + " (" + columns[i] + ")"));
+  return values;
+}
+
+}  // namespace
+
+std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option,
+                                  const std::vector<std::string>& columns) {
+  const std::string file = option + " " + path;
+  std::ifstream in(path);
+  if (!in) throw InputError(file + ": cannot open the file");
+  std::vector<CsvRow> rows;
+  bool first = true;  // the first non-comment line may be the header
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    if (line == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
+    const std::string content = trimmed(text);
+    if (content.empty() || content[0] == '#') continue;
+    const std::vector<std::string> fields = split_fields(content);
+    const bool header = first && is_header(fields, columns);
+    first = false;
+    if (!header) rows.push_back({parse_row(fields, columns, file + " line " + std::to_string(line)), line});
+  }
+  if (in.bad()) throw InputError(file + ": read error");
   return rows;
 }
 

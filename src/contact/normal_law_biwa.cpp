@@ -9,18 +9,29 @@
 
 namespace vibrotherm::contact {
 
+const ContactParameterList& biwa_law_parameters() {
+  using P = ContactParameters;
+  // Default: K = 1e14 Pa/m at N = 1 MPa with m = 1/2 (PHYSICS.md §3.2). The
+  // unit of C_B depends on m: a C_B for another m is a new calibration. m <= 0.9
+  // keeps the exponent of N(a) within the power law's p <= 10.
+  static const ContactParameterList list = {
+      real_parameter("-contact_biwa_C", &P::biwa_C, "1e11", Range::positive(), "Pa^(1-m)/m",
+                     "biwa law: C_B in K = C_B N^m"),
+      real_parameter("-contact_biwa_m", &P::biwa_m, "0.5", Range{0.0, 0.9, true, false}, "",
+                     "biwa law: exponent m in K = C_B N^m"),
+  };
+  return list;
+}
+
 std::unique_ptr<NormalLaw> create_biwa_law(const ContactParameters& params) {
-  // Default C_B: K = 1e14 Pa/m at N = 1 MPa with m = 1/2 (PHYSICS.md §3.2).
-  const double CB = params.normal_C < 0.0 ? 1e14 / std::pow(1e6, params.normal_m) : params.normal_C;
-  const double m = params.normal_m;
-  if (!(m > 0.0 && m < 1.0)) {
+  const double m = params.biwa_m, r = 1.0 / (1.0 - m);
+  const double K0 = std::pow(2.0 * (1.0 - m) * params.biwa_C, r);
+  if (!(K0 < HUGE_VAL)) {
     std::ostringstream msg;
-    msg << "-contact_normal_m must be in (0, 1) for the biwa law, got " << m;
+    msg << "-contact_biwa_C " << params.biwa_C << " with -contact_biwa_m " << m << " overflows N = K0 a^(1/(1-m))";
     throw InputError(msg.str());
   }
-  if (!(CB > 0.0) || !std::isfinite(CB)) throw InputError("-contact_normal_C must be > 0 for the biwa law");
-  const double r = 1.0 / (1.0 - m);
-  return make_power_law(std::pow(2.0 * (1.0 - m) * CB, r), r, "biwa");
+  return make_power_law(K0, r, "biwa");
 }
 
 }  // namespace vibrotherm::contact

@@ -1,6 +1,4 @@
 // Linear law N = k a (a > 0): a flat contact; all stiffness sits at first touch.
-#include <cmath>
-
 #include "vibrotherm/contact/normal_law_registry.hpp"
 
 namespace vibrotherm::contact {
@@ -22,10 +20,16 @@ class LinearLaw final : public NormalLaw {
 
 }  // namespace
 
+const ContactParameterList& linear_law_parameters() {
+  static const ContactParameterList list = {
+      real_parameter("-contact_linear_k", &ContactParameters::linear_k, "1e14", Range::positive(), "Pa/m",
+                     "linear normal law: k in N = k a"),
+  };
+  return list;
+}
+
 std::unique_ptr<NormalLaw> create_linear_law(const ContactParameters& params) {
-  if (!(params.normal_k > 0.0) || !std::isfinite(params.normal_k))
-    throw InputError("-contact_normal_k must be > 0 for the linear law");
-  return std::make_unique<LinearLaw>(params.normal_k);
+  return std::make_unique<LinearLaw>(params.linear_k);
 }
 
 }  // namespace vibrotherm::contact

@@ -1,6 +1,5 @@
 // Power law N = C a^p (p >= 1). Hertz contact of a sphere: p = 3/2.
 #include <cmath>
-#include <sstream>
 
 #include "vibrotherm/contact/normal_law_registry.hpp"
 
@@ -44,16 +43,22 @@ std::unique_ptr<NormalLaw> make_power_law(double C, double p, std::string name) 
   return std::make_unique<PowerLaw>(C, p, std::move(name));
 }
 
+const ContactParameterList& power_law_parameters() {
+  using P = ContactParameters;
+  // Default C: N(10 nm) = 1 MPa with the Hertz exponent, the order of Al-Al
+  // contacts. p >= 1 keeps the law convex; beyond 10, a^p underflows for
+  // approaches of nanometres.
+  static const ContactParameterList list = {
+      real_parameter("-contact_power_C", &P::power_C, "1e18", Range::positive(), "Pa/m^p",
+                     "power law: C in N = C a^p"),
+      real_parameter("-contact_power_p", &P::power_p, "1.5", Range::between(1.0, 10.0), "",
+                     "power law: exponent p in N = C a^p (Hertz: 3/2)"),
+  };
+  return list;
+}
+
 std::unique_ptr<NormalLaw> create_power_law(const ContactParameters& params) {
-  // Default C: N(10 nm) = 1 MPa with the Hertz exponent, the order of Al-Al contacts.
-  const double C = params.normal_C < 0.0 ? 1e18 : params.normal_C;
-  if (!(C > 0.0) || !std::isfinite(C)) throw InputError("-contact_normal_C must be > 0 for the power law");
-  if (!(params.normal_p >= 1.0) || !std::isfinite(params.normal_p)) {
-    std::ostringstream msg;
-    msg << "-contact_normal_p must be >= 1 (a convex law), got " << params.normal_p;
-    throw InputError(msg.str());
-  }
-  return make_power_law(C, params.normal_p, "power");
+  return make_power_law(params.power_C, params.power_p, "power");
 }
 
 }  // namespace vibrotherm::contact

@@ -5,10 +5,11 @@ namespace vibrotherm::contact {
 
 const std::vector<NormalLawEntry>& normal_laws() {
   static const std::vector<NormalLawEntry> table = {
-      {"power", "N = C a^p (Hertz: p = 3/2)", create_power_law},
-      {"biwa", "interface stiffness K = C_B N^m (Biwa 2004)", create_biwa_law},
-      {"linear", "N = k a", create_linear_law},
-      {"table", "monotone convex C1 interpolation of (a, N) pairs from a CSV file", create_table_law},
+      {"power", "N = C a^p (Hertz: p = 3/2)", create_power_law, power_law_parameters},
+      {"biwa", "interface stiffness K = C_B N^m (Biwa 2004)", create_biwa_law, biwa_law_parameters},
+      {"linear", "N = k a", create_linear_law, linear_law_parameters},
+      {"table", "monotone convex C1 interpolation of (a, N) pairs from a CSV file", create_table_law,
+       table_law_parameters},
   };
   return table;
 }

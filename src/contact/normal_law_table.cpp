@@ -48,9 +48,9 @@ struct Row {
 };
 
 std::vector<Row> read_rows(const std::string& file) {
-  const std::string opt = "-contact_normal_table " + file;
+  const std::string opt = "-contact_table_file " + file;
   std::vector<Row> rows;
-  for (const CsvRow& r : read_csv_rows(file, "-contact_normal_table", 2, "a,N")) {
+  for (const CsvRow& r : read_csv_rows(file, "-contact_table_file", {"a", "N"})) {
     if (r.values[1] < 0.0) throw InputError(opt + " line " + std::to_string(r.line) + ": N must be >= 0");
     rows.push_back({r.values[0], r.values[1], r.line});
   }
@@ -90,10 +90,18 @@ void append_interval(std::vector<Piece>& pieces, double& M, const Row& p, const 
 
 }  // namespace
 
+const ContactParameterList& table_law_parameters() {
+  static const ContactParameterList list = {
+      text_parameter("-contact_table_file", &ContactParameters::table_file,
+                     "table law: CSV file with columns a,N (a [m], N [Pa])"),
+  };
+  return list;
+}
+
 std::unique_ptr<NormalLaw> create_table_law(const ContactParameters& params) {
-  if (params.normal_table.empty()) throw InputError("-contact_normal_table: a file is required for the table law");
-  const std::vector<Row> rows = read_rows(params.normal_table);
-  const std::string opt = "-contact_normal_table " + params.normal_table;
+  if (params.table_file.empty()) throw InputError("-contact_table_file: a file is required for the table law");
+  const std::vector<Row> rows = read_rows(params.table_file);
+  const std::string opt = "-contact_table_file " + params.table_file;
   const std::size_t n = rows.size() - 1;  // intervals
   std::vector<double> delta(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -13,7 +13,6 @@ PetscErrorCode Recorder::Open(const DriverOptions& options, const std::string& d
   PetscFunctionBeginUser;
   options_ = &options;
   summary_ = summary;
-  dir_ = dir;
   crack_ = crack;
   crack_probe_xy_ = crack_probe_xy;
   MPI_Comm comm = PetscObjectComm((PetscObject)probe_space.dm());
@@ -31,69 +30,47 @@ PetscErrorCode Recorder::Open(const DriverOptions& options, const std::string& d
       PetscCall(crack_->NearestCell(options.crack_probe_crack - 1, s, &cell));
       crack_probe_cells_.push_back(cell);
     }
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(comm, &rank));
-    if (rank == 0 && options.crack_state_every > 0) {
-      VibrothermCallCpp(PETSC_COMM_SELF, crack_state_ = std::make_unique<io::AtomicFile>(dir + "/crack_state.csv"));
-      crack_state_->stream() << "t,crack,xi,x,y,a,b,N,T,state,power,W\n";
-    }
+    if (options.crack_state_every > 0) PetscCall(crack_state_.Open(comm, dir + "/crack_state.csv"));
   }
-  if (!options.output_times.empty()) PetscCall(fields_.Open(comm, dir + "/fields.h5"));
+  if (!options.output_times.empty()) PetscCall(fields_.Open(comm, dir + "/fields.h5", io::XdmfLayout::kSeriesPerGrid));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Recorder::RecordCrack(const wave::WaveSolver& w) {
   PetscFunctionBeginUser;
   if (!crack_) PetscFunctionReturn(0);
+  MPI_Comm comm = PetscObjectComm((PetscObject)w.space().dm());
   if (!crack_probe_cells_.empty() && w.steps() % options_->probe_every == 0) {
+    std::vector<PetscInt> mine;
+    std::vector<long> slots;
+    for (std::size_t p = 0; p < crack_probe_cells_.size(); ++p)
+      if (crack_probe_cells_[p] >= 0) mine.push_back(crack_probe_cells_[p]), slots.push_back(static_cast<long>(p));
     Vec u, v;
-    std::vector<double> rows;
+    std::vector<interface::CrackCellRecord> records, all;
     PetscCall(w.GetFields(&u, &v));
-    PetscCall(crack_->Rows(crack_probe_cells_, u, &rows));
+    PetscCall(crack_->Records(mine, u, &records));
     PetscCall(w.RestoreFields(&u, &v));
-    const int K = interface::CrackInterface::kRowValues;
-    for (std::size_t p = 0; p < crack_probe_cells_.size() && !rows.empty(); ++p) {
-      const double* r = &rows[K * p];
-      probes_.RecordCrack(w.time(), probes_.count() + p, r[0], r[1], r[10], r[11], r + 2);
-    }
+    for (std::size_t k = 0; k < records.size(); ++k) records[k].slot = slots[k];
+    PetscCall(interface::GatherCrackRecords(comm, records, &all));
+    for (const interface::CrackCellRecord& r : all)
+      probes_.RecordCrack(w.time(), probes_.count() + static_cast<std::size_t>(r.slot), r);
   }
   if (options_->crack_state_every > 0 && w.steps() % options_->crack_state_every == 0) {
-    std::vector<double> table;
-    PetscCall(crack_->GatherState(&table));
-    static const char* states[] = {"loss", "slide", "partial", "stick"};
-    if (crack_state_)
-      for (std::size_t k = 0; k + 11 <= table.size(); k += 11) {
-        std::ostream& out = crack_state_->stream();
-        out << w.time();
-        for (int j = 0; j < 8; ++j) out << ',' << table[k + j];
-        out << ',' << states[static_cast<int>(table[k + 8])] << ',' << table[k + 9] << ',' << table[k + 10] << '\n';
-      }
+    std::vector<PetscInt> every(crack_->cells().size());
+    for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<PetscInt>(i);
+    std::vector<interface::CrackCellRecord> records, all;
+    PetscCall(crack_->Records(every, nullptr, &records));
+    PetscCall(interface::GatherCrackRecords(comm, records, &all));
+    crack_state_.Record(w.time(), all);
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Recorder::WaveEnergy(const wave::WaveSolver& w, io::EnergyRow* row) const {
-  PetscFunctionBeginUser;
-  wave::WaveEnergy e;
-  PetscCall(w.Energy(&e));
-  row->t = w.time();
-  row->work_source = e.work_source;
-  row->kinetic = e.kinetic;
-  row->strain = e.strain;
-  row->radiated = e.radiated;
-  row->integrator_correction = e.integrator;
-  row->interface_stored = e.interface_stored;
-  row->dissipated = e.dissipated;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode Recorder::RecordEnergy(io::EnergyRow row, const heat::HeatSolver* heat) {
+PetscErrorCode Recorder::RecordEnergy(io::EnergyRow row, const HeatComponent* heat) {
   PetscFunctionBeginUser;
   if (heat) {
-    row.t = heat->time();
-    row.heat_deposited = heat->deposited();
-    row.heat_boundary_loss = heat->boundary_loss();
-    PetscCall(heat->HeatContent(&row.heat_content));
+    row.t = heat->solver().time();
+    PetscCall(heat->Energy(&row));
   }
   PetscCall(energy_.Record(row, nullptr));
   PetscFunctionReturn(0);
@@ -109,11 +86,11 @@ PetscErrorCode Recorder::OnWaveStep(const wave::WaveSolver& w, bool energy_rows)
   }
   if (energy_rows && w.steps() % options_->energy_every == 0) {
     io::EnergyRow row;
-    PetscCall(WaveEnergy(w, &row));
+    PetscCall(WaveEnergyRow(w, &row));
     PetscCall(RecordEnergy(row, nullptr));
   }
   PetscCall(RecordCrack(w));
-  progress_.Update(w.time(), w.steps());
+  PetscCall(progress_.Update(w.time(), w.steps()));
   PetscFunctionReturn(0);
 }
 
@@ -146,15 +123,19 @@ bool Recorder::OutputDue(double t) const {
   return next_output_ < options_->output_times.size() && t >= options_->output_times[next_output_] * (1 - 1e-12);
 }
 
-PetscErrorCode Recorder::WriteFields(double t, const wave::WaveSolver* w, const heat::HeatSolver* heat) {
+PetscErrorCode Recorder::WriteFields(double t, WaveComponent* waves, const HeatComponent* heat_component) {
   PetscFunctionBeginUser;
   const int k = outputs_written_;
+  const heat::HeatSolver* heat = heat_component ? &heat_component->solver() : nullptr;
+  const wave::WaveSolver* w = waves ? &waves->solver() : nullptr;
   if (heat) {
-    if (!heat_meshes_added_) PetscCall(fields_.AddMesh("heat", heat->space()));
-    heat_meshes_added_ = true;
+    if (!fields_.has_grid("heat")) PetscCall(fields_.AddMesh("heat", heat->space()));
     Vec T;
     PetscCall(heat->Temperature(&T));
-    PetscCall(fields_.WriteField("heat", "temperature", T, k, t));
+    PetscCall(fields_.WriteField("heat", "temperature", "K", T, k, t));
+    // The rise is what changes (µK on T0 ≈ 293 K): a colour bar of T reads T0 at every tick.
+    PetscCall(VecShift(T, -heat->material().T0));
+    PetscCall(fields_.WriteField("heat", "temperature_rise", "K", T, k, t));
     PetscCall(VecDestroy(&T));
     std::map<int, double> rises;
     for (std::size_t p = 0; p < bracket_.T1.size(); ++p)
@@ -162,24 +143,51 @@ PetscErrorCode Recorder::WriteFields(double t, const wave::WaveSolver* w, const 
     summary_->output_temperature_rise.push_back({t, rises});
   }
   if (w) {
-    if (!wave_mesh_added_) PetscCall(fields_.AddMesh("wave", w->space()));
-    wave_mesh_added_ = true;
+    if (!fields_.has_grid("wave")) PetscCall(fields_.AddMesh("wave", w->space()));
     Vec u, v;
     PetscCall(w->GetFields(&u, &v));
-    PetscCall(fields_.WriteField("wave", "displacement", u, k, t));
-    PetscCall(fields_.WriteField("wave", "velocity", v, k, t));
+    PetscCall(fields_.WriteField("wave", "displacement", "m", u, k, t));
+    PetscCall(fields_.WriteField("wave", "velocity", "m/s", v, k, t));
     PetscCall(w->RestoreFields(&u, &v));
-    if (crack_) {
-      std::vector<std::pair<PetscInt, double>> states;
-      for (std::size_t i = 0; i < crack_->cells().size(); ++i) {
-        states.push_back({crack_->cells()[i].plus, crack_->state_code(i)});
-        states.push_back({crack_->cells()[i].minus, crack_->state_code(i)});
-      }
-      PetscCall(fields_.WriteVertexValues("wave", "contact_state", states, -1.0, k, t));
-    }
+    if (crack_) PetscCall(WriteCrackFields(k, t));
   }
   ++outputs_written_;
   while (OutputDue(t)) ++next_output_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Recorder::WriteCrackFields(int k, double t) {
+  PetscFunctionBeginUser;
+  const std::vector<interface::ContactCell>& cells = crack_->cells();
+  if (!fields_.has_grid("cracks")) {
+    // Each contact cell (a ± node pair) drawn as its tributary length along the crack.
+    std::vector<double> ends;
+    for (const interface::ContactCell& c : cells) {
+      const double h = c.weight / 2;
+      ends.insert(ends.end(), {c.x - h * c.s[0], c.y - h * c.s[1], c.x + h * c.s[0], c.y + h * c.s[1]});
+    }
+    PetscCall(fields_.AddSegments("cracks", ends));
+  }
+  std::vector<PetscInt> owned(cells.size());
+  for (std::size_t i = 0; i < owned.size(); ++i) owned[i] = static_cast<PetscInt>(i);
+  std::vector<interface::CrackCellRecord> records;
+  PetscCall(crack_->Records(owned, nullptr, &records));
+  std::vector<double> state, power, dissipated;
+  std::vector<std::pair<PetscInt, double>> nodal;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    state.push_back(static_cast<double>(static_cast<int>(records[i].state)));
+    power.push_back(records[i].power);
+    dissipated.push_back(records[i].W);
+    nodal.push_back({cells[i].plus, state.back()});
+    nodal.push_back({cells[i].minus, state.back()});
+  }
+  // contact_state: 0 loss, 1 slide, 2 partial, 3 stick (contact::ContactState). The
+  // wave-grid copy is a nodal code (−1 off the crack) ParaView interpolates between
+  // nodes into states that never were; the cell field on "cracks" is the one to read.
+  PetscCall(fields_.WriteCellValues("cracks", "contact_state", "1", state, k, t));
+  PetscCall(fields_.WriteCellValues("cracks", "friction_power", "W/m^2", power, k, t));
+  PetscCall(fields_.WriteCellValues("cracks", "dissipated_energy", "J/m^2", dissipated, k, t));
+  PetscCall(fields_.WriteVertexValues("wave", "contact_state", "1", nodal, -1.0, k, t));
   PetscFunctionReturn(0);
 }
 
@@ -187,7 +195,7 @@ PetscErrorCode Recorder::Finish(io::RunSummary* summary) {
   PetscFunctionBeginUser;
   PetscCall(probes_.Finish());
   PetscCall(energy_.Finish());
-  if (crack_state_) VibrothermCallCpp(PETSC_COMM_SELF, crack_state_->commit());
+  PetscCall(crack_state_.Finish());
   PetscCall(fields_.Finish());
   summary->max_budget_error = energy_.max_budget_error();
   PetscFunctionReturn(0);

@@ -1,14 +1,19 @@
-// What a run writes while it steps: probes.csv, energy.csv, crack_state.csv,
-// fields.h5/.xmf, the progress line and the temperature extremes for the
-// summary. Owned by the driver; knows the solvers only through their getters.
+// What a run writes while it steps, and when: probes.csv, energy.csv,
+// crack_state.csv, fields.h5 (+ fields_<grid>.xmf), the progress line and the temperature
+// extremes for the summary. The recording schedule (-probe_every,
+// -energy_every, -crack_state_every, -output_times) lives here; the solvers are
+// read only through their getters and the crack interface's records.
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "vibrotherm/coupling/driver_options.hpp"
+#include "vibrotherm/coupling/heat_component.hpp"
+#include "vibrotherm/coupling/wave_component.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/io/crack_state_log.hpp"
 #include "vibrotherm/io/energy_log.hpp"
 #include "vibrotherm/io/field_output.hpp"
 #include "vibrotherm/io/point_probes.hpp"
@@ -28,10 +33,8 @@ class Recorder {
                       io::RunSummary* summary);
   /// After every accepted wave step: probe rows (held), energy rows (without heat), crack state.
   PetscErrorCode OnWaveStep(const wave::WaveSolver& w, bool energy_rows);
-  /// Energy columns of the wave solver now (collective).
-  PetscErrorCode WaveEnergy(const wave::WaveSolver& w, io::EnergyRow* row) const;
   /// Appends an energy row: the wave columns of `wave_row`, the heat columns of heat (if any).
-  PetscErrorCode RecordEnergy(io::EnergyRow row, const heat::HeatSolver* heat);
+  PetscErrorCode RecordEnergy(io::EnergyRow row, const HeatComponent* heat);
   /// Temperatures at every probe at the heat solver's time (collective); writes
   /// the held wave rows with temperatures interpolated from the last call.
   PetscErrorCode RecordTemperature(const heat::HeatSolver& heat, bool waves_running);
@@ -39,31 +42,35 @@ class Recorder {
   void FlushProbes() { probes_.Flush(nullptr); }
   /// Fields at output times: whether output k is due at time t.
   bool OutputDue(double t) const;
-  PetscErrorCode WriteFields(double t, const wave::WaveSolver* w, const heat::HeatSolver* heat);
-  /// The waves (and the crack interface) are gone: no more wave or crack rows.
-  void DetachWaves() { crack_ = nullptr; }
+  PetscErrorCode WriteFields(double t, WaveComponent* waves, const HeatComponent* heat);
+  /// The waves (and the crack interface) are gone; `last` holds their final energy columns.
+  void StopWaves(const io::EnergyRow& last) {
+    crack_ = nullptr;
+    waves_at_stop_ = last;
+  }
+  const io::EnergyRow& waves_at_stop() const { return waves_at_stop_; }
   PetscErrorCode Finish(io::RunSummary* summary);
   io::Progress& progress() { return progress_; }
-  double max_budget_error() const { return energy_.max_budget_error(); }
 
  private:
   PetscErrorCode RecordCrack(const wave::WaveSolver& w);
+  /// The "cracks" grid's cell fields (contact_state, friction power, dissipated energy) at output k.
+  PetscErrorCode WriteCrackFields(int k, double t);
 
   const DriverOptions* options_ = nullptr;
   io::RunSummary* summary_ = nullptr;
   io::PointProbes probes_;
   io::EnergyLog energy_;
+  io::CrackStateLog crack_state_;
   io::Progress progress_;
   io::FieldFile fields_;
-  std::string dir_;
   interface::CrackInterface* crack_ = nullptr;
-  std::vector<PetscInt> crack_probe_cells_;      ///< owned cell per crack probe (-1 elsewhere)
+  std::vector<PetscInt> crack_probe_cells_;  ///< owned cell per crack probe (-1 elsewhere)
   std::vector<double> crack_probe_xy_;
-  std::unique_ptr<io::AtomicFile> crack_state_;  ///< rank 0
-  io::TemperatureBracket bracket_;               ///< probe temperatures at the last two heat times
+  io::TemperatureBracket bracket_;  ///< probe temperatures at the last two heat times
+  io::EnergyRow waves_at_stop_;
   std::size_t next_output_ = 0;
   int outputs_written_ = 0;
-  bool heat_meshes_added_ = false, wave_mesh_added_ = false;
 };
 
 }  // namespace vibrotherm::coupling

@@ -217,4 +217,16 @@ PetscErrorCode LagrangeSpace::BasisAt(const std::array<double, 2>& ref, std::vec
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode LagrangeSpace::BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
+                                                    std::vector<double>* dphi) const {
+  PetscFunctionBeginUser;
+  PetscTabulation T;
+  const PetscReal point[2] = {ref[0], ref[1]};
+  PetscCall(PetscFECreateTabulation(fe_, 1, 1, point, 1, &T));
+  phi->assign(T->T[0], T->T[0] + nodes_);
+  dphi->assign(T->T[1], T->T[1] + 2 * nodes_);
+  PetscCall(PetscTabulationDestroy(&T));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::fe

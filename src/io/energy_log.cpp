@@ -13,7 +13,7 @@ PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path) {
   if (rank == 0) {
     VibrothermCallCpp(PETSC_COMM_SELF, file_ = std::make_unique<AtomicFile>(path));
     file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
-                       "heat_content,heat_boundary_loss,budget_error,integrator_correction\n";
+                       "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic\n";
   }
   PetscFunctionReturn(0);
 }
@@ -29,7 +29,8 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
   if (file_)
     file_->stream() << r.t << ',' << r.work_source << ',' << r.kinetic << ',' << r.strain << ',' << r.radiated << ','
                     << r.interface_stored << ',' << r.dissipated << ',' << r.heat_deposited << ',' << r.heat_content
-                    << ',' << r.heat_boundary_loss << ',' << error << ',' << r.integrator_correction << '\n';
+                    << ',' << r.heat_boundary_loss << ',' << error << ',' << r.integrator_correction << ',' << r.heat_friction << ','
+                    << r.heat_thermoelastic << '\n';
   PetscFunctionReturn(0);
 }
 

@@ -6,70 +6,100 @@
 #include <filesystem>
 
 #include "vibrotherm/io/atomic_file.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::io {
 
 FieldFile::~FieldFile() { (void)PetscViewerDestroy(&viewer_); }
 
-PetscErrorCode FieldFile::Open(MPI_Comm comm, const std::string& h5_path) {
+PetscErrorCode FieldFile::Open(MPI_Comm comm, const std::string& h5_path, XdmfLayout layout,
+                               const std::string& axis) {
   PetscFunctionBeginUser;
   comm_ = comm;
   path_ = h5_path;
+  layout_ = layout;
+  axis_ = axis;
   PetscCall(PetscViewerHDF5Open(comm, AtomicFile::partial_name(h5_path).c_str(), FILE_MODE_WRITE, &viewer_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::AddMesh(const std::string& name, DM dm) {
+  PetscFunctionBeginUser;
+  PlexVertices vertices;
+  PetscCall(OwnedVertices(dm, &vertices));
+  std::vector<PetscInt> cells;
+  PetscInt corners;
+  PetscCall(OwnedBulkCells(dm, &cells, &corners));
+  Grid g;
+  g.dm = dm;
+  g.numbering = vertices.numbering;
+  g.points = name;
+  g.owned_vertices = static_cast<PetscInt>(vertices.rows.size());
+  g.xdmf.vertices = vertices.global;
+  g.xdmf.topology_type = corners == 3 ? "Triangle" : "Quadrilateral";
+  PetscCall(AddGrid(name, g, corners, cells));
+  PetscCall(Write({name, "geometry", "m", 2, false}, vertices.rows, vertices.xy, -1, 0.0));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FieldFile::AddMesh(const std::string& name, const fe::LagrangeSpace& space) {
   PetscFunctionBeginUser;
-  DM dm = space.dm();
-  Mesh m;
-  m.space = &space;
-  PetscCall(DMPlexGetVertexNumbering(dm, &m.numbering));
-  PetscInt vStart, vEnd;
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  const PetscInt* number;
-  PetscCall(ISGetIndices(m.numbering, &number));
-  std::vector<PetscInt> rows;
-  std::vector<double> xy;
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    if (number[v - vStart] < 0) continue;  // owned by another rank
-    rows.push_back(number[v - vStart]);
-    const auto p = x(v);
-    xy.insert(xy.end(), {p[0], p[1]});
-  }
-  m.owned = static_cast<PetscInt>(rows.size());
-  PetscCallMPI(MPI_Allreduce(&m.owned, &m.vertices, 1, MPIU_INT, MPI_SUM, comm_));
-  // Topology: owned bulk cells, vertices in closure order, as global numbers.
-  std::vector<bool> ghost;
-  PetscCall(mesh::GhostPoints(dm, &ghost));
-  PetscInt chart0;
-  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  std::vector<PetscInt> cells;
-  PetscInt corners = 0;
-  for (PetscInt c : space.cells()) {
-    if (ghost[c - chart0]) continue;
-    PetscInt n, *closure = nullptr, k = 0;
-    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscInt p = closure[2 * i];
-      if (p < vStart || p >= vEnd) continue;
-      const PetscInt g = number[p - vStart];
-      cells.push_back(g >= 0 ? g : -(g + 1));
-      ++k;
-    }
-    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
-    corners = k;
-  }
-  PetscCall(ISRestoreIndices(m.numbering, &number));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &corners, 1, MPIU_INT, MPI_MAX, comm_));
-  m.corners = corners;
-  const PetscInt local_cells = corners > 0 ? static_cast<PetscInt>(cells.size()) / corners : 0;
-  PetscCallMPI(MPI_Allreduce(&local_cells, &m.cells, 1, MPIU_INT, MPI_SUM, comm_));
-  meshes_[name] = m;
+  PetscCall(AddMesh(name, space.dm()));
+  grids_.at(name).space = &space;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::AddCohesiveCells(const std::string& name, const std::string& mesh) {
+  PetscFunctionBeginUser;
+  const Grid& m = grids_.at(mesh);
+  std::vector<PetscInt> segments;
+  PetscCall(OwnedCohesiveSegments(m.dm, &segments));
+  PetscInt count = static_cast<PetscInt>(segments.size());
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPIU_INT, MPI_SUM, comm_));
+  if (count == 0) PetscFunctionReturn(0);  // an unsplit mesh
+  Grid g;
+  g.dm = m.dm;
+  g.numbering = m.numbering;
+  g.points = mesh;  // lines on the mesh's own vertices: no geometry of its own
+  g.xdmf.vertices = m.xdmf.vertices;
+  g.xdmf.topology_type = "Polyline";
+  PetscCall(AddGrid(name, g, 2, segments));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::AddSegments(const std::string& name, const std::vector<double>& ends) {
+  PetscFunctionBeginUser;
+  const PetscInt points = static_cast<PetscInt>(ends.size() / 2);
+  PetscInt first = 0;
+  PetscCallMPI(MPI_Exscan(&points, &first, 1, MPIU_INT, MPI_SUM, comm_));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  if (rank == 0) first = 0;  // MPI_Exscan leaves rank 0's result undefined
+  std::vector<PetscInt> rows(points);
+  for (PetscInt i = 0; i < points; ++i) rows[i] = first + i;
+  Grid g;
+  g.points = name;
+  g.owned_vertices = points;
+  PetscCallMPI(MPI_Allreduce(&points, &g.xdmf.vertices, 1, MPIU_INT, MPI_SUM, comm_));
+  g.xdmf.topology_type = "Polyline";
+  PetscCall(AddGrid(name, g, 2, rows));  // segment i joins points 2i and 2i + 1
+  PetscCall(Write({name, "geometry", "m", 2, false}, rows, ends, -1, 0.0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::AddGrid(const std::string& name, Grid g, PetscInt corners,
+                                  const std::vector<PetscInt>& cells) {
+  PetscFunctionBeginUser;
+  PetscCheck(!has_grid(name), comm_, PETSC_ERR_ARG_WRONG, "%s: grid %s added twice", path_.c_str(), name.c_str());
+  g.owned_cells = corners > 0 ? static_cast<PetscInt>(cells.size()) / corners : 0;
+  PetscCallMPI(MPI_Allreduce(&g.owned_cells, &g.xdmf.cells, 1, MPIU_INT, MPI_SUM, comm_));
+  const std::string h5 = std::filesystem::path(path_).filename().string();
+  g.xdmf.name = name;
+  g.xdmf.corners = corners;
+  g.xdmf.topology = h5 + ":/" + name + "/topology";
+  g.xdmf.geometry = h5 + ":/" + g.points + "/geometry";
+  grids_[name] = g;
+  order_.push_back(name);
 
   PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + name).c_str()));
   IS topology;
@@ -79,42 +109,48 @@ PetscErrorCode FieldFile::AddMesh(const std::string& name, const fe::LagrangeSpa
   PetscCall(ISView(topology, viewer_));
   PetscCall(ISDestroy(&topology));
   PetscCall(PetscViewerHDF5PopGroup(viewer_));
-  PetscCall(Write(name, "geometry", 2, rows, xy, -1, 0.0));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldFile::Write(const std::string& mesh, const std::string& field, int components,
-                                const std::vector<PetscInt>& rows, const std::vector<double>& values, int k,
-                                double t) {
+PetscErrorCode FieldFile::Write(const Dataset& d, const std::vector<PetscInt>& rows, const std::vector<double>& values,
+                                int k, double t) {
   PetscFunctionBeginUser;
-  Mesh& m = meshes_.at(mesh);
+  Grid& g = grids_.at(d.grid);
+  const int nc = d.components;
+  const PetscInt owned = d.cell ? g.owned_cells : g.owned_vertices;
+  const PetscInt global = d.cell ? g.xdmf.cells : g.xdmf.vertices;
   Vec out;
-  PetscCall(VecCreateMPI(comm_, m.owned * components, m.vertices * components, &out));
-  PetscCall(VecSetBlockSize(out, components));
+  PetscCall(VecCreateMPI(comm_, owned * nc, global * nc, &out));
+  PetscCall(VecSetBlockSize(out, nc));
   for (std::size_t i = 0; i < rows.size(); ++i)
-    for (int c = 0; c < components; ++c)
-      PetscCall(VecSetValue(out, rows[i] * components + c, values[components * i + c], INSERT_VALUES));
+    for (int c = 0; c < nc; ++c) PetscCall(VecSetValue(out, rows[i] * nc + c, values[nc * i + c], INSERT_VALUES));
   PetscCall(VecAssemblyBegin(out));
   PetscCall(VecAssemblyEnd(out));
-  const std::string name = k < 0 ? field : field + "_" + std::to_string(k);
+  const std::string name = k < 0 ? d.field : d.field + "_" + std::to_string(k);
   PetscCall(PetscObjectSetName((PetscObject)out, name.c_str()));
-  PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + mesh).c_str()));
+  PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + d.grid).c_str()));
   PetscCall(PetscViewerHDF5SetBaseDimension2(viewer_, PETSC_TRUE));  // scalars as N × 1
   PetscCall(VecView(out, viewer_));
+  PetscCall(PetscViewerHDF5WriteObjectAttribute(viewer_, (PetscObject)out, "units", PETSC_STRING, d.units.c_str()));
+  if (k >= 0) PetscCall(PetscViewerHDF5WriteObjectAttribute(viewer_, (PetscObject)out, axis_.c_str(), PETSC_DOUBLE, &t));
   PetscCall(PetscViewerHDF5PopGroup(viewer_));
   PetscCall(VecDestroy(&out));
   if (k >= 0) {
-    m.fields[k].push_back({field, components});
+    const std::string h5 = std::filesystem::path(path_).filename().string();
+    g.outputs[k].push_back({d.field, nc, d.cell, h5 + ":/" + d.grid + "/" + name});
     times_[k] = t;
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldFile::WriteField(const std::string& mesh, const std::string& field, Vec global, int k, double t) {
+PetscErrorCode FieldFile::WriteField(const std::string& grid, const std::string& field, const char* units, Vec global,
+                                     int k, double t) {
   PetscFunctionBeginUser;
-  const Mesh& m = meshes_.at(mesh);
-  DM dm = m.space->dm();
-  const int nc = static_cast<int>(m.space->components());
+  const Grid& g = grids_.at(grid);
+  PetscCheck(g.space, comm_, PETSC_ERR_ARG_WRONG, "grid %s has no space", grid.c_str());
+  DM dm = g.space->dm();
+  const int nc = static_cast<int>(g.space->components());
+  const int written = nc == 1 ? 1 : 3;  // 2D vectors padded with z = 0: ParaView needs 3 components
   Vec local;
   PetscCall(DMGetLocalVector(dm, &local));
   PetscCall(DMGlobalToLocal(dm, global, INSERT_VALUES, local));
@@ -124,7 +160,7 @@ PetscErrorCode FieldFile::WriteField(const std::string& mesh, const std::string&
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   const PetscInt* number;
   const PetscScalar* a;
-  PetscCall(ISGetIndices(m.numbering, &number));
+  PetscCall(ISGetIndices(g.numbering, &number));
   PetscCall(VecGetArrayRead(local, &a));
   std::vector<PetscInt> rows;
   std::vector<double> values;
@@ -134,28 +170,28 @@ PetscErrorCode FieldFile::WriteField(const std::string& mesh, const std::string&
     PetscCall(PetscSectionGetDof(section, v, &dof));
     PetscCall(PetscSectionGetOffset(section, v, &off));
     rows.push_back(number[v - vStart]);
-    for (int c = 0; c < nc; ++c) values.push_back(dof >= nc ? PetscRealPart(a[off + c]) : 0.0);
+    for (int c = 0; c < written; ++c) values.push_back(c < nc && dof >= nc ? PetscRealPart(a[off + c]) : 0.0);
   }
   PetscCall(VecRestoreArrayRead(local, &a));
-  PetscCall(ISRestoreIndices(m.numbering, &number));
+  PetscCall(ISRestoreIndices(g.numbering, &number));
   PetscCall(DMRestoreLocalVector(dm, &local));
-  PetscCall(Write(mesh, field, nc, rows, values, k, t));
+  PetscCall(Write({grid, field, units, written, false}, rows, values, k, t));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldFile::WriteVertexValues(const std::string& mesh, const std::string& field,
+PetscErrorCode FieldFile::WriteVertexValues(const std::string& grid, const std::string& field, const char* units,
                                             const std::vector<std::pair<PetscInt, double>>& pairs, double fill, int k,
                                             double t) {
   PetscFunctionBeginUser;
-  const Mesh& m = meshes_.at(mesh);
+  const Grid& g = grids_.at(grid);
   PetscInt vStart, vEnd;
-  PetscCall(DMPlexGetDepthStratum(m.space->dm(), 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetDepthStratum(g.dm, 0, &vStart, &vEnd));
   std::vector<double> by_vertex(vEnd - vStart, fill);
   // The file holds vertex fields: values at other points (degree-2 edge nodes) are not written.
   for (const auto& [v, value] : pairs)
     if (v >= vStart && v < vEnd) by_vertex[v - vStart] = value;
   const PetscInt* number;
-  PetscCall(ISGetIndices(m.numbering, &number));
+  PetscCall(ISGetIndices(g.numbering, &number));
   std::vector<PetscInt> rows;
   std::vector<double> values;
   for (PetscInt v = vStart; v < vEnd; ++v)
@@ -163,8 +199,26 @@ PetscErrorCode FieldFile::WriteVertexValues(const std::string& mesh, const std::
       rows.push_back(number[v - vStart]);
       values.push_back(by_vertex[v - vStart]);
     }
-  PetscCall(ISRestoreIndices(m.numbering, &number));
-  PetscCall(Write(mesh, field, 1, rows, values, k, t));
+  PetscCall(ISRestoreIndices(g.numbering, &number));
+  PetscCall(Write({grid, field, units, 1, false}, rows, values, k, t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::WriteCellValues(const std::string& grid, const std::string& field, const char* units,
+                                          const std::vector<double>& values, int k, double t) {
+  PetscFunctionBeginUser;
+  const Grid& g = grids_.at(grid);
+  const PetscInt n = static_cast<PetscInt>(values.size());
+  PetscCheck(n == g.owned_cells, comm_, PETSC_ERR_ARG_SIZ, "%s: %" PetscInt_FMT " values for %" PetscInt_FMT " cells",
+             field.c_str(), n, g.owned_cells);
+  PetscInt first = 0;
+  PetscCallMPI(MPI_Exscan(&n, &first, 1, MPIU_INT, MPI_SUM, comm_));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  if (rank == 0) first = 0;
+  std::vector<PetscInt> rows(n);
+  for (PetscInt i = 0; i < n; ++i) rows[i] = first + i;
+  PetscCall(Write({grid, field, units, 1, true}, rows, values, k, t));
   PetscFunctionReturn(0);
 }
 
@@ -175,39 +229,37 @@ PetscErrorCode FieldFile::Finish() {
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  const std::string h5 = std::filesystem::path(path_).filename().string();
-  VibrothermCallCpp(PETSC_COMM_SELF, {
-    AtomicFile::publish(path_);
-    AtomicFile xmf(std::filesystem::path(path_).replace_extension(".xmf").string());
-    std::ostream& out = xmf.stream();
-    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n  <Domain>\n";
-    for (const auto& [name, m] : meshes_) {
-      const char* topology = m.corners == 3 ? "Triangle" : "Quadrilateral";
-      out << "    <Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-      for (const auto& [k, fields] : m.fields) {
-        out << "      <Grid Name=\"" << name << "_" << k << "\" GridType=\"Uniform\">\n"
-            << "        <Time Value=\"" << times_.at(k) << "\"/>\n"
-            << "        <Topology TopologyType=\"" << topology << "\" NumberOfElements=\"" << m.cells << "\">\n"
-            << "          <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << m.cells << " " << m.corners
-            << "\">" << h5 << ":/" << name << "/topology</DataItem>\n"
-            << "        </Topology>\n"
-            << "        <Geometry GeometryType=\"XY\">\n"
-            << "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"" << m.vertices
-            << " 2\">" << h5 << ":/" << name << "/geometry</DataItem>\n"
-            << "        </Geometry>\n";
-        for (const auto& [field, nc] : fields)
-          out << "        <Attribute Name=\"" << field << "\" AttributeType=\"" << (nc == 1 ? "Scalar" : "Vector")
-              << "\" Center=\"Node\">\n"
-              << "          <DataItem Format=\"HDF\" DataType=\"Float\" Precision=\"8\" Dimensions=\"" << m.vertices
-              << " " << nc << "\">" << h5 << ":/" << name << "/" << field << "_" << k << "</DataItem>\n"
-              << "        </Attribute>\n";
-        out << "      </Grid>\n";
-      }
-      out << "    </Grid>\n";
-    }
-    out << "  </Domain>\n</Xdmf>\n";
+  VibrothermCallCpp(PETSC_COMM_SELF, AtomicFile::publish(path_));
+  PetscCall(WriteXdmf());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::WriteXdmf() const {
+  PetscFunctionBeginUser;
+  const std::filesystem::path h5(path_);
+  const std::string stem = (h5.parent_path() / h5.stem()).string();
+  auto series = [&](const Grid& g, const std::string& xmf_path) {
+    std::vector<XdmfStep> steps;
+    for (const auto& [k, attributes] : g.outputs) steps.push_back({times_.at(k), attributes});
+    AtomicFile xmf(xmf_path);
+    WriteXdmfSeries(xmf.stream(), g.xdmf, steps);
     xmf.commit();
-  });
+  };
+  if (layout_ == XdmfLayout::kStaticGrids) {
+    std::vector<XdmfGrid> grids;
+    for (const std::string& name : order_) grids.push_back(grids_.at(name).xdmf);
+    VibrothermCallCpp(PETSC_COMM_SELF, {
+      AtomicFile xmf(stem + ".xmf");
+      WriteXdmfCollection(xmf.stream(), h5.stem().string(), grids);
+      xmf.commit();
+    });
+  } else if (layout_ == XdmfLayout::kSingleSeries) {
+    PetscCheck(order_.size() == 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: one grid expected", path_.c_str());
+    VibrothermCallCpp(PETSC_COMM_SELF, series(grids_.at(order_[0]), stem + ".xmf"));
+  } else {
+    for (const std::string& name : order_)
+      if (!grids_.at(name).outputs.empty()) VibrothermCallCpp(PETSC_COMM_SELF, series(grids_.at(name), stem + "_" + name + ".xmf"));
+  }
   PetscFunctionReturn(0);
 }
 

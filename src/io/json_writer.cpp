@@ -1,5 +1,6 @@
 #include "vibrotherm/io/json_writer.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -64,8 +65,13 @@ JsonWriter& JsonWriter::end_array() {
 
 JsonWriter& JsonWriter::value(const char* key, double v) {
   prefix(key);
-  if (std::isfinite(v)) out_ << v;
-  else out_ << "null";  // JSON has no NaN/Inf
+  if (std::isfinite(v)) {
+    char buf[32];  // shortest text that reads back to the same double (no 0.54256294400000005)
+    const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+    out_.write(buf, r.ptr - buf);
+  } else {
+    out_ << "null";  // JSON has no NaN/Inf
+  }
   return *this;
 }
 

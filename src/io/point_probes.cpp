@@ -73,16 +73,12 @@ PetscErrorCode PointProbes::Record(double t, Vec u, Vec v) {
   PetscFunctionReturn(0);
 }
 
-void PointProbes::RecordCrack(double t, std::size_t probe, double x, double y, double ux, double uy,
-                              const double* c) {
+void PointProbes::RecordCrack(double t, std::size_t probe, const interface::CrackCellRecord& c) {
   if (!file_) return;
-  Row row{t, probe, x, y, ux, uy, NAN, NAN, true, {}};
-  std::copy(c, c + 8, row.c.begin());
-  pending_.push_back(row);
+  pending_.push_back({t, probe, c.x, c.y, c.ux, c.uy, NAN, NAN, true, c});
 }
 
 void PointProbes::Flush(const TemperatureBracket* temperature) {
-  static const char* states[] = {"loss", "slide", "partial", "stick"};
   if (!file_) return;
   std::ostream& out = file_->stream();
   for (const Row& r : pending_) {
@@ -90,9 +86,8 @@ void PointProbes::Flush(const TemperatureBracket* temperature) {
     out << r.t << ',' << r.probe << ',' << r.x << ',' << r.y << ',' << r.ux << ',' << r.uy << ',' << r.vx << ','
         << r.vy << ',' << T;
     if (r.crack) {
-      const int state = static_cast<int>(r.c[5]);
-      out << ',' << r.c[0] << ',' << r.c[1] << ',' << r.c[2] << ',' << r.c[3] << ',' << r.c[4] << ','
-          << (state >= 0 && state < 4 ? states[state] : "?") << ',' << r.c[6] << ',' << r.c[7] << '\n';
+      out << ',' << r.c.a << ',' << r.c.b << ',' << r.c.b0 << ',' << r.c.N << ',' << r.c.T << ','
+          << contact::to_string(r.c.state) << ',' << r.c.power << ',' << r.c.W << '\n';
     } else {
       out << ",nan,nan,nan,nan,nan,,nan,nan\n";
     }

@@ -15,6 +15,10 @@ void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
   json.value("cohesive_cells", static_cast<long long>(m.cohesive_cells));
   json.value("heat_cells", static_cast<long long>(m.heat_cells));
   json.value("heat_vertices", static_cast<long long>(m.heat_vertices));
+  json.value("heat_source", m.heat_source).value("heat_h_min", m.heat_h_min).value("heat_h_max", m.heat_h_max);
+  json.begin_array("heat_cells_per_rank");
+  for (PetscInt n : m.heat_cells_per_rank) json.value(nullptr, static_cast<long long>(n));
+  json.end_array();
   json.value("h_min", m.h_min).value("h_max", m.h_max);
   json.begin_array("cells_per_rank");
   for (PetscInt n : m.cells_per_rank) json.value(nullptr, static_cast<long long>(n));
@@ -32,6 +36,31 @@ void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
   json.end_object();
 }
 
+/// Every option with its value and source, the derived values, and the units of the keys.
+void WriteRecord(JsonWriter& json, const RunSummary& s) {
+  json.begin_object("option_values");
+  for (const OptionRecord& o : s.option_values)
+    json.begin_object(o.name.c_str()).value("value", o.value).value("source", o.source).end_object();
+  json.end_object();
+  json.begin_object("derived");
+  for (const auto& [name, value] : s.derived) json.value(name.c_str(), value);
+  json.end_object();
+  json.begin_object("derived_rules");
+  for (const auto& [name, rule] : s.derived_rules) json.value(name.c_str(), rule);
+  json.end_object();
+  static const std::pair<const char*, const char*> units[] = {
+      {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", "J/m"},
+      {"heat_deposited", "J/m"}, {"heat_content", "J/m"}, {"heat_boundary_loss", "J/m"}, {"wave_energy_left", "J/m"},
+      {"probe_max_temperature_rise", "K"}, {"output_temperature_rise", "K (t in s)"}, {"max_budget_error", "1"},
+      {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
+      {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},
+      {"derived.couple_dt", "s"}, {"derived.heat_dt", "s"}, {"derived.final_time", "s"}, {"modes.frequency", "Hz"},
+      {"field_max_temperature_rise", "K (t in s, x and y in m)"}};
+  json.begin_object("units");
+  for (const auto& [key, unit] : units) json.value(key, std::string(unit));
+  json.end_object();
+}
+
 }  // namespace
 
 PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const RunSummary& s) {
@@ -45,7 +74,8 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       AtomicFile file(path);
       JsonWriter json(file.stream());
       json.begin_object();
-      json.value("version", version());
+      json.value("version", version()).value("git_commit", s.git_commit).value("date", s.date);
+      json.value("host", s.host).value("command_line", s.command_line);
       json.begin_array("physics_ran");
       for (const std::string& p : s.physics_ran) json.value(nullptr, p);
       json.end_array();
@@ -65,6 +95,9 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.end_object();
       json.value("heat_deposited", s.heat_deposited).value("heat_content", s.heat_content);
       json.value("heat_boundary_loss", s.heat_boundary_loss);
+      json.begin_object("heat_deposited_by");
+      for (const auto& [name, energy] : s.heat_deposited_by) json.value(name.c_str(), energy);
+      json.end_object();
       json.begin_object("probe_labels");
       for (const auto& [k, label] : s.probe_labels) json.value(std::to_string(k).c_str(), label);
       json.end_object();
@@ -90,6 +123,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.end_object();
       WriteMesh(json, s.mesh);
       json.value("options", options ? options : "");
+      WriteRecord(json, s);
       json.end_object();
       file.commit();
     });

@@ -49,6 +49,7 @@ PetscErrorCode CrackLine::Setup(DM dm, PetscInt crack) {
     facets[std::lround(all[k])] = {all[k + 1], all[k + 2], all[k + 3], all[k + 4]};
   points_.clear();
   arc_.clear();
+  ids_.clear();
   length_ = 0.0;
   for (const auto& [id, f] : facets) {
     std::array<double, 2> a{f[0], f[1]}, b{f[2], f[3]};
@@ -67,6 +68,7 @@ PetscErrorCode CrackLine::Setup(DM dm, PetscInt crack) {
     const auto& last = points_.back();
     const std::array<double, 2> far =
         std::hypot(a[0] - last[0], a[1] - last[1]) < std::hypot(b[0] - last[0], b[1] - last[1]) ? b : a;
+    ids_.push_back(static_cast<PetscInt>(id));
     length_ += std::hypot(far[0] - last[0], far[1] - last[1]);
     points_.push_back(far);
     arc_.push_back(length_);
@@ -83,6 +85,18 @@ std::array<double, 2> CrackLine::At(double xi) const {
   const double w = (s - arc_[k - 1]) / std::max(arc_[k] - arc_[k - 1], 1e-300);
   return {points_[k - 1][0] + w * (points_[k][0] - points_[k - 1][0]),
           points_[k - 1][1] + w * (points_[k][1] - points_[k - 1][1])};
+}
+
+double CrackLine::XiOf(double x, double y) const {
+  double best = INFINITY, xi = 0.0;
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const auto &p = points_[i], &q = points_[i + 1];
+    const double dx = q[0] - p[0], dy = q[1] - p[1], len2 = dx * dx + dy * dy;
+    const double s = len2 > 0.0 ? std::clamp(((x - p[0]) * dx + (y - p[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    const double d = std::hypot(x - p[0] - s * dx, y - p[1] - s * dy);
+    if (d < best) best = d, xi = (arc_[i] + s * (arc_[i + 1] - arc_[i])) / length_;
+  }
+  return std::clamp(xi, 0.0, 1.0);
 }
 
 double CrackLine::Distance(double x, double y) const {

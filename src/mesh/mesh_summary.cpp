@@ -21,11 +21,48 @@ PetscErrorCode CountOwned(DM dm, PetscInt depth, PetscInt* count) {
   PetscFunctionReturn(0);
 }
 
-double EdgeLength(const VertexCoordinates& x, DM dm, PetscInt edge) {
+PetscErrorCode EdgeLength(const VertexCoordinates& x, DM dm, PetscInt edge, double* length) {
+  PetscFunctionBeginUser;
   const PetscInt* cone;
-  (void)DMPlexGetCone(dm, edge, &cone);
+  PetscCall(DMPlexGetCone(dm, edge, &cone));
   const auto a = x(cone[0]), b = x(cone[1]);
-  return std::hypot(b[0] - a[0], b[1] - a[1]);
+  *length = std::hypot(b[0] - a[0], b[1] - a[1]);
+  PetscFunctionReturn(0);
+}
+
+/// Cells, vertices, edge lengths and cells per rank of the heat mesh.
+PetscErrorCode SummariseHeatMesh(const Specimen& specimen, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  DM dm = specimen.heat;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  s->heat_source = specimen.heat_source;
+  PetscCall(CountOwned(dm, 0, &s->heat_vertices));
+  VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  double h_min = INFINITY, h_max = 0.0;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    const PetscInt* cone;
+    PetscInt n;
+    PetscCall(DMPlexGetConeSize(dm, c, &n));
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    for (PetscInt k = 0; k < n; ++k) {
+      double h = 0.0;
+      PetscCall(EdgeLength(x, dm, cone[k], &h));
+      h_min = std::min(h_min, h);
+      h_max = std::max(h_max, h);
+    }
+  }
+  const PetscInt local = cEnd - cStart;  // no overlap: every cell is owned
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  s->heat_cells_per_rank.assign(size, 0);
+  PetscCallMPI(MPI_Allgather(&local, 1, MPIU_INT, s->heat_cells_per_rank.data(), 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allreduce(&local, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&h_min, &s->heat_h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&h_max, &s->heat_h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscFunctionReturn(0);
 }
 
 }  // namespace
@@ -66,7 +103,8 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
       ++bulk;
       corners = cone_size;
       for (PetscInt k = 0; k < cone_size; ++k) {
-        const double h = EdgeLength(x, dm, cone[k]);
+        double h;
+      PetscCall(EdgeLength(x, dm, cone[k], &h));
         h_min = std::min(h_min, h);
         h_max = std::max(h_max, h);
       }
@@ -78,7 +116,9 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
     PetscCheck(id >= 1 && id <= static_cast<PetscInt>(nc), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "cohesive cell %" PetscInt_FMT " has no crack label", c);
     ++facets[id - 1];
-    length[id - 1] += EdgeLength(x, dm, cone[0]);
+    double facet;
+    PetscCall(EdgeLength(x, dm, cone[0], &facet));
+    length[id - 1] += facet;
     for (PetscInt k = 2; k < 4; ++k) {  // tensor edges: (side A, side B) vertex pairs
       const PetscInt* pair;
       PetscCall(DMPlexGetCone(dm, cone[k], &pair));
@@ -121,11 +161,7 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &corners, 1, MPIU_INT, MPI_MAX, comm));
   s->cell_type = corners == 4 ? "quad" : "tri";
   PetscCall(CountOwned(dm, 0, &s->vertices));
-  PetscCall(CountOwned(specimen.heat, 0, &s->heat_vertices));
-  PetscInt heat_cells[2];
-  PetscCall(DMPlexGetHeightStratum(specimen.heat, 0, &heat_cells[0], &heat_cells[1]));
-  PetscInt local_heat = heat_cells[1] - heat_cells[0];
-  PetscCallMPI(MPI_Allreduce(&local_heat, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(SummariseHeatMesh(specimen, s));
   s->cracks.assign(nc, CrackSummary{});
   for (std::size_t i = 0; i < nc; ++i) {
     CrackSummary& cs = s->cracks[i];
@@ -141,10 +177,10 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
 
 PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "Mesh (%s): %" PetscInt_FMT " %s cells, %" PetscInt_FMT " vertices (%" PetscInt_FMT
-                              " before splitting), %" PetscInt_FMT " cohesive cells, %d rank%s\n",
-                        s.source.c_str(), s.cells, s.cell_type.c_str(), s.vertices, s.heat_vertices, s.cohesive_cells,
-                        s.ranks, s.ranks > 1 ? "s" : ""));
+  PetscCall(PetscPrintf(comm, "Mesh (%s): %" PetscInt_FMT " %s cells, %" PetscInt_FMT " vertices, %" PetscInt_FMT
+                              " cohesive cells, %d rank%s\n",
+                        s.source.c_str(), s.cells, s.cell_type.c_str(), s.vertices, s.cohesive_cells, s.ranks,
+                        s.ranks > 1 ? "s" : ""));
   PetscCall(PetscPrintf(comm, "  element edge length: min %.4g m, max %.4g m\n", s.h_min, s.h_max));
   if (s.ranks > 1) {
     PetscCall(PetscPrintf(comm, "  cells per rank:"));
@@ -156,6 +192,9 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
                                 " buried tips, length %.6g m\n",
                           c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
+  PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT
+                              " vertices, element edge length min %.3g m, max %.3g m\n",
+                        s.heat_source.c_str(), s.heat_cells, s.heat_vertices, s.heat_h_min, s.heat_h_max));
   PetscFunctionReturn(0);
 }
 

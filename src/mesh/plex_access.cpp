@@ -6,36 +6,42 @@ namespace vibrotherm::mesh {
 
 PetscErrorCode VertexCoordinates::Setup(DM dm) {
   PetscFunctionBeginUser;
+  // Copied once per vertex, so that a lookup is an array access with nothing to fail.
+  Vec local;
+  PetscSection section;
+  const PetscScalar* array;
   PetscCall(DMGetCoordinatesLocalSetUp(dm));
-  PetscCall(DMGetCoordinatesLocal(dm, &local_));
-  PetscCall(DMGetCoordinateSection(dm, &section_));
-  PetscCall(VecGetArrayRead(local_, &array_));
+  PetscCall(DMGetCoordinatesLocal(dm, &local));
+  PetscCall(DMGetCoordinateSection(dm, &section));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart_, nullptr));
+  PetscInt vEnd;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, nullptr, &vEnd));
+  coords_.resize(vEnd - vStart_);
+  PetscCall(VecGetArrayRead(local, &array));
+  for (PetscInt v = vStart_; v < vEnd; ++v) {
+    PetscInt offset;
+    PetscCall(PetscSectionGetOffset(section, v, &offset));
+    coords_[v - vStart_] = {PetscRealPart(array[offset]), PetscRealPart(array[offset + 1])};
+  }
+  PetscCall(VecRestoreArrayRead(local, &array));
   PetscFunctionReturn(0);
 }
 
-VertexCoordinates::~VertexCoordinates() {
-  if (array_) (void)VecRestoreArrayRead(local_, &array_);
-}
-
-std::array<double, 2> VertexCoordinates::operator()(PetscInt vertex) const {
-  PetscInt offset = 0;
-  (void)PetscSectionGetOffset(section_, vertex, &offset);
-  return {PetscRealPart(array_[offset]), PetscRealPart(array_[offset + 1])};
-}
-
-std::array<double, 2> CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell) {
+PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, std::array<double, 2>* centroid) {
+  PetscFunctionBeginUser;
   PetscInt* closure = nullptr;
   PetscInt n, vStart, vEnd, count = 0;
   std::array<double, 2> c = {0, 0};
-  (void)DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd);
-  (void)DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure));
   for (PetscInt i = 0; i < 2 * n; i += 2)
     if (closure[i] >= vStart && closure[i] < vEnd) {
       const auto p = x(closure[i]);
       c[0] += p[0], c[1] += p[1], ++count;
     }
-  (void)DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure);
-  return {c[0] / count, c[1] / count};
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure));
+  *centroid = {c[0] / count, c[1] / count};
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost) {

@@ -1,9 +1,12 @@
 #include "vibrotherm/mesh/plex_builder.hpp"
 
+#include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
 #include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
 
 namespace vibrotherm::mesh {
 namespace {
@@ -66,6 +69,8 @@ PetscErrorCode LabelCrackFacetsAndTips(DM dm, const std::vector<std::string>& cr
   PetscCall(DMGetLabel(dm, labels::crack_tip, &tip));
   PetscInt fStart, fEnd;
   PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  VertexCoordinates x;
+  PetscCall(x.Setup(dm));
   PetscInt next_id = 0;
   for (std::size_t c = 0; c < crack_names.size(); ++c) {
     // Faces of this crack (refinement also labels vertices: keep faces only).
@@ -82,11 +87,17 @@ PetscErrorCode LabelCrackFacetsAndTips(DM dm, const std::vector<std::string>& cr
       ++count;
     }
     if (count == 0) continue;  // rank without the mesh
+    // ξ runs from the end with the smaller x (then y): the same direction on every mesh of the specimen.
     PetscInt start = -1;
+    std::array<double, 2> start_x{};
     for (const auto& [v, faces] : faces_at) {
       PetscCheck(faces.size() <= 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "mesh: %s branches (a vertex joins %zu crack edges)", crack_names[c].c_str(), faces.size());
-      if (faces.size() == 1 && start < 0) start = v;
+      if (faces.size() != 1) continue;
+      const auto p = x(v);
+      const double tol = 1e-12 * (std::abs(p[0]) + std::abs(start_x[0]) + 1e-300);
+      if (start < 0 || p[0] < start_x[0] - tol || (std::abs(p[0] - start_x[0]) <= tol && p[1] < start_x[1]))
+        start = v, start_x = p;
     }
     PetscCheck(start >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "mesh: %s is a closed loop", crack_names[c].c_str());
     // Walk from the start vertex, numbering faces in order.

@@ -57,8 +57,9 @@ double orient(const std::array<double, 2>& p, const std::array<double, 2>& q, co
   return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
 }
 
-/// Distance between two segments (0 when they intersect).
-double segment_distance(const Crack& a, const Crack& b) {
+}  // namespace
+
+double crack_distance(const Crack& a, const Crack& b) {
   const auto a0 = a.end(0), a1 = a.end(1), b0 = b.end(0), b1 = b.end(1);
   const double o1 = orient(a0, a1, b0), o2 = orient(a0, a1, b1), o3 = orient(b0, b1, a0), o4 = orient(b0, b1, a1);
   if (((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0)) && o1 * o2 != 0 && o3 * o4 != 0) return 0.0;
@@ -72,7 +73,6 @@ double segment_distance(const Crack& a, const Crack& b) {
                    point_segment(b1, a0, a1)});
 }
 
-}  // namespace
 
 bool SpecimenGeometry::end_on_boundary(const Crack& c, int which) const {
   const auto p = c.end(which);
@@ -127,7 +127,7 @@ void SpecimenGeometry::validate() const {
       reject(msg.str());
     }
     for (std::size_t j = 0; j < i; ++j) {
-      if (segment_distance(c, cracks[j]) < 0.5 * h_crack) {
+      if (crack_distance(c, cracks[j]) < 0.5 * h_crack) {
         msg << "-crack_center: cracks " << j + 1 << " and " << id << " cross or come closer than half an element ("
             << 0.5 * h_crack << " m)";
         reject(msg.str());

@@ -11,7 +11,7 @@ namespace {
 
 struct MeshLog {
   PetscLogStage stage;
-  PetscLogEvent generate, build, split, distribute;
+  PetscLogEvent generate, heat_generate, build, split, distribute;
 };
 
 PetscErrorCode RegisterMeshLogging(MeshLog* log) {
@@ -21,6 +21,7 @@ PetscErrorCode RegisterMeshLogging(MeshLog* log) {
   PetscCall(PetscLogStageGetId("Mesh", &log->stage));
   if (log->stage < 0) PetscCall(PetscLogStageRegister("Mesh", &log->stage));
   PetscCall(PetscLogEventRegister("MeshGenerate", id, &log->generate));
+  PetscCall(PetscLogEventRegister("MeshGenerateHeat", id, &log->heat_generate));
   PetscCall(PetscLogEventRegister("MeshBuildPlex", id, &log->build));
   PetscCall(PetscLogEventRegister("MeshSplitCracks", id, &log->split));
   PetscCall(PetscLogEventRegister("MeshDistribute", id, &log->distribute));
@@ -43,70 +44,146 @@ PetscErrorCode Distribute(DM* dm, const char* name) {
   PetscFunctionReturn(0);
 }
 
+struct MeshSource {
+  char file[PETSC_MAX_PATH_LEN] = "", heat_file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool from_file = PETSC_FALSE, heat_from_file = PETSC_FALSE;
+  PetscInt refinements = 0;
+};
+
+PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves: source, absorbing, free, roller, "
+                               "fixed, sink, crack*); default: generate from -specimen_* and -crack_*",
+                               nullptr, m->file, m->file, sizeof(m->file), &m->from_file));
+  PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
+                               "physical curve names; default: the unsplit -mesh_file mesh)",
+                               nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
+  PetscCall(PetscOptionsBoundedInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
+                                   m->refinements, &m->refinements, nullptr, 0));
+  PetscOptionsEnd();
+  PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
+             "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
+  PetscFunctionReturn(0);
+}
+
+/// Crack names and requested lengths on every rank (rank 0 read them).
+PetscErrorCode ShareCrackNames(MPI_Comm comm, const MeshData& data, const SpecimenGeometry& geometry, bool from_file,
+                               std::vector<CrackInfo>* cracks) {
+  PetscFunctionBeginUser;
+  int ncracks = static_cast<int>(data.crack_names.size());
+  PetscCallMPI(MPI_Bcast(&ncracks, 1, MPI_INT, 0, comm));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  cracks->assign(ncracks, CrackInfo{});
+  for (int c = 0; c < ncracks; ++c) {
+    char name[256] = "";
+    if (rank == 0) PetscCall(PetscStrncpy(name, data.crack_names[c].c_str(), sizeof(name)));
+    PetscCallMPI(MPI_Bcast(name, sizeof(name), MPI_CHAR, 0, comm));
+    (*cracks)[c].name = name;
+    if (!from_file) (*cracks)[c].requested_length = geometry.cracks[c].length;
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Serial DMPlex with labels (crack faces numbered along each crack, tips).
+PetscErrorCode BuildSerialPlex(MPI_Comm comm, const MeshData& data, const std::vector<std::string>& names,
+                               PetscInt refinements, DM* dm) {
+  PetscFunctionBeginUser;
+  PetscCall(CreateSerialPlex(comm, data, dm));
+  for (PetscInt r = 0; r < refinements; ++r) {
+    DM fine;
+    PetscCall(DMPlexSetRefinementUniform(*dm, PETSC_TRUE));
+    PetscCall(DMRefine(*dm, comm, &fine));
+    PetscCall(DMDestroy(dm));
+    *dm = fine;
+  }
+  PetscCall(LabelCrackFacetsAndTips(*dm, names));
+  PetscFunctionReturn(0);
+}
+
+/// Rank 0's geometry on every rank (a -mesh_file rectangle found on rank 0).
+PetscErrorCode ShareGeometry(MPI_Comm comm, bool* usable, SpecimenGeometry* g) {
+  PetscFunctionBeginUser;
+  std::vector<double> flat = {*usable ? 1.0 : 0.0, g->width, g->height, g->h, g->h_crack, double(g->cracks.size())};
+  for (const Crack& c : g->cracks) flat.insert(flat.end(), {c.x, c.y, c.length, c.angle_deg});
+  int n = static_cast<int>(flat.size());
+  PetscCallMPI(MPI_Bcast(&n, 1, MPI_INT, 0, comm));
+  flat.resize(n);
+  PetscCallMPI(MPI_Bcast(flat.data(), n, MPI_DOUBLE, 0, comm));
+  *usable = flat[0] != 0.0;
+  g->width = flat[1], g->height = flat[2], g->h = flat[3], g->h_crack = flat[4];
+  g->cracks.resize(static_cast<std::size_t>(flat[5]));
+  for (std::size_t c = 0; c < g->cracks.size(); ++c)
+    g->cracks[c] = {flat[6 + 4 * c], flat[7 + 4 * c], flat[8 + 4 * c], flat[9 + 4 * c]};
+  PetscFunctionReturn(0);
+}
+
+/// The serial heat mesh, or null when the heat uses the unsplit wave mesh:
+/// -heat_mesh_file; else generated and graded (a generated specimen, or a
+/// mesh-file rectangle with straight cracks, its sinks kept from the file).
+PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const MeshData& wave_data,
+                             const SpecimenGeometry& geometry, bool generate, const HeatMeshSizes& sizes,
+                             const std::vector<std::string>& names, DM* heat, std::string* heat_source) {
+  PetscFunctionBeginUser;
+  *heat = nullptr;
+  *heat_source = "wave";
+  if (!source.heat_from_file && !(generate && sizes.graded)) PetscFunctionReturn(0);
+  MeshData data;
+  PetscCall(RunOnRoot(comm, [&] {
+    if (source.heat_from_file) {
+      data = read_mesh_file(source.heat_file);
+      check_crack_lines(data, std::string("-heat_mesh_file ") + source.heat_file);
+      if (data.crack_names != names)
+        throw std::invalid_argument(std::string("-heat_mesh_file ") + source.heat_file +
+                                    ": its crack curves must be those of -mesh_file, in the same order");
+    } else {
+      data = generate_heat_mesh(geometry, sizes);
+      if (source.from_file) keep_sinks_of(wave_data, &data);
+      data.crack_names = names;
+    }
+  }));
+  *heat_source = source.heat_from_file ? source.heat_file : "graded";
+  PetscCall(BuildSerialPlex(comm, data, names, 0, heat));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
-PetscErrorCode SpecimenCreate(MPI_Comm comm, Specimen* s) {
+PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s) {
   PetscFunctionBeginUser;
   MeshLog log;
   PetscCall(RegisterMeshLogging(&log));
   PetscCall(RegisterMetisPartitioner());
   PetscCall(PetscLogStagePush(log.stage));
-
-  char file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool from_file = PETSC_FALSE;
-  PetscInt refinements = 0;
-  PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves: source, absorbing, free, roller, "
-                               "fixed, sink, crack*); default: generate from -specimen_* and -crack_*",
-                               nullptr, file, file, sizeof(file), &from_file));
-  PetscCall(PetscOptionsBoundedInt("-dm_refine", "Uniform refinements of the mesh before splitting", nullptr,
-                                   refinements, &refinements, nullptr, 0));
-  PetscOptionsEnd();
-
+  MeshSource source;
+  PetscCall(ReadMeshSource(comm, &source));
   SpecimenGeometry geometry;
-  if (!from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
   MeshData data;
+  bool generate_heat = !source.from_file;
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
   PetscCall(RunOnRoot(comm, [&] {
-    data = from_file ? read_mesh_file(file) : generate_specimen_mesh(geometry);
-    check_crack_lines(data, from_file ? std::string("-mesh_file ") + file : std::string("generated mesh"));
+    data = source.from_file ? read_mesh_file(source.file) : generate_specimen_mesh(geometry);
+    check_crack_lines(data, source.from_file ? std::string("-mesh_file ") + source.file : std::string("generated mesh"));
+    if (source.from_file) generate_heat = rectangle_geometry(data, &geometry);
   }));
   PetscCall(PetscLogEventEnd(log.generate, 0, 0, 0, 0));
-
-  // Every rank needs the crack names (rank 0 knows them).
-  int ncracks = static_cast<int>(data.crack_names.size());
-  PetscCallMPI(MPI_Bcast(&ncracks, 1, MPI_INT, 0, comm));
-  s->cracks.assign(ncracks, CrackInfo{});
-  for (int c = 0; c < ncracks; ++c) {
-    s->cracks[c].name = from_file ? "" : "crack" + std::to_string(c + 1);
-    if (!from_file) s->cracks[c].requested_length = geometry.cracks[c].length;
-  }
-  if (from_file) {
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(comm, &rank));
-    for (int c = 0; c < ncracks; ++c) {
-      char name[256] = "";
-      if (rank == 0) PetscCall(PetscStrncpy(name, data.crack_names[c].c_str(), sizeof(name)));
-      PetscCallMPI(MPI_Bcast(name, sizeof(name), MPI_CHAR, 0, comm));
-      s->cracks[c].name = name;
-    }
-  }
-  s->source = from_file ? file : "generated";
+  if (source.from_file) PetscCall(ShareGeometry(comm, &generate_heat, &geometry));
+  HeatMeshSizes heat_sizes;
+  if (generate_heat) PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
+  PetscCall(ShareCrackNames(comm, data, geometry, source.from_file, &s->cracks));
+  s->source = source.from_file ? source.file : "generated";
   std::vector<std::string> names;
   for (const CrackInfo& c : s->cracks) names.push_back(c.name);
 
-  DM serial;
+  DM serial, heat;
+  PetscCall(PetscLogEventBegin(log.heat_generate, 0, 0, 0, 0));
+  PetscCall(BuildHeatMesh(comm, source, data, geometry, generate_heat, heat_sizes, names, &heat, &s->heat_source));
+  PetscCall(PetscLogEventEnd(log.heat_generate, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(log.build, 0, 0, 0, 0));
-  PetscCall(CreateSerialPlex(comm, data, &serial));
+  PetscCall(BuildSerialPlex(comm, data, names, source.refinements, &serial));
   data = MeshData{};  // free the arrays
-  for (PetscInt r = 0; r < refinements; ++r) {
-    DM fine;
-    PetscCall(DMPlexSetRefinementUniform(serial, PETSC_TRUE));
-    PetscCall(DMRefine(serial, comm, &fine));
-    PetscCall(DMDestroy(&serial));
-    serial = fine;
-  }
-  PetscCall(LabelCrackFacetsAndTips(serial, names));
   PetscCall(PetscLogEventEnd(log.build, 0, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(log.split, 0, 0, 0, 0));
@@ -115,13 +192,26 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, Specimen* s) {
   PetscCall(PetscLogEventEnd(log.split, 0, 0, 0, 0));
 
   // Split serially, then distribute: the other order is broken in PETSc 3.18.
+  // The heat mesh is partitioned on its own.
   PetscCall(PetscLogEventBegin(log.distribute, 0, 0, 0, 0));
   s->wave = split;
-  s->heat = serial;
+  if (heat) PetscCall(DMDestroy(&serial));
+  s->heat = heat ? heat : serial;
   PetscCall(Distribute(&s->wave, "wave_mesh"));
   PetscCall(Distribute(&s->heat, "heat_mesh"));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length) {
+  PetscFunctionBeginUser;
+  MeshSource source;
+  PetscCall(ReadMeshSource(comm, &source));
+  SpecimenGeometry geometry;
+  PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  HeatMeshSizes sizes;
+  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes));
   PetscFunctionReturn(0);
 }
 

@@ -1,71 +1,64 @@
 // -specimen_*, -crack_*, -mesh_*, -edge_* options → SpecimenGeometry.
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/option_list.hpp"
+#include "vibrotherm/util/option_choice.hpp"
 
 namespace vibrotherm::mesh {
 namespace {
 
-PetscErrorCode ReadEdgeKind(MPI_Comm comm, PetscOptionItems* PetscOptionsObject, Side side, EdgeKind* kind) {
+PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, Side side, EdgeKind* kind) {
   PetscFunctionBeginUser;
-  char option[32], current[32];
+  char option[32];
   PetscCall(PetscSNPrintf(option, sizeof(option), "-edge_%s", to_string(side)));
-  PetscCall(PetscStrncpy(current, to_string(*kind), sizeof(current)));
-  const std::string help = "Mechanical kind of this outer edge: " + edge_kind_names();
-  char value[64];
-  PetscBool set;
-  PetscCall(PetscOptionsString(option, help.c_str(), nullptr, current, value, sizeof(value), &set));
-  if (!set) PetscFunctionReturn(0);
-  for (EdgeKind k : all_edge_kinds()) {
-    if (std::string(value) == to_string(k)) {
-      *kind = k;
-      PetscFunctionReturn(0);
-    }
-  }
-  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option, value, edge_kind_names().c_str());
+  std::vector<std::string> names;
+  for (EdgeKind k : all_edge_kinds()) names.push_back(to_string(k));
+  PetscInt index = static_cast<PetscInt>(std::find(all_edge_kinds().begin(), all_edge_kinds().end(), *kind) -
+                                         all_edge_kinds().begin());
+  PetscCall(OptionsChoice(PetscOptionsObject, option, "Mechanical kind of this outer edge", names, &index, nullptr));
+  *kind = all_edge_kinds()[index];
+  PetscFunctionReturn(0);
 }
 
 }  // namespace
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g) {
   PetscFunctionBeginUser;
-  PetscReal centers[64], lengths[32], angles[32];
-  PetscInt ncenters = 64, nlengths = 32, nangles = 32;
-  PetscBool has_centers = PETSC_FALSE, has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
-  char cell[16] = "quad";
+  std::vector<double> centers, lengths, angles;
+  PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
+  PetscInt cell = g->quads ? 0 : 1;
   PetscOptionsBegin(comm, nullptr, "Generated specimen (used unless -mesh_file)", nullptr);
   PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
   PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
-  PetscCall(PetscOptionsRealArray("-crack_center", "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up)",
-                                  nullptr, centers, &ncenters, &has_centers));
-  PetscCall(PetscOptionsRealArray("-crack_length", "Crack lengths [m] (one value applies to all)", nullptr, lengths,
-                                  &nlengths, &has_lengths));
-  PetscCall(PetscOptionsRealArray("-crack_angle", "Crack angles to the horizontal [deg] (one value applies to all)",
-                                  nullptr, angles, &nangles, &has_angles));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
+                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up)", &centers, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length", "Crack lengths [m] (one value applies to all)",
+                            &lengths, &has_lengths));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_angle",
+                            "Crack angles to the horizontal [deg] (one value applies to all)", &angles, &has_angles));
   PetscCall(PetscOptionsReal("-mesh_h", "Element size away from the cracks [m]", nullptr, g->h, &g->h, nullptr));
   PetscCall(PetscOptionsReal("-mesh_h_crack", "Element size along the cracks [m]", nullptr, g->h_crack, &g->h_crack,
                              nullptr));
   PetscCall(PetscOptionsReal("-mesh_grading", "Element size growth per metre of distance from a crack", nullptr,
                              g->grading, &g->grading, nullptr));
-  PetscCall(PetscOptionsString("-mesh_cell", "Cell type: quad|tri", nullptr, cell, cell, sizeof(cell), nullptr));
+  PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
-    PetscCall(ReadEdgeKind(comm, PetscOptionsObject, side, &g->edges[static_cast<int>(side)]));
+    PetscCall(ReadEdgeKind(PetscOptionsObject, side, &g->edges[static_cast<int>(side)]));
   PetscOptionsEnd();
 
-  const std::string cell_type(cell);
-  PetscCheck(cell_type == "quad" || cell_type == "tri", comm, PETSC_ERR_USER_INPUT,
-             "-mesh_cell: unknown value '%s' (known: quad|tri)", cell);
-  g->quads = cell_type == "quad";
-  if (!has_centers) ncenters = 0;
+  g->quads = cell == 0;
+  const PetscInt ncenters = static_cast<PetscInt>(centers.size()), nlengths = static_cast<PetscInt>(lengths.size()),
+                 nangles = static_cast<PetscInt>(angles.size());
   PetscCheck(ncenters % 2 == 0, comm, PETSC_ERR_USER_INPUT, "-crack_center needs x,y pairs (got %" PetscInt_FMT " values)",
              ncenters);
   const PetscInt ncracks = ncenters / 2;
   PetscCheck(ncracks == 0 || has_lengths, comm, PETSC_ERR_USER_INPUT, "-crack_length is required with -crack_center");
   PetscCheck(ncracks > 0 || (!has_lengths && !has_angles), comm, PETSC_ERR_USER_INPUT,
              "-crack_length/-crack_angle given without -crack_center");
-  if (!has_angles) nangles = 0;
   PetscCheck(nlengths == 1 || nlengths == ncracks || ncracks == 0, comm, PETSC_ERR_USER_INPUT,
              "-crack_length: %" PetscInt_FMT " values for %" PetscInt_FMT " cracks", nlengths, ncracks);
   PetscCheck(nangles <= 1 || nangles == ncracks, comm, PETSC_ERR_USER_INPUT,
@@ -80,6 +73,36 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g) {
     g->cracks.push_back(c);
   }
   VibrothermCallCpp(comm, g->validate());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
+                                 HeatMeshSizes* sizes) {
+  PetscFunctionBeginUser;
+  // Defaults from the physics: the first layer resolves the layer one exchange
+  // heats; layers grow to the wave mesh's crack spacing / 2 (the Q2 contact-node spacing).
+  sizes->h_crack = 0.5 * exchange_length;
+  sizes->h_along = 0.5 * g.h_crack;
+  sizes->h = g.h;
+  sizes->grading = 2.0 * g.grading;  // diffusion smooths: the heat mesh may coarsen faster
+  PetscInt kind = sizes->graded ? 1 : 0;
+  PetscOptionsBegin(comm, nullptr, "Heat mesh (generated specimens)", nullptr);
+  PetscCall(OptionsChoice(PetscOptionsObject, "-heat_mesh",
+                          "Heat mesh: its own, graded to the cracks, or the unsplit wave mesh", {"wave", "graded"},
+                          &kind, nullptr));
+  PetscCall(PetscOptionsReal("-heat_mesh_h_crack", "First layer thickness at the cracks [m] (default: half of sqrt(alpha couple_dt))",
+                             nullptr, sizes->h_crack, &sizes->h_crack, nullptr));
+  PetscCall(PetscOptionsReal("-heat_mesh_growth", "Thickness ratio of successive layers", nullptr, sizes->growth,
+                             &sizes->growth, nullptr));
+  PetscCall(PetscOptionsReal("-heat_mesh_h_along", "Element length along the cracks [m] (default: -mesh_h_crack / 2)",
+                             nullptr, sizes->h_along, &sizes->h_along, nullptr));
+  PetscCall(PetscOptionsReal("-heat_mesh_h", "Element size away from the cracks [m] (default: -mesh_h)", nullptr,
+                             sizes->h, &sizes->h, nullptr));
+  PetscCall(PetscOptionsReal("-heat_mesh_grading", "Element size growth per metre away from the crack bands (default: 2 x -mesh_grading)",
+                             nullptr, sizes->grading, &sizes->grading, nullptr));
+  PetscOptionsEnd();
+  sizes->graded = kind == 1;
+  if (sizes->graded) VibrothermCallCpp(comm, sizes->validate());
   PetscFunctionReturn(0);
 }
 

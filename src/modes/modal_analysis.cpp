@@ -114,7 +114,8 @@ PetscErrorCode ModalAnalysis::CellsNearCracks(const std::vector<mesh::CrackLine>
   PetscCall(x.Setup(space_.dm()));
   near->clear();
   for (PetscInt c : space_.cells()) {
-    const auto centre = mesh::CellCentroid(space_.dm(), x, c);
+    std::array<double, 2> centre;
+    PetscCall(mesh::CellCentroid(space_.dm(), x, c, &centre));
     near->push_back(std::any_of(cracks.begin(), cracks.end(), [&](const mesh::CrackLine& crack) {
       return crack.Distance(centre[0], centre[1]) <= radius;
     }));
@@ -242,10 +243,11 @@ PetscErrorCode ModalAnalysis::Write(const std::string& dir) const {
     });
   }
   io::FieldFile shapes;
-  PetscCall(shapes.Open(comm, dir + "/modes.h5"));
+  PetscCall(shapes.Open(comm, dir + "/modes.h5", io::XdmfLayout::kSingleSeries, "frequency"));
   PetscCall(shapes.AddMesh("wave", space_));
+  // Shapes are scaled to a peak |u| component of 1: no units.
   for (std::size_t k = 0; k < shapes_.size(); ++k)
-    PetscCall(shapes.WriteField("wave", "mode", shapes_[k], static_cast<int>(k), modes_[k].frequency));
+    PetscCall(shapes.WriteField("wave", "mode", "1", shapes_[k], static_cast<int>(k), modes_[k].frequency));
   PetscCall(shapes.Finish());
   PetscFunctionReturn(0);
 }

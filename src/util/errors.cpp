@@ -1,23 +1,72 @@
 #include "vibrotherm/util/errors.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <sstream>
+#include <string>
 
 namespace vibrotherm {
 namespace {
 
 bool IsUserError(PetscErrorCode n) { return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN; }
 
+/// PETSc's "Input string X has no numeric value" does not name the option: find
+/// the options whose value holds X ("" when the message is another one).
+std::string NonNumericOption(const char* mess) {
+  static const std::string head = "Input string ", tail = " has no numeric value";
+  const std::string m = mess ? mess : "";
+  const std::size_t a = m.find(head), b = m.find(tail);
+  if (a == std::string::npos || b == std::string::npos || b < a + head.size()) return "";
+  const std::string value = m.substr(a + head.size(), b - a - head.size());
+  char* all = nullptr;
+  if (PetscOptionsGetAll(nullptr, &all) || !all) return "";
+  std::istringstream words(all);
+  PetscFree(all);
+  std::string word, option, names;
+  while (words >> word) {
+    if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.') {
+      option = word;
+    } else if (!option.empty() && word.find(value) != std::string::npos) {
+      names += (names.empty() ? "" : ", ") + option;
+    }
+  }
+  return names.empty() ? "" : names + ": expected a number, got '" + value + "'";
+}
+
 PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const char* file, PetscErrorCode n,
                                 PetscErrorType p, const char* mess, void* ctx) {
-  if (!IsUserError(n)) return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, ctx);
+  if (!IsUserError(n) && p == PETSC_ERROR_INITIAL) {
+    const std::string option = NonNumericOption(mess);
+    if (!option.empty()) {  // a user error after all: every rank reads the options, every rank gets here
+      PetscMPIInt rank = 0;
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+      if (rank == 0) std::fprintf(stderr, "%s: error: %s\n", static_cast<const char*>(ctx), option.c_str());
+      return PETSC_ERR_USER_INPUT;
+    }
+  }
+  if (!IsUserError(n)) {
+    // A runtime failure may be seen by one rank only: unwinding would leave the
+    // others waiting in a collective call (HDF5 flushes, reductions). One line,
+    // then the whole job ends; outputs stay under their .partial names.
+    if (p == PETSC_ERROR_INITIAL) {
+      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", static_cast<const char*>(ctx), mess ? mess : "(no message)",
+                   fun ? fun : "?", file ? file : "?", line);
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+    return n;
+  }
   if (p == PETSC_ERROR_INITIAL) {
-    PetscMPIInt rank = 0;
+    PetscMPIInt rank = 0, size = 1, world = 1;
     // Input is checked on every rank of comm: rank 0 of comm speaks for all.
-    if (comm != MPI_COMM_NULL) MPI_Comm_rank(comm, &rank);
+    if (comm != MPI_COMM_NULL) MPI_Comm_rank(comm, &rank), MPI_Comm_size(comm, &size);
+    MPI_Comm_size(MPI_COMM_WORLD, &world);
     if (rank == 0) {
       std::fprintf(stderr, "%s: error: %s\n", static_cast<const char*>(ctx), mess ? mess : "(no message)");
       std::fflush(stderr);
     }
+    // Found by some ranks only (a file on rank 0): the others would wait forever.
+    if (size < world) MPI_Abort(MPI_COMM_WORLD, 2);
   }
   return n;
 }
@@ -26,7 +75,9 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
 
 PetscErrorCode PushUserErrorHandler(const char* program) {
   PetscFunctionBeginUser;
-  PetscCall(PetscPushErrorHandler(UserErrorHandler, const_cast<char*>(program)));
+  static std::string name;  // PETSc keeps the context pointer for the whole run
+  name = program;
+  PetscCall(PetscPushErrorHandler(UserErrorHandler, name.data()));
   PetscFunctionReturn(0);
 }
 

@@ -1,4 +1,6 @@
+#include "vibrotherm/util/version.hpp"
+
 namespace vibrotherm {
-/// Version string reported by -version and written to summary.json.
-const char* version() { return "0.1.0"; }
+const char* version() { return "0.2.0"; }
+const char* git_commit() { return VIBROTHERM_GIT; }
 }  // namespace vibrotherm

@@ -1,5 +1,7 @@
 #include "vibrotherm/wave/excitation.hpp"
 
+#include "vibrotherm/util/option_choice.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -27,11 +29,12 @@ void SourceTimeFunction::evaluate(double t, double* g, double* dg, double* ddg) 
 
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscFunctionBeginUser;
-  char type[32] = "displacement", component[32] = "tangential";
+  PetscInt type = e->type == SourceType::Displacement ? 0 : 1, component = e->component == SourceComponent::Tangential ? 0 : 1;
   PetscOptionsBegin(comm, nullptr, "Excitation on the source edge", nullptr);
-  PetscCall(PetscOptionsString("-source_type", "displacement|traction", nullptr, type, type, sizeof(type), nullptr));
-  PetscCall(PetscOptionsString("-source_component", "tangential|normal (to the source edge)", nullptr, component,
-                               component, sizeof(component), nullptr));
+  PetscCall(OptionsChoice(PetscOptionsObject, "-source_type", "Source on the source edge", {"displacement", "traction"},
+                          &type, nullptr));
+  PetscCall(OptionsChoice(PetscOptionsObject, "-source_component", "Direction of the source to the source edge",
+                          {"tangential", "normal"}, &component, nullptr));
   PetscCall(PetscOptionsReal("-source_frequency", "Frequency [Hz]", nullptr, e->signal.frequency, &e->signal.frequency,
                              nullptr));
   PetscCall(PetscOptionsReal("-source_amplitude", "Amplitude: displacement [m] or traction [Pa]", nullptr,
@@ -41,13 +44,8 @@ PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscCall(PetscOptionsReal("-source_ramp_cycles", "Cycles of smooth switch-on and switch-off", nullptr,
                              e->signal.ramp_cycles, &e->signal.ramp_cycles, nullptr));
   PetscOptionsEnd();
-  const std::string t(type), c(component);
-  PetscCheck(t == "displacement" || t == "traction", comm, PETSC_ERR_USER_INPUT,
-             "-source_type: unknown value '%s' (known: displacement|traction)", type);
-  PetscCheck(c == "tangential" || c == "normal", comm, PETSC_ERR_USER_INPUT,
-             "-source_component: unknown value '%s' (known: tangential|normal)", component);
-  e->type = t == "displacement" ? SourceType::Displacement : SourceType::Traction;
-  e->component = c == "tangential" ? SourceComponent::Tangential : SourceComponent::Normal;
+  e->type = type == 0 ? SourceType::Displacement : SourceType::Traction;
+  e->component = component == 0 ? SourceComponent::Tangential : SourceComponent::Normal;
   PetscCheck(e->signal.frequency > 0.0, comm, PETSC_ERR_USER_INPUT, "-source_frequency must be > 0");
   PetscCheck(e->signal.duration >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_duration must be >= 0");
   PetscCheck(e->signal.ramp_cycles >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_ramp_cycles must be >= 0");

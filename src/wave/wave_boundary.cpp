@@ -19,7 +19,8 @@ PetscErrorCode FaceFrame(DM dm, const mesh::VertexCoordinates& x, PetscInt face,
   n[0] = (b[1] - a[1]) / L;
   n[1] = -(b[0] - a[0]) / L;
   // Orient away from the cell's centroid.
-  const auto centroid = mesh::CellCentroid(dm, x, support[0]);
+  std::array<double, 2> centroid;
+  PetscCall(mesh::CellCentroid(dm, x, support[0], &centroid));
   if ((0.5 * (a[0] + b[0]) - centroid[0]) * n[0] + (0.5 * (a[1] + b[1]) - centroid[1]) * n[1] < 0) n[0] = -n[0], n[1] = -n[1];
   s[0] = n[1];
   s[1] = -n[0];

@@ -56,8 +56,8 @@ void BM_MmdCommit(benchmark::State& state) {
   ContactParameters p;  // Biwa law (paper default), mu = 1
   if (state.range(0) == 1) {
     p.normal_law = "power";
-    p.normal_p = 1.7;
-    p.normal_C = 1e6 / std::pow(1e-8, 1.7);
+    p.power_p = 1.7;
+    p.power_C = 1e6 / std::pow(1e-8, 1.7);
   }
   state.SetLabel(state.range(0) == 1 ? "power p=1.7" : "biwa m=0.5");
   CrackCells crack(p);

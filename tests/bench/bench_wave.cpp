@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
@@ -18,7 +19,9 @@ static PetscErrorCode Run() {
   PetscInt steps = 200;
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-bench_steps", &steps, nullptr));
   mesh::Specimen specimen;
-  PetscCall(mesh::SpecimenCreate(comm, &specimen));
+  coupling::Scene scene;
+  PetscCall(coupling::ReadScene(comm, &scene));
+  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), &specimen));
   wave::ElasticMaterial material;
   wave::Excitation excitation;
   wave::WaveOptions options;

@@ -28,14 +28,14 @@ double LineSourceCentre(double q, double L, double rho_c, double alpha, double t
 TEST(HeatLineSource, MatchesCarslawJaeger) {
   const double L = 0.004, q = 1e6;
   ScopedSpecimen s("-specimen_width 0.04 -specimen_height 0.04 -mesh_h 0.002 -mesh_h_crack 1e-4 "
-                   "-crack_center 0.02,0.02 -crack_length 0.004 -crack_angle 0 -heat_ts_adapt_dt_max 2e-4");
+                   "-crack_center 0.02,0.02 -crack_length 0.004 -crack_angle 0 -heat_free_ts_adapt_dt_max 2e-4");
   ASSERT_EQ(s.status, 0);
-  heat::HeatMaterial mat;
-  ASSERT_EQ(heat::ReadHeatMaterial(PETSC_COMM_WORLD, 2700.0, &mat), 0);
+  heat::HeatOptions options;
+  ASSERT_EQ(heat::ReadHeatOptions(PETSC_COMM_WORLD, 2700.0, &options), 0);
+  const heat::HeatMaterial& mat = options.material;
   heat::HeatSolver solver;
-  ASSERT_EQ(solver.Setup(s.specimen.heat, mat), 0);
-  const PetscInt facets = s.summary.cracks.at(0).facets;
-  ASSERT_EQ(solver.SetCrackPower(std::vector<double>(facets, q)), 0);
+  ASSERT_EQ(solver.Setup(s.specimen.heat, options), 0);
+  ASSERT_EQ(solver.SetCrackPower({q}), 0);
   const double rho_c = mat.density * mat.capacity, alpha = mat.diffusivity();
   for (double t : {1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {
     ASSERT_EQ(solver.AdvanceTo(t), 0);

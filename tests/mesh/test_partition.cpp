@@ -46,7 +46,7 @@ std::vector<PetscInt> OwnedCrackFaceIds(DM dm, bool via_cohesive) {
 }
 
 TEST(MetisPartition, CellsOwnedOnceBalancedAndCrackFacetsMatch) {
-  ScopedSpecimen s(kPaper + " -petscpartitioner_type metis");
+  ScopedSpecimen s(kPaper + " -petscpartitioner_type metis -heat_mesh wave");
   ASSERT_EQ(s.status, 0);
   PetscMPIInt size;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);

@@ -58,7 +58,18 @@ expect_error "-crack_probe: fractions must be in [0, 1], got 1.5" $box $crack -c
 expect_error "-crack_a0_profile: unknown value 'wavy'" $box $crack -crack_a0_profile wavy
 expect_error "-crack_a0_profile file needs -crack_a0_file FILE" $box $crack -crack_a0_profile file
 expect_error "-crack_a0_file $work/nofile.csv: cannot open the file" $box $crack -crack_a0_profile file -crack_a0_file "$work/nofile.csv"
-expect_error "-contact_normal_table $work/none.csv: cannot open the file" $box $crack -contact_normal_law table -contact_normal_table "$work/none.csv"
+printf 'xi,a0\n0,1e-9\n0.5,1,5e-9\n' >"$work/a0_comma.csv"
+expect_error "-crack_a0_file $work/a0_comma.csv line 3: expected 2 fields xi,a0, got 3 (a decimal comma?)" $box $crack -crack_a0_profile file -crack_a0_file "$work/a0_comma.csv"
+expect_error "-contact_table_file $work/none.csv: cannot open the file" $box $crack -contact_normal_law table -contact_table_file "$work/none.csv"
+# Contact parameters: declared ranges, strict numbers, retired names.
+expect_error "-contact_biwa_C must be > 0, got -1e+11" $box $crack -contact_biwa_C -1e11
+expect_error "-contact_power_C must be > 0, got 0" $box $crack -contact_power_C 0
+expect_error "-contact_biwa_m must be in (0, 0.9], got 1" $box $crack -contact_biwa_m 1
+expect_error "-contact_mu: expected a number, got 'nan'" $box $crack -contact_mu nan
+expect_error "-contact_mu: expected a number, got '1,5'" $box $crack -contact_mu 1,5
+expect_error "-crack_mmd_max_breakpoints: expected an integer, got '2.5'" $box $crack -crack_mmd_max_breakpoints 2.5
+expect_error "-contact_normal_C was renamed: use -contact_power_C (power law) or -contact_biwa_C (biwa law)" $box $crack -contact_normal_C 1e11
+expect_error "-contact_nu was renamed: use -material_nu" $box $crack -contact_nu 0.3
 expect_error "-heat_bc: unknown value 'hot'" $box $crack -heat_bc hot
 expect_error "-heat_bc_top: unknown value 'warm'" $box $crack -heat_bc_top warm
 expect_error "-heat_h must be >= 0" $box $crack -heat_h -5
@@ -70,6 +81,19 @@ expect_error "-heat_conductivity must be > 0" $box $crack -heat_conductivity 0
 expect_error "-modes_n must be >= 1" $box $crack -modes -modes_n 0
 expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_target_frequency -5
 expect_error "-modes_defect_radius must be >= 0" $box $crack -modes -modes_defect_radius -1
+# Values once silently replaced or accepted (issue 16): refused, naming the option.
+expect_error "-final_time must be > 0 and finite, got -0.0001" $box $crack -final_time -1e-4
+expect_error "-final_time must be > 0 and finite, got nan" $box $crack -final_time nan
+expect_error "-couple_dt must be > 0 and finite, got 0" $box $crack -couple_dt 0
+expect_error "-couple_dt must be > 0 and finite, got inf" $box $crack -couple_dt inf
+expect_error "-source_amplitude must be finite, got inf" $box $crack -source_amplitude inf
+expect_error "-source_frequency must be finite, got inf" $box $crack -source_frequency inf
+expect_error "-material_E must be finite, got inf" $box $crack -material_E inf
+expect_error "-crack_a0 must be finite, got nan" $box $crack -crack_a0 nan
+expect_error "-wave_ts_type beuler is not supported for waves" $box $crack -wave_ts_type beuler
+expect_error "-wave_ts_rk_type 3bs is not supported for waves" $box $crack -wave_ts_type rk -wave_ts_rk_type 3bs
+expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 30
+expect_error "-max_steps must be >= 1" $box $crack -max_steps 0
 
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """Requirement: vibrotherm-contact drives one MMD cell through a built-in and a
-CSV history with the simulator's -contact_* options, writes the documented
-columns, and its dissipated energy per steady cycle equals the closed form of
-PHYSICS.md §3.3 (independent of the code); bad options are rejected by name.
+CSV history with the simulator's declared contact options, writes the
+documented columns, and its dissipated energy per steady cycle equals the
+closed form of PHYSICS.md §3.3 (independent of the code). -help lists every
+option and writes nothing; unknown, retired and bad values (options, files,
+histories that overflow) exit 2 with one line naming the option and write no
+output file.
 
 usage: test_contact_app.py VIBROTHERM_CONTACT"""
 import csv, math, os, subprocess, sys, tempfile
@@ -24,8 +27,8 @@ with tempfile.TemporaryDirectory() as tmp:
     theta = (2 - nu) / (2 * (1 - nu))
     bs = frac * theta * mu * a
     out = os.path.join(tmp, "cell.csv")
-    r = run(["-crack_law", "mmd", "-contact_normal_law", "power", "-contact_normal_C", str(C),
-             "-contact_normal_p", str(p), "-contact_mu", str(mu), "-contact_nu", str(nu),
+    r = run(["-crack_law", "mmd", "-contact_normal_law", "power", "-contact_power_C", str(C),
+             "-contact_power_p", str(p), "-contact_mu", str(mu), "-material_nu", str(nu),
              "-history_a_offset", str(a), "-history_b_amplitude", str(bs), "-history_cycles", "2",
              "-history_steps_per_cycle", str(steps), "-o", out])
     check(r.returncode == 0, "built-in history run: " + r.stderr)
@@ -50,25 +53,91 @@ with tempfile.TemporaryDirectory() as tmp:
         for r_ in rows:
             f.write("%s,%.17g,%s\n" % (r_["t"], float(r_["a"]) - 1e-9, r_["b"]))
     out2 = os.path.join(tmp, "cell2.csv")
-    r = run(["-history", hist, "-o", out2, "-contact_a0", "1e-9", "-contact_normal_law", "power",
-             "-contact_normal_C", str(C), "-contact_normal_p", str(p), "-contact_mu", str(mu),
-             "-contact_nu", str(nu)])
+    opts = os.path.join(tmp, "law.opts")  # the law from an options file, PETSc syntax
+    with open(opts, "w") as f:
+        f.write("# Hertz law\n-contact_normal_law power\n-contact_power_C %r\n-contact_power_p %r\n" % (C, p))
+    r = run(["-history", hist, "-o", out2, "-contact_a0", "1e-9", "-options_file", opts, "-contact_mu", str(mu),
+             "-material_nu", str(nu)])
     check(r.returncode == 0, "CSV history run: " + r.stderr)
     check(open(hist).readline().startswith("t,a,b"), "the history file was modified")
     rows2 = list(csv.DictReader(open(out2)))
     check(abs(float(rows2[-1]["W"]) - float(rows[-1]["W"])) <= 1e-9 * float(rows[-1]["W"]),
           "CSV and built-in histories disagree")
 
-    for args, text in [(["-contact_mu", "-1"], "-contact_mu must be >= 0"),
-                       (["-contact_nu", "0.7"], "-contact_nu must be in (-1, 0.5)"),
-                       (["-crack_law", "glue"], "-crack_law: unknown value 'glue'"),
-                       (["-contact_normal_law", "table", "-contact_normal_table", os.path.join(tmp, "none.csv")],
-                        "-contact_normal_table"),
-                       (["-history", os.path.join(tmp, "none.csv")], "-history"),
-                       (["-history_steps_per_cycle", "2"], "-history_steps_per_cycle")]:
-        r = run(args + ["-o", os.path.join(tmp, "bad.csv")])
-        check(r.returncode == 2 and text in r.stderr and len(r.stderr.strip().splitlines()) == 1,
+    # The same file through -cell_history.
+    out3 = os.path.join(tmp, "cell3.csv")
+    r = run(["-cell_history", hist, "-o", out3, "-contact_a0", "1e-9", "-options_file", opts, "-contact_mu",
+             str(mu), "-material_nu", str(nu)])
+    check(r.returncode == 0 and open(out3).read() == open(out2).read(), "-cell_history differs from -history")
+
+    # -help: every declared option with its default, exit 0, nothing written.
+    r = run(["-help", "-o", os.path.join(tmp, "help.csv")])
+    check(r.returncode == 0 and not os.path.exists(os.path.join(tmp, "help.csv")), "-help exit %d" % r.returncode)
+    for name in ["-crack_law <mmd>", "-contact_power_C <1e18>", "-contact_power_p <1.5>", "-contact_biwa_C <1e11>",
+                 "-contact_biwa_m <0.5>", "-contact_linear_k <1e14>", "-contact_table_file", "-material_nu <0.33>",
+                 "-crack_linear_kn", "-crack_coulomb_kt", "-crack_mmd_tol", "-history_b_amplitude <5e-9>",
+                 "-history_steps_per_cycle <100>", "-options_file", "-history "]:
+        check(name in r.stdout, "-help does not list %s" % name)
+
+    # Each bad input: exit 2, one line naming the option or file, no output file.
+    bad_csv = os.path.join(tmp, "bad_history.csv")
+    with open(bad_csv, "w") as f:
+        f.write("t,a,b\n0,1e-8,0\n1e-6,1,5e-9,1e-8\n")  # a decimal comma: 4 fields
+    nan_first = os.path.join(tmp, "nan_first.csv")
+    with open(nan_first, "w") as f:
+        f.write("nan,1e-8,0\n0,1e-8,0\n1e-6,1e-8,1e-9\n")  # not a header: an error
+    old_opts = os.path.join(tmp, "old.opts")
+    with open(old_opts, "w") as f:
+        f.write("-contact_normal_m 0.5\n")
+    bad = [(["-contact_mu", "-1"], "-contact_mu must be >= 0"),
+           (["-material_nu", "0.7"], "-material_nu must be in (-1, 0.5)"),
+           (["-crack_law", "glue"], "-crack_law: unknown value 'glue'"),
+           (["-contact_normal_law", "table", "-contact_table_file", os.path.join(tmp, "none.csv")],
+            "-contact_table_file " + os.path.join(tmp, "none.csv") + ": cannot open the file"),
+           (["-contact_normal_law", "table"], "-contact_table_file: a file is required"),
+           (["-history", os.path.join(tmp, "none.csv")], "-history"),
+           (["-history", bad_csv], "-history %s line 3: expected 3 fields t,a,b, got 4" % bad_csv),
+           (["-history", nan_first], "-history %s line 1: field 1 (t): expected a number, got 'nan'" % nan_first),
+           (["-history", nan_first, "-cell_history", nan_first], "-history and -cell_history"),
+           (["-history_steps_per_cycle", "2"], "-history_steps_per_cycle must be in [4"),
+           (["-history_steps_per_cycle", "-100"], "-history_steps_per_cycle must be in [4"),
+           (["-history_cycles", "-2"], "-history_cycles must be > 0"),
+           (["-history_cycles", "1e300"], "-history_cycles x -history_steps_per_cycle must be <="),
+           (["-history_frequency", "-1e5"], "-history_frequency must be > 0"),
+           (["-history_frequency", "inf"], "-history_frequency: expected a number, got 'inf'"),
+           (["-history_b_amplitude", "nan"], "-history_b_amplitude: expected a number, got 'nan'"),
+           (["-history_b_amplitude", "5e191", "-history_a_offset", "1e192"], "is not finite"),
+           (["-history_ramp_cycles", "-1"], "-history_ramp_cycles must be >= 0"),
+           (["-contact_power_C", "-1e11"], "-contact_power_C must be > 0, got -1e+11"),
+           (["-contact_biwa_C", "-1e11"], "-contact_biwa_C must be > 0, got -1e+11"),
+           (["-contact_biwa_C", "0"], "-contact_biwa_C must be > 0, got 0"),
+           (["-contact_biwa_m", "1.5"], "-contact_biwa_m must be in (0, 0.9]"),
+           (["-contact_power_p", "nan"], "-contact_power_p: expected a number, got 'nan'"),
+           (["-contact_linear_k", "1,5e14"], "-contact_linear_k: expected a number, got '1,5e14'"),
+           (["-crack_coulomb_kt", "1e14x"], "-crack_coulomb_kt: expected a number, got '1e14x'"),
+           (["-crack_mmd_max_breakpoints", "2"], "-crack_mmd_max_breakpoints must be in [3"),
+           (["-contact_mu"], "-contact_mu: needs a value"),
+           (["-contact_normal_C", "1e11"], "-contact_normal_C was renamed: use -contact_power_C"),
+           (["-contact_normal_m", "0.5"], "-contact_normal_m was renamed: use -contact_biwa_m"),
+           (["-contact_normal_p", "2"], "-contact_normal_p was renamed: use -contact_power_p"),
+           (["-contact_normal_k", "1e14"], "-contact_normal_k was renamed: use -contact_linear_k"),
+           (["-contact_normal_table", "t.csv"], "-contact_normal_table was renamed: use -contact_table_file"),
+           (["-contact_nu", "0.3"], "-contact_nu was renamed: use -material_nu"),
+           (["-options_file", old_opts], "-contact_normal_m was renamed: use -contact_biwa_m"),
+           (["-contact_muu", "1"], "unknown option -contact_muu; did you mean -contact_mu?"),
+           (["-history_b_amplitud", "1e-9"], "did you mean -history_b_amplitude?"),
+           (["-specimen_width", "0.05"], "unknown option -specimen_width")]
+    for args, text in bad:
+        out_bad = os.path.join(tmp, "bad.csv")
+        r = run(args + ["-o", out_bad])
+        check(r.returncode == 2 and text in r.stderr and len(r.stderr.strip().splitlines()) == 1
+              and r.stderr.startswith("vibrotherm-contact: error: "),
               "bad input %s: exit %d, stderr %r" % (args, r.returncode, r.stderr))
-        check(not os.path.exists(os.path.join(tmp, "bad.csv")), "output written despite %s" % args)
+        check(not os.path.exists(out_bad) and not os.path.exists(out_bad + ".partial"),
+              "output written despite %s" % args)
+    # Without -o the rows go to standard output: none of them for a bad run.
+    r = run(["-history_b_amplitude", "5e191", "-history_a_offset", "1e192"])
+    check(r.returncode == 2 and r.stdout == "", "overflowing history to stdout: exit %d, %d bytes of rows"
+          % (r.returncode, len(r.stdout)))
 
 check.finish()

@@ -17,7 +17,7 @@ cases = {
     "reference": [],
     "mu0": ["-contact_mu", "0"],
     "mu5": ["-contact_mu", "5"],
-    "stiff1000": ["-contact_normal_C", str(1e11 * math.sqrt(1000))],
+    "stiff1000": ["-contact_biwa_C", str(1e11 * math.sqrt(1000))],
     "amplitude1um": ["-source_amplitude", "1e-6"],
     "preclosed": ["-crack_a0", "2e-6"],
     "open": ["-crack_a0", "-3e-7"],

@@ -30,8 +30,8 @@ with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "%s%g_%d" % (wave, ratio, degree))
             args = [exe, "-specimen_width", "%.17g" % (20 * h), "-specimen_height", "%g" % H, "-mesh_h", "%g" % h,
                     "-mesh_h_crack", "%g" % h, "-crack_center", "%.17g,%.17g" % (10 * h, y_crack), "-crack_length",
-                    "%.17g" % (20 * h), "-crack_angle", "0", "-crack_law", "linear", "-contact_normal_k", "%g" % (2 * K),
-                    "-contact_tangential_k", "%g" % (2 * K), "-edge_left", sides, "-edge_right", sides,
+                    "%.17g" % (20 * h), "-crack_angle", "0", "-crack_law", "linear", "-crack_linear_kn", "%g" % (2 * K),
+                    "-crack_linear_kt", "%g" % (2 * K), "-edge_left", sides, "-edge_right", sides,
                     "-edge_bottom", "absorbing", "-source_component", "normal" if wave == "P" else "tangential",
                     "-source_frequency", "%g" % f, "-source_amplitude", "%g" % A, "-source_duration",
                     "%g" % (cycles / f), "-source_ramp_cycles", "2", "-final_time", "%g" % (t_in + cycles / f),

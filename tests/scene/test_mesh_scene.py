@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Requirement: `vibrotherm -mesh_only` on the paper scene writes summary.json,
-mesh.h5 and mesh.xmf (complete, readable), and the serial and 2-rank runs give
+mesh.h5 and mesh.xmf (complete, readable; grids wave, cracks, heat), and the serial and 2-rank runs give
 the same mesh (counts, crack facets, node pairs, length).
 
 usage: test_mesh_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
@@ -29,15 +29,20 @@ with tempfile.TemporaryDirectory() as tmp:
         check(s["ranks"] == ranks, "ranks in summary")
         check(not any(f.endswith(".partial") for f in os.listdir(out)), "partial files left")
         xmf = ET.parse(os.path.join(out, "mesh.xmf")).getroot()
-        grids = {g.get("Name"): g for g in xmf.iter("Grid")}
-        check(set(grids) == {"specimen", "cracks"}, "xmf grids %s" % set(grids))
-        topo = grids["specimen"].find("Topology")
-        check(int(topo.get("NumberOfElements")) == s["mesh"]["cells"], "xmf cell count")
+        grids = {g.get("Name"): g for g in xmf.iter("Grid") if g.get("GridType") == "Uniform"}
+        check(set(grids) == {"wave", "cracks", "heat"}, "xmf grids %s" % set(grids))
+        counts = {"wave": s["mesh"]["cells"], "cracks": s["mesh"]["cohesive_cells"], "heat": s["mesh"]["heat_cells"]}
+        for name, cells in counts.items():
+            if name in grids:
+                topo = grids[name].find("Topology")
+                check(int(topo.get("NumberOfElements")) == cells, "xmf %s cell count" % name)
         try:
             import h5py
             with h5py.File(os.path.join(out, "mesh.h5"), "r") as f:
-                check(f["viz/topology/cells"].shape[0] == s["mesh"]["cells"], "h5 cells")
-                check(f["geometry/vertices"].shape[0] == s["mesh"]["vertices"], "h5 vertices")
+                for name, cells in counts.items():
+                    check(f[name + "/topology"].shape[0] == cells, "h5 %s cells" % name)
+                check(f["wave/geometry"].shape[0] == s["mesh"]["vertices"], "h5 wave vertices")
+                check(f["heat/geometry"].shape[0] == s["mesh"]["heat_vertices"], "h5 heat vertices")
         except ImportError:
             check.fail("python3-h5py missing")
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Requirement: a short run of the paper scene (waves, MMD contact, heat) writes probes.csv,
-energy.csv, fields.h5/.xmf and summary.json; the 2-rank probe series (displacements,
+energy.csv, fields.h5/fields_<grid>.xmf and summary.json; the 2-rank probe series (displacements,
 crack tractions, temperatures) equal the serial ones to 1e-10 of their amplitude; the
 energy budget closes (velocity Verlet); the heat deposited equals the energy the
 interface dissipated to 1e-12 and the heat content equals deposited minus boundary
@@ -42,7 +42,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(all(float(e["heat_deposited"]) <= float(e["dissipated"]) * (1 + 1e-12) for e in energy),
               "heat is never deposited before it is dissipated")
         check(max(float(r["temperature"]) for r in rows if r["probe"] == "4") > 293.15, "crack centre heats")
-        for name in ("fields.h5", "fields.xmf"):
+        for name in ("fields.h5", "fields_wave.xmf", "fields_heat.xmf", "fields_cracks.xmf"):
             check(os.path.exists(os.path.join(out, name)), name + " written")
         # A buried crack of F facets has F − 1 interior vertex pairs, plus F edge-node pairs with Q2.
         facets = summary["mesh"]["cracks"][0]["facets"]

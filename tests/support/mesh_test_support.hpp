@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/mesh/labels.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
 #include "vibrotherm/mesh/plex_access.hpp"
@@ -24,7 +25,9 @@ struct ScopedSpecimen {
   explicit ScopedSpecimen(const std::string& options) {
     status = PetscOptionsClear(nullptr);
     if (!status) status = PetscOptionsInsertString(nullptr, options.c_str());
-    if (!status) status = mesh::SpecimenCreate(PETSC_COMM_WORLD, &specimen);
+    coupling::Scene scene;
+    if (!status) status = coupling::ReadScene(PETSC_COMM_WORLD, &scene);
+    if (!status) status = mesh::SpecimenCreate(PETSC_COMM_WORLD, scene.exchange_length(), &specimen);
     if (!status) status = mesh::ComputeMeshSummary(specimen, &summary);
   }
   ~ScopedSpecimen() { (void)mesh::SpecimenDestroy(&specimen); }

@@ -17,8 +17,8 @@ inline ContactParameters hertz_params(double mu = 0.5, double nu = 0.3) {
   p.mu = mu;
   p.nu = nu;
   p.normal_law = "power";
-  p.normal_C = 1e18;
-  p.normal_p = 1.5;
+  p.power_C = 1e18;
+  p.power_p = 1.5;
   return p;
 }
 

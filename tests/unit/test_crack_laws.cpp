@@ -3,7 +3,11 @@
 // closed forms, and bad input is rejected naming the option.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "contact_test_support.hpp"
+#include "input_error_message.hpp"
 
 namespace vibrotherm::contact {
 namespace {
@@ -12,7 +16,7 @@ TEST(CrackLaws, EveryLawClosesTheEnergyIdentityOnACombinedCycle) {
   for (const auto& entry : crack_laws()) {
     ContactParameters p;
     p.crack_law = entry.name;
-    p.tangential_k = 5e13;
+    p.linear_kt = p.coulomb_kt = 5e13;
     const double s = 1e-8;
     const testing::Path path = [&](double t, double& a, double& b) {
       a = s * (0.3 + 0.8 * std::sin(2 * M_PI * t + 0.3));
@@ -36,8 +40,8 @@ TEST(CrackLaws, EveryLawClosesTheEnergyIdentityOnACombinedCycle) {
 TEST(CrackLaws, LinearSlipIsSchoenbergsSpring) {
   ContactParameters p;
   p.crack_law = "linear";
-  p.normal_k = 3e13;
-  p.tangential_k = 2e13;
+  p.linear_kn = 3e13;
+  p.linear_kt = 2e13;
   auto law = testing::one_cell(p, 0.0, 0.0);
   const StepResult r = law->commit(0, -2e-9, 5e-9);  // works in tension too
   EXPECT_DOUBLE_EQ(r.N, 3e13 * -2e-9);
@@ -50,9 +54,9 @@ TEST(CrackLaws, CoulombSticksThenSlidesAtMuN) {
   p.crack_law = "coulomb";
   p.mu = 0.4;
   p.normal_law = "linear";
-  p.normal_k = 1e14;
-  p.tangential_k = 5e13;
-  const double a = 1e-8, N = 1e14 * a, b_stick = p.mu * N / p.tangential_k;
+  p.linear_k = 1e14;
+  p.coulomb_kt = 5e13;
+  const double a = 1e-8, N = 1e14 * a, b_stick = p.mu * N / p.coulomb_kt;
   auto law = testing::one_cell(p, a, 0.0);
   EXPECT_DOUBLE_EQ(law->commit(0, a, 0.5 * b_stick).T, 0.5 * p.mu * N);
   const StepResult r = law->commit(0, a, 3.0 * b_stick);
@@ -80,36 +84,76 @@ TEST(CrackLaws, ClappingIsTheNormalLawAlone) {
 }
 
 std::string error_of(const ContactParameters& p) {
-  try {
-    create_crack_law(p);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_message([&] { create_crack_law(p); });
 }
 
 TEST(CrackLaws, BadInputIsNamed) {
   ContactParameters p;
   p.mu = -0.1;
-  EXPECT_NE(error_of(p).find("-contact_mu"), std::string::npos);
+  EXPECT_NE(error_of(p).find("-contact_mu must be >= 0"), std::string::npos);
   p = ContactParameters{};
   p.nu = 0.5;
-  EXPECT_NE(error_of(p).find("-contact_nu"), std::string::npos);
+  EXPECT_NE(error_of(p).find("-material_nu must be in (-1, 0.5)"), std::string::npos);
   p.nu = -1.0;
-  EXPECT_NE(error_of(p).find("-contact_nu"), std::string::npos);
+  EXPECT_NE(error_of(p).find("-material_nu"), std::string::npos);
   p = ContactParameters{};
   p.crack_law = "glue";
-  EXPECT_NE(error_of(p).find("-crack_law: unknown law 'glue'"), std::string::npos);
+  EXPECT_NE(error_of(p).find("-crack_law: unknown value 'glue'"), std::string::npos);
   p = ContactParameters{};
   p.normal_law = "cubic";
-  EXPECT_NE(error_of(p).find("-contact_normal_law: unknown law 'cubic'"), std::string::npos);
+  EXPECT_NE(error_of(p).find("-contact_normal_law: unknown value 'cubic'"), std::string::npos);
   p = ContactParameters{};
   p.normal_law = "power";
-  p.normal_p = 0.5;
-  EXPECT_NE(error_of(p).find("-contact_normal_p"), std::string::npos);
+  p.power_p = 0.5;
+  EXPECT_NE(error_of(p).find("-contact_power_p must be in [1, 10]"), std::string::npos);
   p = ContactParameters{};
-  p.normal_m = 1.0;
-  EXPECT_NE(error_of(p).find("-contact_normal_m"), std::string::npos);
+  p.biwa_C = -1e11;  // was a "law default" sentinel once
+  EXPECT_NE(error_of(p).find("-contact_biwa_C must be > 0, got -1e+11"), std::string::npos);
+  p = ContactParameters{};
+  p.biwa_m = 1.0;
+  EXPECT_NE(error_of(p).find("-contact_biwa_m"), std::string::npos);
+  p = ContactParameters{};
+  p.biwa_C = 1e300;  // in range, but K0 = (2(1-m)C_B)^2 overflows
+  EXPECT_NE(error_of(p).find("-contact_biwa_C 1e+300 with -contact_biwa_m 0.5 overflows"), std::string::npos);
+}
+
+TEST(ContactParameters, EachLawDeclaresItsOwnOptions) {
+  std::vector<std::string> names;
+  for (const ContactParameter& param : contact_parameters()) names.push_back(param.spec.name);
+  const std::vector<std::string> expected = {
+      "-crack_law",        "-contact_normal_law", "-contact_mu",      "-contact_a0",
+      "-crack_linear_kn",  "-crack_linear_kt",    "-crack_coulomb_kt", "-material_nu",
+      "-crack_mmd_tol",    "-crack_mmd_max_breakpoints", "-contact_power_C", "-contact_power_p",
+      "-contact_biwa_C",   "-contact_biwa_m",     "-contact_linear_k", "-contact_table_file"};
+  EXPECT_EQ(names, expected);
+  for (const NormalLawEntry& e : normal_laws())
+    for (const ContactParameter& param : e.parameters())
+      EXPECT_EQ(param.spec.name.rfind(std::string("-contact_") + e.name + "_", 0), 0u) << param.spec.name;
+  for (const RenamedOption& r : renamed_contact_options())
+    EXPECT_EQ(std::count(names.begin(), names.end(), r.old_name), 0) << r.old_name;
+}
+
+// Every real parameter refuses NaN, ±inf and values just outside its declared
+// range, whichever law is selected, with a message naming the option.
+TEST(ContactParameters, EveryNumberOutsideItsRangeIsRefusedNamingTheOption) {
+  EXPECT_EQ(error_of(ContactParameters{}), "");  // the defaults are valid values
+  int checked = 0;
+  for (const ContactParameter& param : contact_parameters()) {
+    const auto* field = std::get_if<double ContactParameters::*>(&param.field);
+    if (!field) continue;
+    const Range& r = param.spec.range;
+    std::vector<double> bad = {std::nan(""), HUGE_VAL, -HUGE_VAL};
+    if (std::isfinite(r.lo)) bad.push_back(r.lo_open ? r.lo : std::nextafter(r.lo, -HUGE_VAL));
+    if (std::isfinite(r.hi)) bad.push_back(r.hi_open ? r.hi : std::nextafter(r.hi, HUGE_VAL));
+    for (double v : bad) {
+      ContactParameters p;
+      p.crack_law = "open";  // a law that reads none of them
+      p.*(*field) = v;
+      EXPECT_EQ(error_of(p).rfind(param.spec.name + " must be", 0), 0u) << param.spec.name << " = " << v;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 3 * 11);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(MmdExactness, OneStepEqualsItsSubsteps) {
   for (const char* normal : {"biwa", "power", "linear"}) {
     ContactParameters p = biwa_params(0.8);
     p.normal_law = normal;
-    if (p.normal_law == "power") p.normal_C = 1e18;
+    if (p.normal_law == "power") p.power_C = 1e18;
     const double scale = 1e-8, tm = p.theta() * p.mu;
     for (int trial = 0; trial < 200; ++trial) {
       auto big = testing::one_cell(p, scale, 0.0);

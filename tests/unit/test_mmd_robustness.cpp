@@ -34,7 +34,7 @@ TEST(MmdRobustness, MillionNoisyStepsStayBounded) {
     EXPECT_TRUE(ok) << "step " << k << ": T = " << r.T << " muN = " << p.mu * N << " dW = " << r.dW;
     max_points = std::max(max_points, cell.breakpoints());
   }
-  // Documented bound: -contact_mmd_max_breakpoints (1024 by default).
+  // Documented bound: -crack_mmd_max_breakpoints (1024 by default).
   EXPECT_LE(max_points, static_cast<std::size_t>(p.mmd_max_breakpoints));
   RecordProperty("max_breakpoints_seen", static_cast<int>(max_points));
 }

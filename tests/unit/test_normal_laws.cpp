@@ -56,7 +56,7 @@ TEST(NormalLaws, AllLawsAreConsistentAndConvex) {
         const double a = 1e-9 * i * i;
         text += csv_row(a, 1e6 * (std::exp(a / 1e-7) - 1.0 - a / 1e-7));
       }
-      p.normal_table = write_table("convex.csv", text);
+      p.table_file = write_table("convex.csv", text);
     }
     expect_consistent(*create_normal_law(p), 4e-7);
   }
@@ -66,19 +66,17 @@ TEST(NormalLaws, BiwaStiffnessIsCBTimesNToTheM) {
   ContactParameters p;
   p.normal_law = "biwa";
   for (double m : {0.3, 0.5, 0.8}) {
-    p.normal_m = m;
-    p.normal_C = 1e14 / std::pow(1e6, m);
+    p.biwa_m = m;
+    p.biwa_C = 1e14 / std::pow(1e6, m);
     const auto law = create_normal_law(p);
     for (double a : {1e-10, 1e-9, 1e-8, 3e-8}) {
       const NormalLawValue v = law->eval(a);
       // K = dN/d(2a) = C_B N^m by definition (Biwa et al. 2004).
-      EXPECT_NEAR(0.5 * v.dN, p.normal_C * std::pow(v.N, m), 1e-12 * 0.5 * v.dN) << "m = " << m;
+      EXPECT_NEAR(0.5 * v.dN, p.biwa_C * std::pow(v.N, m), 1e-12 * 0.5 * v.dN) << "m = " << m;
     }
   }
-  // The paper default: K = 1e14 Pa/m at N = 1 MPa.
-  p.normal_m = 0.5;
-  p.normal_C = -1.0;
-  const auto law = create_normal_law(p);
+  // The declared default is the paper's: K = 1e14 Pa/m at N = 1 MPa.
+  const auto law = create_normal_law(ContactParameters{});
   const double a_1MPa = 1e-8;  // N = (1e11 a)² = 1e6 at a = 10 nm
   EXPECT_NEAR(law->eval(a_1MPa).N, 1e6, 1e-6);
   EXPECT_NEAR(0.5 * law->eval(a_1MPa).dN, 1e14, 1e2);
@@ -90,7 +88,7 @@ TEST(NormalLaws, TableReproducesQuadraticDataExactly) {
   std::string text = "# a [m], N [Pa]\n";
   const double c = 1e22;
   for (double a : {0.0, 1e-9, 2.5e-9, 4e-9, 7e-9, 1e-8}) text += csv_row(a, c * a * a);
-  p.normal_table = write_table("quadratic.csv", text);
+  p.table_file = write_table("quadratic.csv", text);
   const auto law = create_normal_law(p);
   for (double a = 1e-11; a < 1e-8; a *= 1.3) {
     EXPECT_NEAR(law->eval(a).N, c * a * a, 1e-12 * c * 1e-16) << a;
@@ -102,7 +100,7 @@ TEST(NormalLaws, BadTablesAreRejectedNamingTheLine) {
   ContactParameters p;
   p.normal_law = "table";
   auto error_of = [&](const std::string& text) -> std::string {
-    p.normal_table = write_table("bad.csv", text);
+    p.table_file = write_table("bad.csv", text);
     try {
       create_normal_law(p);
     } catch (const InputError& e) {
@@ -114,12 +112,12 @@ TEST(NormalLaws, BadTablesAreRejectedNamingTheLine) {
   EXPECT_NE(error_of("0,0\n1e-9,10\n2e-9,15\n3e-9,40\n").find("line 3: slope decreases"), std::string::npos);
   EXPECT_NE(error_of("0,0\n1e-9,x\n").find("line 2"), std::string::npos);
   EXPECT_NE(error_of("0,0\n2e-9,10\n1e-9,20\n").find("line 3: a must increase"), std::string::npos);
-  p.normal_table = "/nonexistent/table.csv";
+  p.table_file = "/nonexistent/table.csv";
   try {
     create_normal_law(p);
     ADD_FAILURE() << "missing file accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("-contact_normal_table /nonexistent/table.csv"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("-contact_table_file /nonexistent/table.csv"), std::string::npos);
   }
 }
 

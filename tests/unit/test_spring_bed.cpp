@@ -64,7 +64,7 @@ TEST(SpringBedReference, CombinedHistoryAgrees) {
     ContactParameters p;
     p.mu = 0.7;
     p.normal_law = normal;
-    if (p.normal_law == "power") p.normal_C = 1e18;
+    if (p.normal_law == "power") p.power_C = 1e18;
     const auto law = create_normal_law(p);
     const double s = 1e-8, tm = p.theta() * p.mu;
     auto path = [&](double t, double& a, double& b) {

@@ -32,11 +32,16 @@ struct SineHistory {
   double ramp_cycles = 0.0;     ///< amplitudes grow linearly over this many cycles
 };
 
+/// The most steps make_sine_history() generates.
+constexpr long kMaxHistorySteps = 100000000;
+
 /// Samples the history at steps_per_cycle points per cycle (t = 0 included).
 std::vector<HistoryPoint> make_sine_history(const SineHistory& h);
 
 /// Drives cell 0 of law (initialised at the first point, a + a0) through the
 /// history and writes t,a,b,b0,btilde,N,T,state,dW,W rows. Returns Σ dW.
+/// InputError as soon as a row would hold a non-finite number (the rows
+/// written so far must then be discarded).
 double drive_cell(CrackLaw& law, const std::vector<HistoryPoint>& history, double a0, std::ostream& out);
 
 }  // namespace vibrotherm::contact

@@ -1,8 +1,9 @@
-// Parameters of a crack law, with the option names users type.
+// Parameters of the crack laws and normal laws, with the option names users type.
 //
-// Plain data (no PETSc): the simulator and vibrotherm-contact fill it from the
-// -contact_* / -crack_law options; validate() rejects bad values with a message
-// that names the option.
+// Plain data (no PETSc). Each law declares its own options (name, help, unit,
+// default, allowed values) next to its factory; contact_parameters() lists
+// them all, and the simulator and vibrotherm-contact both read that list.
+// A default-constructed ContactParameters holds the declared defaults.
 #pragma once
 
 #include <stdexcept>
@@ -17,26 +18,31 @@ class InputError : public std::runtime_error {
 };
 
 struct ContactParameters {
-  std::string crack_law = "mmd";    ///< -crack_law open|linear|clapping|coulomb|mmd
-  double mu = 1.0;                  ///< -contact_mu   friction coefficient (>= 0)
-  double nu = 0.33;                 ///< -contact_nu   Poisson ratio (-1, 0.5)
-  std::string normal_law = "biwa";  ///< -contact_normal_law power|biwa|linear|table
-  /// -contact_normal_C: power: C in N = C a^p; biwa: C_B in K = C_B N^m.
-  /// Negative means "law default" (power 1e18 Pa/m^1.5, biwa 1e11 Pa^0.5/m).
-  double normal_C = -1.0;
-  double normal_p = 1.5;            ///< -contact_normal_p (power), >= 1
-  double normal_m = 0.5;            ///< -contact_normal_m (biwa), in (0, 1)
-  double normal_k = 1e14;           ///< -contact_normal_k (linear law / linear crack law) [Pa/m]
-  std::string normal_table;         ///< -contact_normal_table FILE (a,N CSV)
-  double a0 = 0.0;                  ///< -contact_a0 initial approach added to a [m]
-  double tangential_k = 1e14;       ///< -contact_tangential_k (linear, coulomb) [Pa/m]
-  double mmd_rel_tol = 1e-9;        ///< -contact_mmd_tol: shortest kept segment / a
-  int mmd_max_breakpoints = 1024;   ///< -contact_mmd_max_breakpoints: hard memory bound
+  ContactParameters();  ///< every field at its declared default
+
+  // Common to all laws (contact_parameters.cpp).
+  std::string crack_law;   ///< -crack_law open|linear|clapping|coulomb|mmd
+  std::string normal_law;  ///< -contact_normal_law power|biwa|linear|table
+  double mu;               ///< -contact_mu friction coefficient (coulomb, mmd)
+  double a0;               ///< -contact_a0 initial approach added to a [m]
+
+  // Normal laws (normal_law_<name>.cpp).
+  double power_C, power_p;  ///< -contact_power_C, -contact_power_p: N = C a^p
+  double biwa_C, biwa_m;    ///< -contact_biwa_C, -contact_biwa_m: K = C_B N^m
+  double linear_k;          ///< -contact_linear_k: N = k a
+  std::string table_file;   ///< -contact_table_file: CSV of a,N
+
+  // Crack laws (crack_law_<name>.cpp).
+  double linear_kn, linear_kt;  ///< -crack_linear_kn, -crack_linear_kt (Schoenberg)
+  double coulomb_kt;            ///< -crack_coulomb_kt: tangential stiffness while stuck
+  double nu;                    ///< -material_nu: the material's Poisson ratio (mmd: Mindlin's θ)
+  double mmd_rel_tol;           ///< -crack_mmd_tol: shortest kept segment / a
+  int mmd_max_breakpoints;      ///< -crack_mmd_max_breakpoints: hard memory bound
 
   /// Mindlin's compliance ratio θ = (2 − ν) / (2 (1 − ν)).
   double theta() const { return (2.0 - nu) / (2.0 * (1.0 - nu)); }
 
-  /// Throws InputError naming the first invalid option.
+  /// Throws InputError naming the first field outside its declared range.
   void validate() const;
 };
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/contact/contact_parameter_list.hpp"
 #include "vibrotherm/contact/memory_diagram.hpp"
 
 namespace vibrotherm::contact {
@@ -47,6 +47,8 @@ class CrackLaw {
   virtual bool can_dissipate() const = 0;
   /// False for a law that never transmits any traction (open).
   virtual bool has_contact() const = 0;
+  /// The bound |T| ≤ friction_bound() · N the law keeps (μ; +∞ for laws without friction limit).
+  virtual double friction_bound() const = 0;
 };
 
 using CrackLawFactory = std::unique_ptr<CrackLaw> (*)(const ContactParameters&);
@@ -55,10 +57,11 @@ struct CrackLawEntry {
   const char* name;
   const char* help;
   CrackLawFactory create;
+  const ContactParameterList& (*parameters)();  ///< the options this law reads besides the common ones
 };
 
-/// All registered crack laws. Adding one: a new file with its factory and one
-/// line in crack_law_registry.cpp.
+/// All registered crack laws. Adding one: a new file with its factory and its
+/// parameter list, and one line in crack_law_registry.cpp.
 const std::vector<CrackLawEntry>& crack_laws();
 
 /// Validates params and creates the law named by params.crack_law.
@@ -69,5 +72,9 @@ std::unique_ptr<CrackLaw> create_linear_slip_law(const ContactParameters&);
 std::unique_ptr<CrackLaw> create_clapping_law(const ContactParameters&);
 std::unique_ptr<CrackLaw> create_coulomb_law(const ContactParameters&);
 std::unique_ptr<CrackLaw> create_mmd_law(const ContactParameters&);
+
+const ContactParameterList& linear_slip_law_parameters();
+const ContactParameterList& coulomb_law_parameters();
+const ContactParameterList& mmd_law_parameters();
 
 }  // namespace vibrotherm::contact

@@ -1,12 +1,13 @@
-// Registry of normal laws: name → factory. Adding a law is one new file with
-// its factory and one line in the table of normal_law_registry.cpp.
+// Registry of normal laws: name → factory and parameters. Adding a law is one
+// new file with its factory and parameter list, and one line in the table of
+// normal_law_registry.cpp.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/contact/contact_parameter_list.hpp"
 #include "vibrotherm/contact/normal_law.hpp"
 
 namespace vibrotherm::contact {
@@ -17,6 +18,7 @@ struct NormalLawEntry {
   const char* name;
   const char* help;
   NormalLawFactory create;
+  const ContactParameterList& (*parameters)();  ///< the options this law reads
 };
 
 /// All registered normal laws, in the order -help lists them.
@@ -31,6 +33,11 @@ std::unique_ptr<NormalLaw> create_power_law(const ContactParameters&);
 std::unique_ptr<NormalLaw> create_biwa_law(const ContactParameters&);
 std::unique_ptr<NormalLaw> create_linear_law(const ContactParameters&);
 std::unique_ptr<NormalLaw> create_table_law(const ContactParameters&);
+
+const ContactParameterList& power_law_parameters();
+const ContactParameterList& biwa_law_parameters();
+const ContactParameterList& linear_law_parameters();
+const ContactParameterList& table_law_parameters();
 
 /// N = C a^p with p >= 1 (Hertz: p = 3/2). Exposed for the Biwa law.
 std::unique_ptr<NormalLaw> make_power_law(double C, double p, std::string name);

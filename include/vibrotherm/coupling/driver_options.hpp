@@ -14,10 +14,13 @@ enum class HeatChoice { Auto, On, Off };       ///< -heat auto|on|off
 struct DriverOptions {
   PhysicsChoice physics = PhysicsChoice::All;
   HeatChoice heat = HeatChoice::Auto;  ///< auto: only when the crack can dissipate
+  bool thermoelastic = false;          ///< -thermoelastic off|one_way: heat from tr(ε̇) of the waves
   double heat_crack_power = 0.0;      ///< -heat_crack_power [W/m²] (-physics heat)
   double final_time = -1.0;           ///< -final_time [s] (default: the source duration)
   double couple_dt = -1.0;            ///< -couple_dt [s] (default: 1/8 of the source period)
+  PetscInt heat_substeps = 3;         ///< -heat_substeps: heat steps per coupling interval (each with its own friction energy)
   double quiet_fraction = 1e-2;       ///< -wave_quiet_fraction
+  double max_steps = 2e8;             ///< -max_steps: a run whose wave steps would exceed it is refused at setup
   std::vector<double> output_times;   ///< -output_times t1,t2,... (fields.h5)
   PetscInt energy_every = 10;         ///< -energy_every: steps between energy.csv rows (waves without heat)
   PetscInt probe_every = 1;           ///< -probe_every: steps between probe rows
@@ -27,5 +30,8 @@ struct DriverOptions {
   PetscInt crack_state_every = 20;    ///< -crack_state_every: steps between crack_state.csv records (0: none)
 };
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options);
+
+/// The heat exchange interval: -couple_dt, or 1/8 of the source period.
+double CouplingInterval(const DriverOptions& options, double source_frequency);
 
 }  // namespace vibrotherm::coupling

@@ -62,6 +62,9 @@ class LagrangeSpace {
   PetscErrorCode Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
   /// Basis values at a reference point (nodes_per_cell values).
   PetscErrorCode BasisAt(const std::array<double, 2>& ref, std::vector<double>* phi) const;
+  /// Basis values and reference-coordinate derivatives ([node][2]) at a reference point.
+  PetscErrorCode BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
+                                       std::vector<double>* dphi) const;
 
  private:
   DM dm_ = nullptr;

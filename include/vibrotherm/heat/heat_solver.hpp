@@ -1,16 +1,18 @@
-// Heat conduction on the unsplit mesh (PHYSICS.md §2), its own PETSc TS
-// (prefix -heat_ while coupled, -heat_free_ once the waves are gone; Crank-Nicolson with adaptive steps by default):
+// Heat conduction on the heat mesh (PHYSICS.md §2), its own PETSc TS: prefix
+// -heat_ while coupled (backward Euler, fixed steps, direct solver), -heat_free_
+// once the waves are gone (Crank-Nicolson with adaptive steps):
 //   ρ c_p Ṫ = ∇·(k ∇T) + q δ_Γ,   T = T0 on sink edges, h (T − T_ext) out of convective ones,
 // discretised for the rise θ = T − T0 (so the TS tolerances measure the rise,
-// not 293 K) as M θ̇ + (K + H) θ = Q(t) + G with consistent mass M,
-// conductivity K, lumped convective film H, G = H (T_ext − T0), all assembled
+// not 293 K) as M θ̇ + (K + H) θ = Q(t) + G with row-sum lumped mass M
+// (-heat_lumped_mass 0: consistent), conductivity K, lumped convective film H,
+// G = H (T_ext − T0), all assembled
 // once. Sink dofs are algebraic rows θ = 0; their columns are zeroed too, which
-// keeps the Jacobian symmetric positive definite (CG + BoomerAMG by default).
+// keeps the Jacobian symmetric positive definite.
 //
-// Sources: a power per unit length on each crack facet (SetCrackPower, for
-// prescribed scenes) and point sources [W per metre of depth] at fixed points
-// (SetSourcePowers: the contact cells of the crack interface). Both are
-// assembled with the heat basis, so the injected power is exactly their sum.
+// Sources: a load vector Q (SetSourceLoad: the friction heat, assembled by
+// coupling/friction_heat as a line density on the crack) or a uniform power
+// per unit crack area on each crack (SetCrackPower, for prescribed scenes).
+// Both are integrated with the heat basis, so the injected power is exactly 1ᵀQ.
 //
 // Accounting per accepted step n (h = t_n − t_{n−1}): deposited += h·1ᵀQ_n;
 // boundary loss += h·1ᵀ(H θ_n − G) − Σ_sink r_i with r = M Δθ + h((K+H)θ_n − Q_n − G),
@@ -34,9 +36,20 @@ struct HeatMaterial {
   double conductivity = 237.0;  ///< -heat_conductivity [W/(m K)]
   double capacity = 900.0;      ///< -heat_capacity c_p [J/(kg K)]
   double T0 = 293.15;           ///< -heat_T0 [K]
+  double expansion = 23e-6;     ///< -material_expansion: linear thermal expansion α_L [1/K] (thermoelastic heating)
   double diffusivity() const { return conductivity / (density * capacity); }
 };
 PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* material);
+
+/// Everything the heat solver is built from (read once with the scene).
+struct HeatOptions {
+  HeatMaterial material;
+  PetscInt degree = 1;   ///< -heat_degree 1|2
+  bool lumped = true;    ///< -heat_lumped_mass: row sums (no ringing at the crack, see README)
+  HeatBoundaryOptions boundary;
+};
+/// -heat_* (material, degree, mass, edges). Collective.
+PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options);
 
 class HeatSolver {
  public:
@@ -45,15 +58,13 @@ class HeatSolver {
   HeatSolver& operator=(const HeatSolver&) = delete;
   ~HeatSolver();
 
-  /// Builds the space (-heat_degree 1|2), M, K, the edges (-heat_bc...) and the TS on dm (the unsplit mesh).
-  PetscErrorCode Setup(DM dm, const HeatMaterial& material);
-  /// Sets the line source: power per unit length [W/m²] for each crack facet,
-  /// indexed by its crack_face id (every rank passes the same vector).
-  PetscErrorCode SetCrackPower(const std::vector<double>& power_by_facet);
-  /// Fixes the point sources (x, y pairs, the same on every rank). Collective.
-  PetscErrorCode SetSourcePoints(const std::vector<double>& xy);
-  /// Sets the power [W/m] of every point source (the same vector on every rank).
-  PetscErrorCode SetSourcePowers(const std::vector<double>& power);
+  /// Builds the space, M, K, the edges and the TS on dm (the heat mesh).
+  PetscErrorCode Setup(DM dm, const HeatOptions& options);
+  /// Sets the line source: a uniform power per unit crack area [W/m²] on each
+  /// crack (every rank passes the same vector, one value per crack). Collective.
+  PetscErrorCode SetCrackPower(const std::vector<double>& power_by_crack);
+  /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
+  PetscErrorCode SetSourceLoad(Vec load);
   /// Fixes the probe points (x, y pairs). Collective.
   PetscErrorCode SetProbePoints(const std::vector<double>& xy);
   /// Temperatures [K] at the probe points, on every rank. Collective.
@@ -63,11 +74,11 @@ class HeatSolver {
   /// fewer steps on meshes much finer than the diffusion length (measured on the
   /// Carslaw-Jaeger case) but closes the balance only to ~1 %.
   PetscErrorCode UseFreeIntegrator();
-  /// Advances the TS (adaptive) to exactly t_end.
+  /// Advances with the free (adaptive) integrator to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
-  /// Advances to t_end in one step (coupling intervals: the source jumps at
-  /// every interval, so error control there would only chase the jumps).
-  PetscErrorCode AdvanceInOneStep(double t_end);
+  /// Advances to t_end in `steps` equal steps (coupling intervals: the source
+  /// jumps at every interval, so error control there would only chase the jumps).
+  PetscErrorCode AdvanceInSteps(double t_end, PetscInt steps);
   /// Called after every accepted step (recording while the heat TS runs alone).
   std::function<PetscErrorCode(const HeatSolver&)> on_step;
 
@@ -95,7 +106,6 @@ class HeatSolver {
   static PetscErrorCode PostStep(TS ts);
   PetscErrorCode Account(double h);
   PetscErrorCode ScaleTolerance();
-  PetscErrorCode SetLoad(Vec local_load);  ///< Q from a local vector (ADD to global), and 1ᵀQ
 
   DM dm_ = nullptr;
   fe::LagrangeSpace space_;
@@ -107,13 +117,15 @@ class HeatSolver {
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   /// Per crack facet id: (local dof offsets, weights) to build Q.
   struct FacetLoad {
-    PetscInt id;
+    PetscInt crack;  ///< 0-based
     std::vector<PetscInt> local_offsets;
     std::vector<double> weights;
   };
   std::vector<FacetLoad> facets_;
-  std::vector<fe::LocatedPoint> sources_, probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, TS* ts);
+  std::vector<fe::LocatedPoint> probes_;
+  PetscErrorCode CreateTS(const char* prefix, TSType type, bool fixed_step, TS* ts);
+  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);
+  static constexpr PetscInt kDirectSolveDofs = 50000;  ///< above: CG + AMG even for fixed steps
   TS coupled_ts_ = nullptr, free_ts_ = nullptr;  ///< prefixes -heat_ and -heat_free_
   TS ts_ = nullptr;                             ///< the one in use
   double time_ = 0.0, deposited_ = 0.0, boundary_loss_ = 0.0;

@@ -1,4 +1,6 @@
-// The -crack_law and -contact_* options, shared by vibrotherm and vibrotherm-contact.
+// The simulator's reader of the declared contact options (-crack_law, -contact_*,
+// -crack_<law>_*, -material_nu); vibrotherm-contact reads the same declarations
+// without PETSc (src/app/contact).
 #pragma once
 
 #include <petscsys.h>
@@ -7,8 +9,10 @@
 
 namespace vibrotherm {
 
-/// Reads the options into params (defaults are params' values on entry),
-/// listing them in -help; validates, naming the offending option.
+/// Reads the declared contact options (contact::contact_parameters()) into
+/// params: an option not given keeps its value on entry (the declared default
+/// for a default-constructed params). Retired names and bad values are user
+/// errors naming the option; -help lists every option with help and default.
 PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& params);
 
 }  // namespace vibrotherm

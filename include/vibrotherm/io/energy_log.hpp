@@ -1,6 +1,7 @@
 // energy.csv (J per metre of depth), rank 0, written atomically:
 //   t,work_source,kinetic,strain,radiated,interface_stored,dissipated,
-//   heat_deposited,heat_content,heat_boundary_loss,budget_error,integrator_correction
+//   heat_deposited,heat_content,heat_boundary_loss,budget_error,integrator_correction,
+//   heat_friction,heat_thermoelastic   (heat_deposited split by its sources)
 // budget_error = (work_source − kinetic − strain − integrator_correction −
 //                 radiated − interface_stored − dissipated) / max(work_source so far);
 // integrator_correction: the time integrator's own energy term (velocity
@@ -20,6 +21,7 @@ namespace vibrotherm::io {
 struct EnergyRow {
   double t = 0, work_source = 0, kinetic = 0, strain = 0, radiated = 0, interface_stored = 0, dissipated = 0,
          heat_deposited = 0, heat_content = 0, heat_boundary_loss = 0, integrator_correction = 0;
+  double heat_friction = 0, heat_thermoelastic = 0;
 };
 
 class EnergyLog {

@@ -1,11 +1,15 @@
-// fields.h5 + fields.xmf: vertex fields of several meshes at chosen times, for
-// ParaView (XDMF temporal collections, one per mesh). Layout of fields.h5:
-//   /<mesh>/geometry            vertices × 2
-//   /<mesh>/topology            bulk cells × corners (global vertex numbers)
-//   /<mesh>/<field>_<k>         vertices × components, output number k
-// Meshes here: "heat" (unsplit: temperature) and "wave" (split: displacement,
-// velocity, contact_state). The .h5 is written as .partial and renamed, and the
-// .xmf appears last, so a crash never leaves files that look complete.
+// HDF5 fields of several grids at chosen outputs, indexed by XDMF for ParaView.
+// Layout of the .h5 (every dataset has a string attribute `units`; every
+// per-output dataset has the attribute `time` [s], or `frequency` [Hz] for modes):
+//   /<grid>/geometry            vertices × 2 [m]
+//   /<grid>/topology            cells × corners (global vertex numbers; no units)
+//   /<grid>/<field>_<k>         vertices × components (node fields) or cells × 1
+//                               (cell fields) at output k; vectors have 3
+//                               components (z = 0) so ParaView sees vectors
+// Grids: a mesh's bulk cells (AddMesh), its cohesive cells as segments on the
+// mesh's vertices (AddCohesiveCells), or free segments with their own points
+// (AddSegments). The .h5 is written as .partial and renamed; the .xmf files
+// appear last, so a crash never leaves files that look complete.
 #pragma once
 
 #include <petscviewer.h>
@@ -16,40 +20,78 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/io/plex_grid.hpp"
+#include "vibrotherm/io/xdmf_index.hpp"
 
 namespace vibrotherm::io {
 
+/// The .xmf files Finish writes next to <stem>.h5.
+enum class XdmfLayout {
+  kSeriesPerGrid,  ///< <stem>_<grid>.xmf per grid: its outputs as a temporal collection (fields.h5)
+  kSingleSeries,   ///< <stem>.xmf: the outputs of the file's one grid (modes.h5)
+  kStaticGrids,    ///< <stem>.xmf: every grid, no fields, as a spatial collection (mesh.h5)
+};
+
 class FieldFile {
  public:
+  FieldFile() = default;
+  FieldFile(const FieldFile&) = delete;
+  FieldFile& operator=(const FieldFile&) = delete;
   ~FieldFile();
-  PetscErrorCode Open(MPI_Comm comm, const std::string& h5_path);
-  /// Writes the geometry and topology of space's DM under /name. Collective.
+  /// `axis`: the attribute naming an output's position, "time" [s] or "frequency" [Hz].
+  PetscErrorCode Open(MPI_Comm comm, const std::string& h5_path, XdmfLayout layout, const std::string& axis = "time");
+  /// The bulk cells of dm as grid `name` (geometry and topology). Collective.
+  PetscErrorCode AddMesh(const std::string& name, DM dm);
+  /// The same for the DM of space, whose global vectors WriteField then takes.
   PetscErrorCode AddMesh(const std::string& name, const fe::LagrangeSpace& space);
-  /// Writes the vertex values of a global vector of the mesh's space at output k (time t).
-  PetscErrorCode WriteField(const std::string& mesh, const std::string& field, Vec global, int k, double t);
-  /// Writes a scalar vertex field given as (local point, value) pairs, `fill` elsewhere
+  /// The cohesive cells of grid `mesh`'s DM as grid `name` of 2-node lines on its
+  /// vertices; nothing when the DM has none.
+  PetscErrorCode AddCohesiveCells(const std::string& name, const std::string& mesh);
+  /// Grid `name` of this rank's line segments, x0 y0 x1 y1 each, with points of their own.
+  PetscErrorCode AddSegments(const std::string& name, const std::vector<double>& ends);
+  bool has_grid(const std::string& name) const { return grids_.count(name) > 0; }
+
+  /// Vertex values of a global vector of the grid's space at output k (time t).
+  PetscErrorCode WriteField(const std::string& grid, const std::string& field, const char* units, Vec global, int k,
+                            double t);
+  /// A scalar vertex field given as (local point, value) pairs, `fill` elsewhere
   /// (pairs at points that are not vertices, e.g. degree-2 edge nodes, are skipped).
-  PetscErrorCode WriteVertexValues(const std::string& mesh, const std::string& field,
+  PetscErrorCode WriteVertexValues(const std::string& grid, const std::string& field, const char* units,
                                    const std::vector<std::pair<PetscInt, double>>& values, double fill, int k,
                                    double t);
-  /// Closes fields.h5 and writes fields.xmf. Collective.
+  /// A scalar cell field: one value per owned cell, in the order the grid was added.
+  PetscErrorCode WriteCellValues(const std::string& grid, const std::string& field, const char* units,
+                                 const std::vector<double>& values, int k, double t);
+  /// Closes the .h5 and writes the .xmf files. Collective.
   PetscErrorCode Finish();
   bool open() const { return viewer_ != nullptr; }
 
  private:
-  struct Mesh {
+  struct Grid {
+    DM dm = nullptr;                          ///< null for free segments
     const fe::LagrangeSpace* space = nullptr;
-    IS numbering = nullptr;  ///< DMPlexGetVertexNumbering (not owned)
-    PetscInt vertices = 0, cells = 0, corners = 0, owned = 0;
-    std::map<int, std::vector<std::pair<std::string, int>>> fields;  ///< k → (field, components)
+    IS numbering = nullptr;                   ///< vertex numbering of dm (not owned)
+    std::string points;                       ///< the grid whose geometry this one uses
+    XdmfGrid xdmf;
+    PetscInt owned_vertices = 0, owned_cells = 0;
+    std::map<int, std::vector<XdmfAttribute>> outputs;  ///< k → fields written
   };
-  PetscErrorCode Write(const std::string& mesh, const std::string& field, int components,
-                       const std::vector<PetscInt>& rows, const std::vector<double>& values, int k, double t);
+  struct Dataset {
+    std::string grid, field, units;
+    int components = 1;
+    bool cell = false;
+  };
+  PetscErrorCode AddGrid(const std::string& name, Grid grid, PetscInt corners, const std::vector<PetscInt>& cells);
+  PetscErrorCode Write(const Dataset& d, const std::vector<PetscInt>& rows, const std::vector<double>& values,
+                       int k, double t);
+  PetscErrorCode WriteXdmf() const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;
-  std::string path_;
+  std::string path_, axis_;
+  XdmfLayout layout_ = XdmfLayout::kSeriesPerGrid;
   PetscViewer viewer_ = nullptr;
-  std::map<std::string, Mesh> meshes_;
+  std::map<std::string, Grid> grids_;
+  std::vector<std::string> order_;  ///< grid names in the order added
   std::map<int, double> times_;
 };
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "vibrotherm/fe/point_location.hpp"
+#include "vibrotherm/interface/crack_record.hpp"
 #include "vibrotherm/io/atomic_file.hpp"
 
 namespace vibrotherm::io {
@@ -34,8 +35,8 @@ class PointProbes {
   PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path);
   /// Holds one row per probe with displacement u and velocity v (global vectors).
   PetscErrorCode Record(double t, Vec u, Vec v);
-  /// Holds a crack-probe row (rank 0): x, y, ux, uy of the + node, then a, b, b0, N, T, state, power, W.
-  void RecordCrack(double t, std::size_t probe, double x, double y, double ux, double uy, const double* crack);
+  /// Holds a crack-probe row (rank 0).
+  void RecordCrack(double t, std::size_t probe, const interface::CrackCellRecord& record);
   /// Writes the held rows; temperature from `temperature` (nullptr: nan).
   void Flush(const TemperatureBracket* temperature);
   /// Writes a row with only a temperature (after the waves have stopped).
@@ -51,7 +52,7 @@ class PointProbes {
     std::size_t probe;
     double x, y, ux, uy, vx, vy;
     bool crack;
-    std::array<double, 8> c;  ///< a, b, b0, N, T, state, power, W
+    interface::CrackCellRecord c;
   };
   const fe::LagrangeSpace* space_ = nullptr;
   std::vector<std::array<double, 2>> points_;

@@ -12,7 +12,16 @@
 
 namespace vibrotherm::io {
 
+/// One option of the run record: its effective value and where it came from.
+struct OptionRecord {
+  std::string name, value, source;  ///< source: "command line", "options file" or "default"
+};
+
 struct RunSummary {
+  std::string git_commit, date, host, command_line;
+  std::vector<OptionRecord> option_values;  ///< every option the program declared
+  std::map<std::string, double> derived;    ///< values the program chose (dt, intervals, sizes)
+  std::map<std::string, std::string> derived_rules;  ///< how it chose them
   std::vector<std::string> physics_ran;   ///< "wave", "contact", "heat"
   long long dofs_wave = 0, dofs_heat = 0, contact_cells = 0, steps_wave = 0, steps_heat = 0;
   long long steps_heat_free = 0;  ///< heat steps after the waves stopped
@@ -26,6 +35,7 @@ struct RunSummary {
   /// Simulated interval [start, end] of each physics that ran (s).
   std::map<std::string, std::pair<double, double>> physics_time;
   double heat_deposited = 0.0, heat_content = 0.0, heat_boundary_loss = 0.0;  ///< [J/m] at the end
+  std::map<std::string, double> heat_deposited_by;  ///< per heat source (friction, thermoelastic) [J/m]
   /// Probe index (as in probes.csv) → description, largest rise above T0 [K],
   /// and the rise at each output time.
   std::map<int, std::string> probe_labels;

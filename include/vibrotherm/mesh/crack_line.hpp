@@ -19,11 +19,19 @@ class CrackLine {
   /// Shortest distance from (x, y) to the crack.
   double Distance(double x, double y) const;
   double length() const { return length_; }
+  /// Facet ids in order along the crack; facet k joins vertices k and k + 1.
+  const std::vector<PetscInt>& facet_ids() const { return ids_; }
+  /// ξ of vertex k (0 at the first, exactly 1 at the last) and its coordinates.
+  double vertex_xi(std::size_t k) const { return k + 1 == arc_.size() ? 1.0 : arc_[k] / length_; }
+  const std::array<double, 2>& vertex(std::size_t k) const { return points_[k]; }
+  /// ξ of the point of the crack nearest to (x, y).
+  double XiOf(double x, double y) const;
   bool empty() const { return points_.size() < 2; }
 
  private:
   std::vector<std::array<double, 2>> points_;  ///< vertices in order along the crack
   std::vector<double> arc_;                    ///< arc length at each vertex
+  std::vector<PetscInt> ids_;                  ///< facet ids in order
   double length_ = 0.0;
 };
 

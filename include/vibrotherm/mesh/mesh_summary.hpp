@@ -26,6 +26,9 @@ struct MeshSummary {
   PetscInt cohesive_cells = 0;
   PetscInt vertices = 0;        ///< wave mesh (split vertices counted twice)
   PetscInt heat_cells = 0, heat_vertices = 0;
+  std::string heat_source;                 ///< graded, wave or the heat mesh file
+  double heat_h_min = 0.0, heat_h_max = 0.0;  ///< shortest and longest heat cell edge [m]
+  std::vector<PetscInt> heat_cells_per_rank;
   std::vector<PetscInt> cells_per_rank;
   double h_min = 0.0, h_max = 0.0;  ///< shortest and longest bulk cell edge [m]
   std::vector<CrackSummary> cracks;

@@ -8,21 +8,19 @@
 
 namespace vibrotherm::mesh {
 
-/// Coordinates of vertices from the local coordinate vector.
+/// Coordinates of the vertices of a DM (copied once by Setup).
 class VertexCoordinates {
  public:
   PetscErrorCode Setup(DM dm);
-  ~VertexCoordinates();
-  std::array<double, 2> operator()(PetscInt vertex) const;
+  std::array<double, 2> operator()(PetscInt vertex) const { return coords_[vertex - vStart_]; }
 
  private:
-  Vec local_ = nullptr;
-  const PetscScalar* array_ = nullptr;
-  PetscSection section_ = nullptr;
+  std::vector<std::array<double, 2>> coords_;
+  PetscInt vStart_ = 0;
 };
 
 /// Centroid of a cell: the mean of its closure vertices.
-std::array<double, 2> CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell);
+PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, std::array<double, 2>* centroid);
 
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);

@@ -31,6 +31,9 @@ struct Crack {
   std::array<double, 2> end(int which) const;
 };
 
+/// Shortest distance between two cracks (0 when they cross).
+double crack_distance(const Crack& a, const Crack& b);
+
 struct SpecimenGeometry {
   double width = 0.05, height = 0.1;
   std::vector<Crack> cracks;

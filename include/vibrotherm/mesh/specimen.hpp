@@ -1,7 +1,11 @@
 // The specimen's two distributed meshes, built from the options:
 //   wave  the crack-split mesh (cohesive cells), for elastodynamics
-//   heat  the unsplit mesh (temperature is continuous across cracks)
-// Both carry the labels of labels.hpp; crack facets match through crack_face.
+//   heat  an unsplit mesh (temperature is continuous across cracks): by default
+//         its own mesh graded to the cracks (heat_mesh.hpp), partitioned on its
+//         own; -heat_mesh wave reuses the unsplit wave mesh; for -mesh_file
+//         scenes -heat_mesh_file gives it (else the unsplit wave mesh)
+// Both carry the labels of labels.hpp. Crack facets are numbered (crack_face)
+// along each crack from the end with the smaller x (then y): ξ = 0 there on both.
 #pragma once
 
 #include <petscdmplex.h>
@@ -9,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/mesh/heat_mesh.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::mesh {
@@ -23,15 +28,26 @@ struct Specimen {
   DM heat = nullptr;
   std::vector<CrackInfo> cracks;
   std::string source;  ///< "generated" or the mesh file
+  std::string heat_source;  ///< "graded", "wave" (the unsplit wave mesh) or the heat mesh file
 };
 
 /// Reads -mesh_file or the generated-specimen options (-specimen_*, -crack_*,
 /// -mesh_*, -edge_*), meshes, refines (-dm_refine), splits and distributes
-/// (-petscpartitioner_type, metis registered). Collective.
-PetscErrorCode SpecimenCreate(MPI_Comm comm, Specimen* specimen);
+/// (-petscpartitioner_type, metis registered); the heat mesh from the
+/// -heat_mesh* options. `exchange_length` = √(α · coupling interval), the
+/// layer friction heats in one exchange: the default first heat layer is half
+/// of it. Collective.
+PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* specimen);
 PetscErrorCode SpecimenDestroy(Specimen* specimen);
+
+/// Reads (declares, for -help) every mesh option without building anything. Collective.
+PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
 
 /// Reads the generated-specimen options into geometry (used by SpecimenCreate).
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry);
+/// Reads -heat_mesh, -heat_mesh_h_crack, -heat_mesh_growth, -heat_mesh_h_along,
+/// -heat_mesh_h (defaults from the wave mesh sizes and exchange_length).
+PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
+                                 HeatMeshSizes* sizes);
 
 }  // namespace vibrotherm::mesh

@@ -3,97 +3,110 @@
 //
 //   vibrotherm-contact -history in.csv -o out.csv -crack_law mmd -contact_mu 1
 //   vibrotherm-contact -history_b_amplitude 5e-9 -history_a_offset 1e-8 ...
-#include <petscsys.h>
-
-#include <fstream>
-#include <string>
+//   vibrotherm-contact -options_file calibration.opts -o cell.csv
+//
+// No PETSc and no MPI: the options are the declared contact parameters
+// (contact::contact_parameters(), the list the simulator reads through PETSc)
+// plus the history options, read by the PETSc-free options::OptionDatabase.
+// Options only the simulator knows are refused, so a scene's options file is
+// usable here only through the contact options it holds.
 #include <iostream>
+#include <memory>
 #include <sstream>
+#include <string>
 
-#include "vibrotherm/contact/cell_history.hpp"
-#include "vibrotherm/interface/contact_options.hpp"
+#include "history_options.hpp"
+#include "vibrotherm/contact/contact_parameter_list.hpp"
+#include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/contact/normal_law_registry.hpp"
 #include "vibrotherm/io/atomic_file.hpp"
-#include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/options/declared_options.hpp"
 
 namespace {
 
 using namespace vibrotherm;
 
-PetscErrorCode ReadSine(const char* prefix, const char* what, contact::SineComponent& c, PetscOptionItems* PetscOptionsObject) {
-  PetscFunctionBeginUser;
-  char name[64], help[128];
-  const char* fields[] = {"amplitude", "offset", "phase", "rate"};
-  double* values[] = {&c.amplitude, &c.offset, &c.phase_deg, &c.rate};
-  const char* units[] = {"[m]", "[m]", "[deg]", "[m/s]"};
-  for (int i = 0; i < 4; ++i) {
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-history_%s_%s", prefix, fields[i]));
-    PetscCall(PetscSNPrintf(help, sizeof(help), "Built-in history: %s %s %s", what, fields[i], units[i]));
-    PetscCall(PetscOptionsReal(name, help, nullptr, *values[i], values[i], nullptr));
-  }
-  PetscFunctionReturn(0);
+template <class Entry>
+void print_laws(std::ostream& out, const char* title, const std::vector<Entry>& laws) {
+  out << title << "\n";
+  for (const Entry& e : laws) out << "  " << e.name << ": " << e.help << "\n";
 }
 
-PetscErrorCode Run() {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = PETSC_COMM_WORLD;
+void print_help(std::ostream& out) {
+  out << "vibrotherm-contact: one contact cell driven through a (t, a, b) history; writes\n"
+         "t,a,b,b0,btilde,N,T,state,dW,W rows (a, b: half normal approach and tangential\n"
+         "displacement [m]; N, T tractions [Pa]; dW, W dissipated energy [J/m^2]).\n\n";
+  print_laws(out, "Crack laws (-crack_law):", contact::crack_laws());
+  print_laws(out, "Normal laws (-contact_normal_law):", contact::normal_laws());
+  out << "\nContact options <default>:\n";
+  for (const contact::ContactParameter& p : contact::contact_parameters()) out << options::help_line(p.spec) << "\n";
+  out << "\nHistory options <default>:\n";
+  for (const auto& p : app::history_parameters()) out << options::help_line(p.spec) << "\n";
+  out << "\n  -options_file FILE                    read options from FILE (-name value per line, # comments)\n"
+         "  -help                                 print this list and exit\n";
+}
+
+std::vector<std::string> known_options() {
+  std::vector<std::string> names = {"-options_file", "-help", "-h"};
+  options::append_names(names, contact::contact_parameters());
+  options::append_names(names, app::history_parameters());
+  return names;
+}
+
+std::vector<contact::HistoryPoint> make_history(const app::HistoryOptions& h) {
+  const std::string file = h.history_file();
+  return file.empty() ? contact::make_sine_history(h.sine()) : contact::read_history_csv(file);
+}
+
+/// Drives the cell; the rows reach their destination only if every row is finite.
+void run(const options::OptionDatabase& db) {
+  options::reject_unknown(db, known_options(), contact::renamed_contact_options());
   contact::ContactParameters params;
-  PetscCall(ReadContactOptions(comm, params));
-
-  char history_file[PETSC_MAX_PATH_LEN] = "", out_file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool from_file = PETSC_FALSE, to_file = PETSC_FALSE;
-  contact::SineHistory sine;
-  sine.a.offset = 1e-8;
-  sine.b.amplitude = 5e-9;
-  PetscOptionsBegin(comm, nullptr, "Contact-cell history", nullptr);
-  PetscCall(PetscOptionsString("-cell_history", "CSV file with columns t,a,b (else the built-in sinusoids); -history on the command line", nullptr,
-                               history_file, history_file, sizeof(history_file), &from_file));
-  PetscCall(PetscOptionsString("-o", "Output CSV (default: standard output)", nullptr, out_file, out_file,
-                               sizeof(out_file), &to_file));
-  PetscCall(ReadSine("a", "normal half approach a", sine.a, PetscOptionsObject));
-  PetscCall(ReadSine("b", "tangential half displacement b", sine.b, PetscOptionsObject));
-  PetscCall(PetscOptionsReal("-history_frequency", "Built-in history: frequency [Hz]", nullptr, sine.frequency,
-                             &sine.frequency, nullptr));
-  PetscCall(PetscOptionsReal("-history_cycles", "Built-in history: number of cycles", nullptr, sine.cycles,
-                             &sine.cycles, nullptr));
-  PetscCall(PetscOptionsInt("-history_steps_per_cycle", "Built-in history: steps per cycle", nullptr,
-                            sine.steps_per_cycle, &sine.steps_per_cycle, nullptr));
-  PetscCall(PetscOptionsReal("-history_ramp_cycles", "Built-in history: amplitude ramp length [cycles]", nullptr,
-                             sine.ramp_cycles, &sine.ramp_cycles, nullptr));
-  PetscOptionsEnd();
-
-  std::vector<contact::HistoryPoint> history;
-  VibrothermCallCpp(comm, history = from_file ? contact::read_history_csv(history_file) : contact::make_sine_history(sine));
-  std::unique_ptr<contact::CrackLaw> law;
-  VibrothermCallCpp(comm, law = contact::create_crack_law(params));
-
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank != 0) PetscFunctionReturn(0);  // one cell: rank 0 does the work
-  if (to_file) {
-    std::unique_ptr<io::AtomicFile> out;
-    VibrothermCallCpp(comm, out = std::make_unique<io::AtomicFile>(out_file));
-    const double W = contact::drive_cell(*law, history, params.a0, out->stream());
-    VibrothermCallCpp(comm, out->commit());
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%zu steps, dissipated %.9g J/m^2 -> %s\n", history.size() - 1, W, out_file));
-  } else {
-    std::cout.precision(17);
-    contact::drive_cell(*law, history, params.a0, std::cout);
+  options::read_parameters(db, contact::contact_parameters(), params);
+  app::HistoryOptions h;
+  options::read_parameters(db, app::history_parameters(), h);
+  const std::unique_ptr<contact::CrackLaw> law = contact::create_crack_law(params);
+  const std::vector<contact::HistoryPoint> history = make_history(h);
+  if (h.output.empty()) {
+    std::ostringstream rows;
+    rows.precision(17);
+    contact::drive_cell(*law, history, params.a0, rows);
+    std::cout << rows.str();
+    return;
   }
-  PetscFunctionReturn(0);
+  std::unique_ptr<io::AtomicFile> out;
+  try {
+    out = std::make_unique<io::AtomicFile>(h.output);
+  } catch (const std::runtime_error& e) {
+    throw contact::InputError("-o " + h.output + ": " + e.what());
+  }
+  const double W = contact::drive_cell(*law, history, params.a0, out->stream());
+  out->commit();
+  std::cout.precision(9);
+  std::cout << history.size() - 1 << " steps, dissipated " << W << " J/m^2 -> " << h.output << "\n";
+}
+
+bool wants_help(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "-help" || std::string(argv[i]) == "-h") return true;
+  return false;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  // PETSc's own -history FILE would overwrite the user's history CSV with its
-  // log: the command-line name -history is taken here as -cell_history.
-  static char cell_history[] = "-cell_history";
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "-history") argv[i] = cell_history;
-  PetscCall(PetscInitialize(&argc, &argv, nullptr,
-                            "vibrotherm-contact: one contact cell driven through a (t, a, b) history.\n"));
-  PetscCall(vibrotherm::PushUserErrorHandler("vibrotherm-contact"));
-  const PetscErrorCode ierr = Run();
-  PetscCall(PetscFinalize());
-  return vibrotherm::ExitCode(ierr);
+  if (wants_help(argc, argv)) {
+    print_help(std::cout);
+    return 0;
+  }
+  try {
+    run(options::OptionDatabase::from_argv(argc, argv));
+  } catch (const contact::InputError& e) {
+    std::cerr << "vibrotherm-contact: error: " << e.what() << std::endl;
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "vibrotherm-contact: internal error: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
 }

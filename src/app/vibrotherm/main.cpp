@@ -4,15 +4,26 @@
 // coupling/driver.hpp) or, with -modes, solves for its natural modes.
 #include <slepcsys.h>
 
+#include <cstring>
+#include <string>
+#include <vector>
+
 #include "vibrotherm/util/errors.hpp"
 #include "run.hpp"
 
 int main(int argc, char** argv) {
+  // The GNU spellings too: --help and --version mean -help and -version.
+  static char help[] = "-help", version[] = "-version";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0) argv[i] = help;
+    if (std::strcmp(argv[i], "--version") == 0) argv[i] = version;
+  }
+  const std::vector<std::string> command_line(argv + 1, argv + argc);
   PetscCall(SlepcInitialize(&argc, &argv, nullptr,
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
   PetscCall(vibrotherm::PushUserErrorHandler("vibrotherm"));
-  const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD);
+  const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line);
   PetscCall(SlepcFinalize());
   return vibrotherm::ExitCode(ierr);
 }

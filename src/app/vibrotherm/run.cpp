@@ -1,132 +1,185 @@
 #include "run.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <string>
+#include <vector>
 
-#include "vibrotherm/coupling/driver.hpp"
-#include "vibrotherm/interface/contact_options.hpp"
+#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/coupling/simulation.hpp"
 #include "vibrotherm/io/mesh_output.hpp"
+#include "vibrotherm/io/run_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
-#include "vibrotherm/mesh/crack_line.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
-#include "vibrotherm/modes/modal_analysis.hpp"
+#include "vibrotherm/modes/modes_run.hpp"
+#include "vibrotherm/util/option_audit.hpp"
+#include "vibrotherm/util/version.hpp"
 
 namespace vibrotherm::app {
 namespace {
 
-/// Creates the output directory on rank 0; a failure is an error on every rank.
+/// Everything a run (and scripts/plot after it) writes into its output directory.
+const std::vector<std::string>& RunOutputFiles() {
+  static const std::vector<std::string> files = {
+      "summary.json", "mesh.h5", "mesh.xmf", "fields.h5", "fields_wave.xmf", "fields_heat.xmf", "fields_cracks.xmf",
+      "fields.xmf" /* before fields_<grid>.xmf */, "probes.csv", "energy.csv",
+      "crack_state.csv", "crack_heat.h5", "camera.h5", "camera.xmf", "modes.csv", "modes.h5", "modes.xmf",
+      "vibrotherm.log", "traction_loop.png", "crack_temperature.png", "temperature_maps.png", "energy_budget.png",
+      "crack_spacetime.png", "camera.png", "modes.png"};
+  return files;
+}
+
+/// Creates the output directory on rank 0 and removes an earlier run's outputs
+/// there (with their .partial leftovers), so no old file sits beside new ones.
+/// A failure is an error on every rank.
 PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir) {
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  int failed = 0;
+  int failed = 0, removed = 0;
   if (rank == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     failed = !std::filesystem::is_directory(dir);
+    for (const std::string& name : RunOutputFiles())
+      for (const std::string& file : {dir + "/" + name, dir + "/" + name + ".partial"})
+        if (!failed && std::filesystem::remove(file, ec)) ++removed;
+    failed = failed || static_cast<bool>(ec);
   }
   PetscCallMPI(MPI_Bcast(&failed, 1, MPI_INT, 0, comm));
-  PetscCheck(!failed, comm, PETSC_ERR_FILE_OPEN, "-output_dir %s: cannot create the directory", dir.c_str());
+  PetscCheck(!failed, comm, PETSC_ERR_FILE_OPEN, "-output_dir %s: cannot create the directory or remove its old outputs",
+             dir.c_str());
+  if (removed) PetscCall(PetscPrintf(comm, "removed %d outputs of an earlier run from %s\n", removed, dir.c_str()));
   PetscFunctionReturn(0);
 }
 
-/// -modes: natural frequencies and defect participation instead of a time run.
-class ModesRun {
- public:
-  PetscErrorCode Setup(const mesh::Specimen& specimen, io::RunSummary* summary) {
-    PetscFunctionBeginUser;
-    MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
-    wave::ElasticMaterial material;
-    wave::Excitation excitation;
-    wave::WaveOptions wave_options;
-    PetscCall(wave::ReadElasticMaterial(comm, &material));
-    PetscCall(wave::ReadExcitation(comm, &excitation));
-    PetscCall(wave::ReadWaveOptions(comm, &wave_options));
-    cracks_.resize(specimen.cracks.size());
-    double longest = 0.0;
-    for (std::size_t i = 0; i < cracks_.size(); ++i) {
-      PetscCall(cracks_[i].Setup(specimen.wave, static_cast<PetscInt>(i)));
-      longest = std::max(longest, cracks_[i].length());
-    }
-    PetscCall(modes::ReadModesOptions(comm, excitation.signal.frequency, longest / 2, &options_));
-    PetscLogStage stage;
-    PetscCall(PetscLogStageRegister("Modes", &stage));
-    const double t0 = MPI_Wtime();
-    PetscCall(PetscLogStagePush(stage));
-    PetscCall(analysis_.Setup(specimen.wave, wave_options.degree, material, excitation));
-    PetscCall(PetscPrintf(comm, "Modes: %" PetscInt_FMT " free dofs (degree %" PetscInt_FMT "), %" PetscInt_FMT
-                          " modes near %g Hz, defect radius %g m\n",
-                          analysis_.dofs(), wave_options.degree, options_.n, options_.target_frequency,
-                          options_.defect_radius));
-    PetscCall(analysis_.Solve(options_, cracks_));
-    PetscCall(PetscLogStagePop());
-    summary->stages["modes"] = MPI_Wtime() - t0;
-    summary->physics_ran = {"modes"};
-    summary->dofs_wave = analysis_.dofs();
-    for (const modes::Mode& m : analysis_.modes()) {
-      summary->modes.emplace_back(m.frequency, m.participation);
-      PetscCall(PetscPrintf(comm, "  %12.2f Hz   defect participation %.3f   residual %.1e\n", m.frequency,
-                            m.participation, m.error));
-    }
-    PetscFunctionReturn(0);
-  }
-  PetscErrorCode Write(const std::string& dir) const { return analysis_.Write(dir); }
-
- private:
-  std::vector<mesh::CrackLine> cracks_;
-  modes::ModesOptions options_;
-  modes::ModalAnalysis analysis_;
+struct AppOptions {
+  PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
+  PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
+  char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
 };
+
+PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, nullptr, "vibrotherm", nullptr);
+  PetscCall(PetscOptionsBool("-mesh_only", "Build the specimen mesh, write it and stop", nullptr, o->mesh_only,
+                             &o->mesh_only, nullptr));
+  PetscCall(PetscOptionsBool("-modes", "Natural modes of the cracked specimen (SLEPc) instead of a time run", nullptr,
+                             o->modes, &o->modes, nullptr));
+  PetscCall(PetscOptionsString("-output_dir", "Output directory (scripts/run: results/<options-file-stem>)", nullptr,
+                               o->output_dir, o->output_dir, sizeof(o->output_dir), nullptr));
+  PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
+                             nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+/// -help: the options of every module, whatever the scene, then nothing else.
+PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
+  PetscFunctionBeginUser;
+  PetscCall(mesh::DeclareSpecimenOptions(comm, scene.exchange_length()));
+  modes::ModesOptions modes;
+  PetscCall(modes::ReadModesOptions(comm, scene.excitation.signal.frequency, 0.01, &modes));
+  PetscFunctionReturn(0);
+}
+
+/// Builds what the options describe (all input checked, nothing written), then
+/// checks that every option given was one the program knows.
+PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
+                     coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  const double t = MPI_Wtime();
+  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen));
+  summary->stages["mesh"] = MPI_Wtime() - t;
+  PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
+  PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
+  if (app.modes && !app.mesh_only) PetscCall(modes_run->Setup(*specimen, scene, summary));
+  else if (!app.mesh_only) PetscCall(simulation->Setup(*specimen, scene, summary));
+  PetscFunctionReturn(0);
+}
+
+/// The run record of summary.json: where and from what, every option with its
+/// source (rank 0 knows the declared options), and what the program derived.
+void RecordRun(const std::vector<std::string>& command_line, const std::vector<DeclaredOption>& declared,
+               const coupling::Scene& scene, io::RunSummary* summary) {
+  summary->git_commit = git_commit();
+  char host[256] = "";
+  gethostname(host, sizeof(host) - 1);
+  summary->host = host;
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  summary->date = date;
+  for (const std::string& word : command_line) summary->command_line += (summary->command_line.empty() ? "" : " ") + word;
+  for (const DeclaredOption& d : declared) {
+    PetscBool given = PETSC_FALSE;
+    PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given);
+    const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
+    summary->option_values.push_back({d.name, d.value, typed ? "command line" : given ? "options file" : "default"});
+  }
+  summary->derived["final_time"] = scene.final_time;
+  summary->derived_rules["final_time"] = scene.run.final_time > 0 ? "-final_time" : "the source duration";
+  summary->derived["couple_dt"] = scene.couple_dt;
+  summary->derived_rules["couple_dt"] = scene.run.couple_dt > 0 ? "-couple_dt" : "1/8 of the source period";
+  summary->derived["heat_dt"] = scene.couple_dt / static_cast<double>(scene.run.heat_substeps);
+  summary->derived_rules["heat_dt"] = "couple_dt / -heat_substeps, rounded to whole wave steps";
+}
 
 }  // namespace
 
-PetscErrorCode Run(MPI_Comm comm) {
+PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
-  PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE;
-  char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
-  PetscOptionsBegin(comm, nullptr, "vibrotherm", nullptr);
-  PetscCall(PetscOptionsBool("-mesh_only", "Build the specimen mesh, write it and stop", nullptr, mesh_only,
-                             &mesh_only, nullptr));
-  PetscCall(PetscOptionsBool("-modes", "Natural modes of the cracked specimen (SLEPc) instead of a time run", nullptr,
-                             modes, &modes, nullptr));
-  PetscCall(PetscOptionsString("-output_dir", "Output directory (scripts/run: results/<options-file-stem>)", nullptr,
-                               output_dir, output_dir, sizeof(output_dir), nullptr));
-  PetscOptionsEnd();
-  const std::string dir = output_dir;
-
-  // All input is checked before anything is written.
-  contact::ContactParameters contact_params;
-  PetscCall(ReadContactOptions(comm, contact_params));
+  PetscBool version = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-version", &version));
+  if (version) {  // PETSc has printed its own version already
+    PetscCall(PetscPrintf(comm, "vibrotherm %s\n", vibrotherm::version()));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(io::RunLogInstall());  // vibrotherm.log gets everything printed from here on
+  AppOptions app;
+  PetscCall(PetscOptionsHasHelp(nullptr, &app.help));
+  PetscCall(OptionAuditBegin(app.help));  // every reader declares its options from here on
+  PetscCall(ReadAppOptions(comm, &app));
+  coupling::Scene scene;
+  PetscCall(coupling::ReadScene(comm, &scene));
+  std::vector<DeclaredOption> declared;
+  if (app.help) {
+    PetscCall(ListOptions(comm, scene));
+    PetscCall(OptionAuditEnd(&declared));
+    PetscFunctionReturn(io::RunLogClose());
+  }
   io::RunSummary summary;
   mesh::Specimen specimen;
-  double t = MPI_Wtime();
-  PetscCall(mesh::SpecimenCreate(comm, &specimen));
-  summary.stages["mesh"] = MPI_Wtime() - t;
-  PetscCall(mesh::ComputeMeshSummary(specimen, &summary.mesh));
-  PetscCall(mesh::PrintMeshSummary(comm, summary.mesh));
   coupling::Simulation simulation;
-  ModesRun modes_run;
-  if (modes && !mesh_only) PetscCall(modes_run.Setup(specimen, &summary));
-  else if (!mesh_only) PetscCall(simulation.Setup(specimen, &summary));
+  modes::ModesRun modes_run;
+  PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
+  PetscCall(OptionAuditEnd(&declared));
+  PetscCall(CheckUnknownOptions(comm, declared, app.allow_unknown));
+  RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked: outputs from here on.
+  const std::string dir = app.output_dir;
   PetscCall(MakeOutputDirectory(comm, dir));
+  PetscCall(io::RunLogOpen(comm, dir + "/vibrotherm.log"));
   PetscLogStage output_stage;
   PetscCall(PetscLogStageRegister("Output", &output_stage));
-  t = MPI_Wtime();
+  double t = MPI_Wtime();
   PetscCall(PetscLogStagePush(output_stage));
-  PetscCall(io::WriteMesh(specimen.wave, dir + "/mesh.h5"));
+  PetscCall(io::WriteMeshes({{"wave", specimen.wave}, {"heat", specimen.heat}}, dir + "/mesh.h5"));
   PetscCall(PetscLogStagePop());
   summary.stages["output"] = MPI_Wtime() - t;
-  if (modes && !mesh_only) PetscCall(modes_run.Write(dir));
-  else if (!mesh_only) PetscCall(simulation.Run(dir, &summary));
+  if (app.modes && !app.mesh_only) PetscCall(modes_run.Write(dir));
+  else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary));
   summary.wall_time_s = MPI_Wtime() - t0;
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   PetscCall(PetscPrintf(comm, "outputs in %s\n", dir.c_str()));
   PetscCall(mesh::SpecimenDestroy(&specimen));
+  PetscCall(io::RunLogClose());
   PetscFunctionReturn(0);
 }
 

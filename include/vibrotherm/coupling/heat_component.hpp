@@ -1,0 +1,58 @@
+// The heat of a run: the heat TS on the heat mesh with its sources (the
+// exchanges that feed it). While the waves run it steps with them, one heat
+// step per StepTo; afterwards it runs alone (adaptive) to the final time.
+#pragma once
+
+#include <petscsys.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/coupling/heat_sources.hpp"
+#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/coupling/wave_component.hpp"
+#include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
+
+namespace vibrotherm::coupling {
+
+class HeatComponent {
+ public:
+  HeatComponent() = default;
+  HeatComponent(const HeatComponent&) = delete;
+  HeatComponent& operator=(const HeatComponent&) = delete;
+  ~HeatComponent();
+
+  /// Builds the solver (stage "Heat setup"), its sources (friction when `waves`
+  /// has a dissipating crack; -heat_crack_power for -physics heat) and the
+  /// temperature probes (point probes, then crack probes on the crack line).
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
+                       io::RunSummary* summary);
+  heat::HeatSolver& solver() { return solver_; }
+  const heat::HeatSolver& solver() const { return solver_; }
+  /// One heat step to t, loaded with what every source deposited since the last step.
+  PetscErrorCode StepTo(double t);
+  /// The sources' physics stopped: they write their records into dir and go.
+  PetscErrorCode StopSources(const std::string& dir);
+  /// Points of the crack probes (on the heat mesh's crack lines).
+  const std::vector<double>& crack_probe_xy() const { return crack_probe_xy_; }
+  /// Heat columns of energy.csv.
+  PetscErrorCode Energy(io::EnergyRow* row) const;
+  PetscErrorCode Summarise(io::RunSummary* summary) const;
+  /// Wall time spent stepping the heat [s].
+  double seconds() const { return seconds_; }
+  void add_seconds(double s) { seconds_ += s; }
+
+ private:
+  heat::HeatSolver solver_;
+  std::vector<std::unique_ptr<HeatSource>> sources_;
+  Vec load_ = nullptr;
+  std::vector<double> crack_probe_xy_;
+  std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go
+  double seconds_ = 0.0;
+};
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,48 @@
+// Exchanges into the heat equation: each source turns energy another physics
+// deposited into a heat load, exactly (the energy of a heat step is the
+// energy deposited in it). Adding a heating mechanism = one HeatSource.
+#pragma once
+
+#include <petscvec.h>
+
+#include <string>
+
+#include "vibrotherm/coupling/crack_heat_record.hpp"
+#include "vibrotherm/coupling/friction_heat.hpp"
+#include "vibrotherm/interface/crack_interface.hpp"
+
+namespace vibrotherm::coupling {
+
+class HeatSource {
+ public:
+  virtual ~HeatSource() = default;
+  /// Q += the load [W/m per heat dof] of the energy deposited in the heat step (t − interval, t].
+  virtual PetscErrorCode AddLoad(double t, double interval, Vec Q) = 0;
+  /// The physics that fed it has stopped: write what it recorded into dir, let go of it.
+  virtual PetscErrorCode Finish(const std::string& dir) = 0;
+  /// Energy it has deposited so far [J/m].
+  virtual double deposited() const = 0;
+  /// Its name in summary.json and energy.csv (heat_<name>).
+  virtual const char* name() const = 0;
+};
+
+/// Friction at the crack (crack law dissipation → line density on the crack),
+/// recorded in crack_heat.h5.
+class FrictionHeatSource final : public HeatSource {
+ public:
+  PetscErrorCode Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
+                       const fe::LagrangeSpace& heat_space, PetscInt ncracks);
+  PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
+  PetscErrorCode Finish(const std::string& dir) override;
+  double deposited() const override { return deposited_; }
+  const char* name() const override { return "friction"; }
+
+ private:
+  interface::CrackInterface* crack_ = nullptr;
+  double deposited_ = 0.0;
+  FrictionHeat transfer_;
+  CrackHeatRecord record_;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+};
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,65 @@
+// A simulation run: which physics run, in what order, and how they exchange.
+// The order of a run lives here and nowhere else:
+//
+//   Setup  scene (every option, read once) → waves (+ crack contact, when a crack
+//          transmits tractions) → heat (when something can heat: a crack law
+//          that dissipates, -heat on, or -physics heat)
+//   Run    coupled: per heat step (-couple_dt / -heat_substeps), the waves
+//          advance a whole number of steps, then the heat takes one step with
+//          the energy its sources deposited in it (friction_heat.hpp);
+//          per coupling interval: energy and probe rows, fields, the quiet test.
+//          After the source, once the waves are quiet (-wave_quiet_fraction),
+//          the waves stop (their solver and the interface are freed) and the
+//          heat runs alone (adaptive) to -final_time.
+// Only what the scene needs is built: no crack (or an open crack law) → no
+// interface; nothing that can dissipate → no heat (unless -heat on);
+// -physics heat → no waves (prescribed -heat_crack_power on the cracks).
+#pragma once
+
+#include <petscsys.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/coupling/heat_component.hpp"
+#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/coupling/wave_component.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
+
+namespace vibrotherm::coupling {
+
+class Recorder;
+
+class Simulation {
+ public:
+  Simulation();
+  ~Simulation();
+  /// Builds what the scene needs; all input is checked here, before any output.
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  /// Runs to the final time, writing the outputs into dir.
+  PetscErrorCode Run(const std::string& dir, io::RunSummary* summary);
+
+ private:
+  PetscErrorCode RunCoupled(Recorder& recorder, io::RunSummary* summary);
+  /// One coupling interval: waves and heat step by step, then the records of the interval.
+  PetscErrorCode Interval(Recorder& recorder, PetscInt steps_per_heat_step, io::EnergyRow* row);
+  PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
+  PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
+
+  const Scene* scene_ = nullptr;
+  std::string dir_;
+  std::unique_ptr<WaveComponent> waves_;
+  std::unique_ptr<HeatComponent> heat_;
+  /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
+  struct Sample {
+    double t, energy;
+  };
+  std::vector<Sample> recent_;
+  double peak_mechanical_ = 0.0, mechanical_left_ = 0.0;
+  PetscErrorCode WavesQuiet(const io::EnergyRow& energy_now, bool* quiet);
+  PetscLogStage wave_stage_ = -1, heat_stage_ = -1;
+};
+
+}  // namespace vibrotherm::coupling

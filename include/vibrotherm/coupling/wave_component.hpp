@@ -1,0 +1,43 @@
+// The waves of a run: the wave TS and, when a crack transmits tractions, the
+// crack contact as its extra force (the interface is built from the crack law's
+// properties, not its name). Owns both until the run stops the waves.
+#pragma once
+
+#include <petscsys.h>
+
+#include <memory>
+
+#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/io/energy_log.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::coupling {
+
+/// The wave and interface columns of energy.csv of a wave solver now (collective).
+PetscErrorCode WaveEnergyRow(const wave::WaveSolver& solver, io::EnergyRow* row);
+
+class WaveComponent {
+ public:
+  /// Builds the solver (stage "Wave setup") and the crack interface when a crack transmits tractions.
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  wave::WaveSolver& solver() { return *solver_; }
+  const wave::WaveSolver& solver() const { return *solver_; }
+  /// The crack contact, or null (no crack, or a law that transmits nothing).
+  interface::CrackInterface* crack() { return crack_.get(); }
+  /// `steps` constant steps, or fewer landing exactly on t_end when it comes first.
+  PetscErrorCode Advance(PetscInt steps, double t_end);
+  /// Wave and interface columns of energy.csv now (collective).
+  PetscErrorCode Energy(io::EnergyRow* row) const { return WaveEnergyRow(*solver_, row); }
+  /// Fills the wave and contact parts of the summary and frees the solvers.
+  PetscErrorCode Stop(io::RunSummary* summary);
+  bool running() const { return solver_ != nullptr; }
+
+ private:
+  std::unique_ptr<wave::WaveSolver> solver_;
+  std::unique_ptr<interface::CrackInterface> crack_;
+};
+
+}  // namespace vibrotherm::coupling

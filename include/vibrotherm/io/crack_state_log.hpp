@@ -1,0 +1,29 @@
+// crack_state.csv, rank 0, written atomically: every contact cell every
+// -crack_state_every steps, for space-time maps along the cracks.
+//   t,crack,xi,x,y,a,b,N,T,state,power,W     (crack 1-based; 9 significant digits)
+#pragma once
+
+#include <petscsys.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/interface/crack_record.hpp"
+#include "vibrotherm/io/atomic_file.hpp"
+
+namespace vibrotherm::io {
+
+class CrackStateLog {
+ public:
+  /// Rank 0 opens path. Collective.
+  PetscErrorCode Open(MPI_Comm comm, const std::string& path);
+  /// Appends the rows of one time (rank 0's records; others pass theirs empty).
+  void Record(double t, const std::vector<interface::CrackCellRecord>& records);
+  PetscErrorCode Finish();
+
+ private:
+  std::unique_ptr<AtomicFile> file_;  ///< rank 0
+};
+
+}  // namespace vibrotherm::io

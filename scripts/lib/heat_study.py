@@ -1,0 +1,99 @@
+"""The temperature part of scripts/convergence: the crack-centre rise of the full
+paper scene (1 ms of waves, diffusion to 1 s) against
+
+  * the continuum: the line-source convolution of the friction power each run
+    exchanged (crack_heat.h5, scripts/lib/line_source.py) with the images that
+    hold the specimen's edges at T0 — an independent reference for every run;
+  * heat-mesh refinement with the wave side fixed (first layer, length along the
+    crack and far size × 2, √2, 1, 1/√2) and heat steps per coupling interval;
+  * wave-mesh refinement with the heat side at its default (the friction power
+    itself changes: self-convergence against the finest wave mesh).
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import line_source
+
+TIMES = [1e-4, 2e-4, 5e-4, 1e-3, 1e-2, 1.0]
+
+
+def paper_heat_sizes(paper_option):
+    """Defaults of the heat mesh in paper.opts (heat_mesh.hpp): first layer, along, far."""
+    alpha = float(paper_option("heat_conductivity")) / (float(paper_option("material_density")) *
+                                                       float(paper_option("heat_capacity")))
+    couple_dt = 1.0 / (8.0 * float(paper_option("source_frequency")))
+    substeps = 3
+    return alpha, {"h_crack": 0.5 * math.sqrt(alpha * couple_dt / substeps),
+                   "h_along": 0.5 * float(paper_option("mesh_h_crack")), "h": float(paper_option("mesh_h"))}
+
+
+def settings(paper_option):
+    """(name, options) of every run of the study."""
+    _, sizes = paper_heat_sizes(paper_option)
+    out = []
+    for scale in (2.0, math.sqrt(2.0), 1.0, 1.0 / math.sqrt(2.0), 0.5):
+        opts = ["-heat_mesh_h_crack", "%.4g" % (sizes["h_crack"] * scale),
+                "-heat_mesh_h_along", "%.4g" % (sizes["h_along"] * scale), "-heat_mesh_h", "%.4g" % (sizes["h"] * scale)]
+        out.append(("heat_h%.3f" % scale, "heat mesh", scale, opts))
+    for substeps in (1, 2, 6):
+        out.append(("heat_substeps%d" % substeps, "heat steps", substeps, ["-heat_substeps", str(substeps)]))
+    out.append(("heat_q2", "heat degree 2", 2, ["-heat_degree", "2"]))
+    for scale in (math.sqrt(2.0), 1.0 / math.sqrt(2.0), 0.5):
+        opts = ["-mesh_h", "%.6g" % (float(paper_option("mesh_h")) * scale),
+                "-mesh_h_crack", "%.6g" % (float(paper_option("mesh_h_crack")) * scale)]
+        out.append(("wave_h%.3f" % scale, "wave mesh", scale, opts))
+    return out
+
+
+def run_one(root, build_dir, ranks, out, extra, env, reuse):
+    summary_path = os.path.join(out, "summary.json")
+    if not (reuse and os.path.exists(summary_path)):
+        command = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm"), "-options_file",
+                   os.path.join(root, "options", "paper.opts"), "-output_times", ",".join(map(str, TIMES)),
+                   "-crack_state_every", "0", "-output_dir", out] + extra
+        result = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
+        if result.returncode != 0:
+            sys.exit("scripts/convergence: %s failed:\n%s" % (out, result.stderr[-3000:]))
+    with open(summary_path) as f:
+        return json.load(f)
+
+
+def measure(out, summary, alpha, rho_c, width, height):
+    """Crack-centre rise at every output time, its continuum value and the heat side's wall time."""
+    centre = [k for k, v in summary["probe_labels"].items() if v.endswith("xi = 0.500000")][0]
+    record = line_source.CrackHeat(os.path.join(out, "crack_heat.h5"))
+    point = record.vertices[np.argmin(np.abs(record.vertices[:, 1] - 0.5)), 2:4]
+    rows = []
+    for row in summary["output_temperature_rise"]:
+        continuum = line_source.temperature_rise(record, point, row["t"], alpha, rho_c, width, height)
+        rows.append({"t": row["t"], "rise": row[centre], "continuum": continuum})
+    stages = summary["stages"]
+    heat = stages.get("heat_steps", 0.0) + stages.get("heat_setup", 0.0)
+    peak = summary.get("field_max_temperature_rise", {})
+    return {"rows": rows, "wall": summary["wall_time_s"], "heat_wall": heat, "dofs_heat": summary["dofs_heat"],
+            "dofs_wave": summary["dofs_wave"], "steps_heat": summary["steps_heat"],
+            "field_peak": peak.get("value", float("nan")) if isinstance(peak, dict) else float(peak)}
+
+
+def table(results, reference):
+    """Markdown: errors vs the continuum (and vs the finest wave mesh for wave rows) at each time."""
+    head = "| setting | heat dofs | heat steps | heat wall [s] | run wall [s] | " + " | ".join(
+        "%g ms" % (t * 1e3) for t in TIMES) + " |\n|" + "---|" * (5 + len(TIMES)) + "\n"
+    lines = []
+    for name, kind, value, m in results:
+        errs = []
+        for t in TIMES:
+            row = min(m["rows"], key=lambda r: abs(r["t"] - t))
+            if kind == "wave mesh":
+                ref_row = min(reference["rows"], key=lambda r: abs(r["t"] - t))
+                errs.append("%+.2f %%" % (100 * (row["rise"] / ref_row["rise"] - 1)))
+            else:
+                errs.append("%+.2f %%" % (100 * (row["rise"] / row["continuum"] - 1)))
+        lines.append("| %s | %d | %d | %.2f | %.1f | %s |" % (name, m["dofs_heat"], m["steps_heat"], m["heat_wall"],
+                                                             m["wall"], " | ".join(errs)))
+    return head + "\n".join(lines) + "\n"

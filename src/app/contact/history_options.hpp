@@ -1,0 +1,33 @@
+// The options of vibrotherm-contact besides the contact laws': where the
+// (t, a, b) history comes from and where the rows go.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vibrotherm/contact/cell_history.hpp"
+#include "vibrotherm/contact/parameter_spec.hpp"
+
+namespace vibrotherm::app {
+
+struct HistoryOptions {
+  HistoryOptions();  ///< every field at its declared default
+
+  std::string file, cell_file;  ///< -history, -cell_history (the same option)
+  std::string output;           ///< -o ("": standard output)
+  /// -history_{a,b}_{amplitude,offset,phase,rate}: the sinusoids of a and b.
+  double a_amplitude, a_offset, a_phase, a_rate;
+  double b_amplitude, b_offset, b_phase, b_rate;
+  double frequency, cycles, ramp_cycles;
+  int steps_per_cycle;
+
+  /// The built-in sinusoids.
+  contact::SineHistory sine() const;
+  /// The CSV file given with -history or -cell_history ("" for none);
+  /// InputError if both are given.
+  std::string history_file() const;
+};
+
+const std::vector<contact::Parameter<HistoryOptions>>& history_parameters();
+
+}  // namespace vibrotherm::app

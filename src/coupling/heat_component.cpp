@@ -1,0 +1,106 @@
+#include "vibrotherm/coupling/heat_component.hpp"
+
+#include "vibrotherm/coupling/thermoelastic_source.hpp"
+#include "vibrotherm/mesh/crack_line.hpp"
+
+namespace vibrotherm::coupling {
+
+HeatComponent::~HeatComponent() { (void)VecDestroy(&load_); }
+
+PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
+                                    io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.heat);
+  PetscLogStage stage;
+  PetscCall(PetscLogStageRegister("Heat setup", &stage));
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(stage));
+  PetscCall(solver_.Setup(specimen.heat, scene.heat));
+  summary->dofs_heat = solver_.dofs();
+  const PetscInt ncracks = static_cast<PetscInt>(specimen.cracks.size());
+  if (scene.run.physics == PhysicsChoice::Heat) {
+    PetscCheck(ncracks > 0 || scene.run.heat_crack_power == 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
+    PetscCall(solver_.SetCrackPower(std::vector<double>(ncracks, scene.run.heat_crack_power)));
+  } else if (waves && waves->crack()) {
+    auto friction = std::make_unique<FrictionHeatSource>();
+    PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), ncracks));
+    sources_.push_back(std::move(friction));
+  }
+  if (waves && scene.run.thermoelastic) {
+    const heat::HeatMaterial& m = scene.heat.material;
+    const double beta = (3.0 * scene.material.lambda() + 2.0 * scene.material.shear_modulus()) * m.expansion;
+    auto thermoelastic = std::make_unique<ThermoelasticSource>();
+    PetscCall(thermoelastic->Setup(waves->solver(), solver_.space(), m.T0 * beta));
+    sources_.push_back(std::move(thermoelastic));
+  }
+  PetscCall(DMCreateGlobalVector(specimen.heat, &load_));
+  for (double s : scene.run.crack_probes) {
+    mesh::CrackLine line;
+    PetscCall(line.Setup(specimen.heat, scene.run.crack_probe_crack - 1));
+    const auto p = line.At(s);
+    crack_probe_xy_.insert(crack_probe_xy_.end(), {p[0], p[1]});
+  }
+  std::vector<double> probes = scene.run.probe_points;
+  probes.insert(probes.end(), crack_probe_xy_.begin(), crack_probe_xy_.end());
+  PetscCall(solver_.SetProbePoints(probes));
+  PetscCall(PetscLogStagePop());
+  summary->stages["heat_setup"] = MPI_Wtime() - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StepTo(double t) {
+  PetscFunctionBeginUser;
+  const double t0 = MPI_Wtime();
+  if (!sources_.empty()) {
+    PetscCall(VecSet(load_, 0.0));
+    for (auto& source : sources_) {
+      PetscCall(source->AddLoad(t, t - solver_.time(), load_));
+      deposited_by_source_[source->name()] = source->deposited();
+    }
+    PetscCall(solver_.SetSourceLoad(load_));
+  }
+  PetscCall(solver_.AdvanceInSteps(t, 1));
+  seconds_ += MPI_Wtime() - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StopSources(const std::string& dir) {
+  PetscFunctionBeginUser;
+  if (sources_.empty()) PetscFunctionReturn(0);
+  for (auto& source : sources_) PetscCall(source->Finish(dir));
+  sources_.clear();
+  PetscCall(VecSet(load_, 0.0));  // nothing heats any more
+  PetscCall(solver_.SetSourceLoad(load_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::Energy(io::EnergyRow* row) const {
+  PetscFunctionBeginUser;
+  row->heat_deposited = solver_.deposited();
+  const auto by = [this](const char* name) {
+    const auto it = deposited_by_source_.find(name);
+    return it == deposited_by_source_.end() ? 0.0 : it->second;
+  };
+  row->heat_friction = by("friction");
+  row->heat_thermoelastic = by("thermoelastic");
+  row->heat_boundary_loss = solver_.boundary_loss();
+  PetscCall(solver_.HeatContent(&row->heat_content));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::Summarise(io::RunSummary* summary) const {
+  PetscFunctionBeginUser;
+  summary->physics_ran.push_back("heat");
+  summary->physics_time["heat"] = {0.0, solver_.time()};
+  summary->steps_heat = solver_.steps();
+  summary->heat_deposited = solver_.deposited();
+  summary->heat_boundary_loss = solver_.boundary_loss();
+  PetscCall(solver_.HeatContent(&summary->heat_content));
+  summary->stages["heat_steps"] = seconds_;
+  for (const auto& [name, energy] : deposited_by_source_) summary->heat_deposited_by[name] = energy;
+  if (deposited_by_source_.count("thermoelastic")) summary->physics_ran.push_back("thermoelastic");
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,208 @@
+#include "vibrotherm/coupling/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "recorder.hpp"
+
+namespace vibrotherm::coupling {
+
+Simulation::Simulation() = default;
+Simulation::~Simulation() = default;
+
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
+  scene_ = &scene;
+  const DriverOptions& run = scene.run;
+  PetscCheck(run.crack_probes.empty() || !specimen.cracks.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-crack_probe needs a crack (-crack_center or crack curves in -mesh_file)");
+  PetscCheck(run.crack_probes.empty() ||
+                 (run.crack_probe_crack >= 1 && run.crack_probe_crack <= static_cast<PetscInt>(specimen.cracks.size())),
+             comm, PETSC_ERR_USER_INPUT, "-crack_probe_crack %" PetscInt_FMT ": the specimen has %zu crack(s)",
+             run.crack_probe_crack, specimen.cracks.size());
+  PetscCall(PetscLogStageRegister("Wave steps", &wave_stage_));
+  PetscCall(PetscLogStageRegister("Heat steps", &heat_stage_));
+  if (run.physics != PhysicsChoice::Heat) {
+    waves_ = std::make_unique<WaveComponent>();
+    PetscCall(waves_->Setup(specimen, scene, summary));
+  }
+  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) || run.thermoelastic);
+  const bool heat_needed = run.physics == PhysicsChoice::Heat ||
+                           (run.physics == PhysicsChoice::All &&
+                            (run.heat == HeatChoice::On || (run.heat == HeatChoice::Auto && can_heat)));
+  if (heat_needed) {
+    heat_ = std::make_unique<HeatComponent>();
+    PetscCall(heat_->Setup(specimen, scene, waves_.get(), summary));
+    PetscBool every = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-energy_every", &every));
+    if (every && waves_)
+      PetscCall(PetscPrintf(comm, "vibrotherm: warning: -energy_every is not used while heat runs: energy.csv gets a "
+                                  "row per coupling interval (-couple_dt), where every column is known\n"));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  dir_ = dir;
+  Recorder recorder;
+  const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
+  PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
+                          heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary));
+  if (heat_) PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));  // t = 0
+  if (waves_) PetscCall(RunCoupled(recorder, summary));
+  if (heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12)) PetscCall(RunHeatAlone(recorder, summary));
+  if (heat_) {
+    PetscCall(heat_->StopSources(dir));
+    PetscCall(heat_->Summarise(summary));
+  }
+  PetscCall(recorder.Finish(summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
+  const double final_time = scene_->final_time;
+  // A whole number of wave steps per heat step: every heat step has the same
+  // length, so the heat matrix is factored once.
+  const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
+  const PetscInt per_heat_step = std::max<PetscInt>(1, std::lround(scene_->couple_dt / solver.dt() / per_interval));
+  PetscCall(PetscPrintf(comm,
+                        "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
+                        "omega_max %.4g rad/s), up to %.0f steps to t = %g s\n",
+                        solver.dofs(), scene_->wave.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
+                        std::ceil(final_time / solver.dt()), final_time));
+  if (heat_)
+    PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
+                          heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
+  const bool energy_each_step = !heat_;  // with heat, energy rows at intervals (all columns at one time)
+  solver.on_step = [&recorder, energy_each_step](const wave::WaveSolver& w) {
+    return recorder.OnWaveStep(w, energy_each_step);
+  };
+  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
+  const double expected_end =
+      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
+  recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(wave_stage_));
+  io::EnergyRow row;
+  PetscCall(waves_->Energy(&row));
+  PetscCall(recorder.RecordEnergy(row, heat_.get()));  // t = 0
+  if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
+  bool quiet = false;
+  while (solver.time() < final_time * (1 - 1e-12) && !quiet) {
+    PetscCall(Interval(recorder, per_heat_step, &row));
+    PetscCall(WavesQuiet(row, &quiet));
+  }
+  PetscCall(PetscLogStagePop());
+  summary->stages["wave_steps"] = MPI_Wtime() - t0 - (heat_ ? heat_->seconds() : 0.0);
+  PetscCall(recorder.progress().Done(solver.time(), solver.steps()));
+  PetscCall(StopWaves(recorder, row, summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Interval(Recorder& recorder, PetscInt per_heat_step, io::EnergyRow* row) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
+  for (PetscInt k = 0; k < heat_steps && solver.time() < scene_->final_time * (1 - 1e-12); ++k) {
+    PetscCall(waves_->Advance(per_heat_step, scene_->final_time));
+    if (!heat_) continue;
+    PetscCall(PetscLogStagePush(heat_stage_));
+    PetscCall(heat_->StepTo(solver.time()));
+    PetscCall(PetscLogStagePop());
+  }
+  PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
+  if (heat_) {
+    PetscCall(recorder.RecordTemperature(heat_->solver(), true));
+    PetscCall(recorder.RecordEnergy(*row, heat_.get()));
+  } else {
+    recorder.FlushProbes();
+  }
+  if (recorder.OutputDue(solver.time())) PetscCall(recorder.WriteFields(solver.time(), waves_.get(), heat_.get()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
+  PetscFunctionBeginUser;
+  *quiet = false;
+  if (scene_->run.quiet_fraction <= 0.0) PetscFunctionReturn(0);
+  // The mechanical energy left bounds the heat still to come: once it is a small
+  // fraction of what has been dissipated, stopping the waves loses at most that fraction.
+  const double left = e.kinetic + e.strain + e.interface_stored;
+  const double t = e.t;
+  recent_.push_back({t, left});
+  peak_mechanical_ = std::max(peak_mechanical_, left);
+  // Over a whole source period: kinetic and strain energy trade places within a cycle.
+  const double period = 1.0 / scene_->excitation.signal.frequency;
+  while (recent_.size() > 2 && recent_.front().t < t - period) recent_.erase(recent_.begin());
+  if (t < scene_->excitation.signal.duration + period) PetscFunctionReturn(0);
+  double most = 0.0;
+  for (const Sample& s : recent_) most = std::max(most, s.energy);
+  const double reference = heat_ && e.dissipated > 0.0 ? e.dissipated : peak_mechanical_;
+  *quiet = most <= scene_->run.quiet_fraction * reference;
+  mechanical_left_ = most;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
+  if (!heat_) PetscCall(recorder.RecordEnergy(last, nullptr));
+  recorder.FlushProbes();
+  recorder.StopWaves(last);
+  summary->wave_energy_left = mechanical_left_;
+  if (solver.time() < scene_->final_time * (1 - 1e-12))
+    PetscCall(PetscPrintf(comm, "Waves quiet at t = %.6g s: wave solver stopped%s\n", solver.time(),
+                          heat_ ? ", heat continues alone" : ""));
+  // The waves are over: the heat sources write their records, the wave solver
+  // and the interface are freed (the heat TS carries on alone).
+  if (heat_) PetscCall(heat_->StopSources(dir_));
+  PetscCall(waves_->Stop(summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  heat::HeatSolver& heat = heat_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)heat.space().dm());
+  const double final_time = scene_->final_time;
+  PetscCall(heat.UseFreeIntegrator());
+  const double t_begin = heat.time();
+  const PetscInt steps_before = heat.steps();
+  recorder.progress().Start(comm, "heat", t_begin, final_time, 0.0, true);
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(heat_stage_));
+  if (recorder.OutputDue(t_begin)) PetscCall(recorder.WriteFields(t_begin, nullptr, heat_.get()));
+  heat.on_step = [this, &recorder](const heat::HeatSolver& h) {
+    PetscFunctionBeginUser;
+    PetscCall(recorder.RecordTemperature(h, false));
+    PetscCall(recorder.RecordEnergy(recorder.waves_at_stop(), heat_.get()));
+    PetscCall(recorder.progress().Update(h.time(), h.steps()));
+    PetscFunctionReturn(0);
+  };
+  // One TSSolve per output segment: the adaptor needs the step history a new solve discards.
+  while (heat.time() < final_time * (1 - 1e-12)) {
+    double stop = final_time;
+    for (double t : scene_->run.output_times)
+      if (t > heat.time() * (1 + 1e-12)) {
+        stop = std::min(stop, t);
+        break;
+      }
+    PetscCall(heat.AdvanceTo(stop));
+    if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));
+  }
+  heat.on_step = nullptr;
+  summary->stages["heat_free"] = MPI_Wtime() - t0;
+  summary->steps_heat_free = heat.steps() - steps_before;
+  PetscCall(PetscLogStagePop());
+  heat_->add_seconds(MPI_Wtime() - t0);
+  PetscCall(recorder.progress().Done(heat.time(), heat.steps()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,139 @@
+#include "vibrotherm/coupling/wave_component.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "vibrotherm/util/errors.hpp"
+
+namespace vibrotherm::coupling {
+namespace {
+
+/// Probe points are input too: all inside the specimen before anything is written.
+PetscErrorCode CheckProbePoints(const fe::LagrangeSpace& space, const std::vector<double>& xy) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)space.dm());
+  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+    PetscInt cell;
+    std::array<double, 2> ref;
+    PetscCall(space.Locate(xy[i], xy[i + 1], &cell, &ref));
+    PetscInt found = cell >= 0, anywhere;
+    PetscCallMPI(MPI_Allreduce(&found, &anywhere, 1, MPIU_INT, MPI_MAX, comm));
+    PetscCheck(anywhere, comm, PETSC_ERR_USER_INPUT, "-probe_points: point %zu (%g, %g) lies outside the specimen",
+               i / 2 + 1, xy[i], xy[i + 1]);
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Expected largest approach: twice the displacement amplitude the source imposes
+/// (for a traction source, the displacement of a plane S wave, A / (ρ c_s ω)).
+double ExpectedApproach(const Scene& scene) {
+  const double omega = 2.0 * M_PI * scene.excitation.signal.frequency;
+  const double amplitude = scene.excitation.type == wave::SourceType::Displacement
+                               ? scene.excitation.signal.amplitude
+                               : scene.excitation.signal.amplitude / (scene.material.density * scene.material.cs() * omega);
+  return 2.0 * std::abs(amplitude);
+}
+
+/// Scenes that run but cannot mean what their user wants: said once, at setup.
+PetscErrorCode WarnAboutTheSource(DM dm, const Scene& scene, double dt) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt faces = 0, total;
+  PetscBool has;
+  PetscCall(DMHasLabel(dm, "source", &has));
+  if (has) PetscCall(DMGetStratumSize(dm, "source", 1, &faces));
+  PetscCallMPI(MPI_Allreduce(&faces, &total, 1, MPIU_INT, MPI_SUM, comm));
+  if (total == 0)
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: the specimen has no source edge (-edge_* source, or a 'source' "
+                                "curve in -mesh_file): nothing excites the waves\n"));
+  const double steps_per_period = 1.0 / (scene.excitation.signal.frequency * dt);
+  if (steps_per_period < 10.0)
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: -source_frequency %g Hz: a period is only %.3g wave steps of %g s; "
+                                "the source is not resolved (refine the time step with -wave_cfl or -wave_dt)\n",
+                          scene.excitation.signal.frequency, steps_per_period, dt));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
+  PetscLogStage stage;
+  PetscCall(PetscLogStageRegister("Wave setup", &stage));
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(stage));
+  solver_ = std::make_unique<wave::WaveSolver>();
+  PetscCall(solver_->Setup(specimen.wave, scene.material, scene.excitation, scene.wave));
+  std::unique_ptr<contact::CrackLaw> law;
+  VibrothermCallCpp(comm, law = contact::create_crack_law(scene.contact));
+  if (!specimen.cracks.empty() && law->has_contact()) {
+    crack_ = std::make_unique<interface::CrackInterface>();
+    PetscCall(crack_->Setup(solver_->space(), solver_->mass(), std::move(law), scene.a0));
+    PetscCall(solver_->SetInterface(crack_.get(), ExpectedApproach(scene)));
+    summary->contact_cells = crack_->global_cells();
+  }
+  PetscCall(PetscLogStagePop());
+  summary->stages["wave_setup"] = MPI_Wtime() - t0;
+  summary->derived["wave_dt"] = solver_->dt();
+  summary->derived["wave_stable_dt"] = solver_->stable_dt();
+  summary->derived_rules["wave_dt"] = scene.wave.dt > 0 ? "-wave_dt"
+                                                        : "-wave_cfl x the stability limit (bulk, and the contact at a0 + "
+                                                          "twice the source amplitude), rounded down to 4 digits";
+  PetscCall(WarnAboutTheSource(specimen.wave, scene, solver_->dt()));
+  // Refused now, not after hours: the step count the run would need (the waves may stop earlier when quiet).
+  const double steps = std::ceil(scene.final_time / solver_->dt());
+  PetscCheck(steps <= scene.run.max_steps, comm, PETSC_ERR_USER_INPUT,
+             "the run needs up to %.3g wave steps (dt = %g s to -final_time %g s), more than -max_steps %.3g: shorten "
+             "-final_time, soften the contact law or raise -max_steps",
+             steps, solver_->dt(), scene.final_time, scene.run.max_steps);
+  PetscCall(CheckProbePoints(solver_->space(), scene.run.probe_points));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::Advance(PetscInt steps, double t_end) {
+  PetscFunctionBeginUser;
+  if (solver_->StepsUntil(t_end) <= steps) PetscCall(solver_->AdvanceTo(t_end));
+  else PetscCall(solver_->AdvanceSteps(steps));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveEnergyRow(const wave::WaveSolver& solver, io::EnergyRow* row) {
+  PetscFunctionBeginUser;
+  wave::WaveEnergy e;
+  PetscCall(solver.Energy(&e));
+  row->t = solver.time();
+  row->work_source = e.work_source;
+  row->kinetic = e.kinetic;
+  row->strain = e.strain;
+  row->radiated = e.radiated;
+  row->integrator_correction = e.integrator;
+  row->interface_stored = e.interface_stored;
+  row->dissipated = e.dissipated;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver_->space().dm());
+  summary->physics_ran.push_back("wave");
+  summary->physics_time["wave"] = {0.0, solver_->time()};
+  if (crack_) {
+    summary->physics_ran.push_back("contact");
+    summary->physics_time["contact"] = {0.0, solver_->time()};
+    double stored, seconds = crack_->seconds();
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, comm));
+    summary->stages["contact"] = seconds;  // part of wave_steps
+    PetscCall(crack_->Energies(&stored, &summary->dissipated_energy));
+    PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
+  }
+  summary->wave_dt_reductions = solver_->dt_reductions();
+  summary->dofs_wave = solver_->dofs();
+  summary->steps_wave = solver_->steps();
+  solver_->on_step = nullptr;
+  crack_.reset();
+  solver_.reset();
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling
