@@ -119,6 +119,33 @@ PetscErrorCode Recorder::RecordTemperature(const heat::HeatSolver& heat, bool wa
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Recorder::OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir) {
+  PetscFunctionBeginUser;
+  PetscCall(field_peak_.Setup(heat.space()));
+  heat_views_ = true;
+  camera_ = camera;
+  if (camera_) PetscCall(camera_->Open(dir));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Recorder::OnHeatStep(const heat::HeatSolver& heat) {
+  PetscFunctionBeginUser;
+  PetscCall(field_peak_.Update(heat));
+  if (camera_) PetscCall(camera_->Sample(heat));
+  PetscFunctionReturn(0);
+}
+
+double Recorder::NextHeatStop(double t, double final_time) const {
+  double stop = final_time;
+  for (double output : options_->output_times)
+    if (output > t * (1 + 1e-12)) {
+      stop = std::min(stop, output);
+      break;
+    }
+  if (camera_) stop = std::min(stop, camera_->NextBoundary(t));
+  return stop;
+}
+
 bool Recorder::OutputDue(double t) const {
   return next_output_ < options_->output_times.size() && t >= options_->output_times[next_output_] * (1 - 1e-12);
 }
@@ -198,6 +225,8 @@ PetscErrorCode Recorder::Finish(io::RunSummary* summary) {
   PetscCall(crack_state_.Finish());
   PetscCall(fields_.Finish());
   summary->max_budget_error = energy_.max_budget_error();
+  if (heat_views_) field_peak_.Summarise(summary);
+  if (camera_) PetscCall(camera_->Finish(summary));
   PetscFunctionReturn(0);
 }
 

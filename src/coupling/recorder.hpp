@@ -1,6 +1,6 @@
 // What a run writes while it steps, and when: probes.csv, energy.csv,
-// crack_state.csv, fields.h5 (+ fields_<grid>.xmf), the progress line and the temperature
-// extremes for the summary. The recording schedule (-probe_every,
+// crack_state.csv, fields.h5 (+ fields_<grid>.xmf), camera.h5 (HeatCamera), the progress
+// line and the temperature extremes for the summary (probes and the whole field). The recording schedule (-probe_every,
 // -energy_every, -crack_state_every, -output_times) lives here; the solvers are
 // read only through their getters and the crack interface's records.
 #pragma once
@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "vibrotherm/coupling/driver_options.hpp"
+#include "vibrotherm/coupling/field_peak.hpp"
+#include "vibrotherm/coupling/heat_camera.hpp"
 #include "vibrotherm/coupling/heat_component.hpp"
 #include "vibrotherm/coupling/wave_component.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
@@ -38,6 +40,12 @@ class Recorder {
   /// Temperatures at every probe at the heat solver's time (collective); writes
   /// the held wave rows with temperatures interpolated from the last call.
   PetscErrorCode RecordTemperature(const heat::HeatSolver& heat, bool waves_running);
+  /// The heat field's views: its peak (always) and the IR camera (null: none), which writes into dir. Collective.
+  PetscErrorCode OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir);
+  /// After every heat step and at t = 0: the field peak and the camera's pixels. Collective.
+  PetscErrorCode OnHeatStep(const heat::HeatSolver& heat);
+  /// Where the heat running alone stops next after t: an output time or a camera window boundary (or final).
+  double NextHeatStop(double t, double final_time) const;
   /// Writes the held probe rows without temperature.
   void FlushProbes() { probes_.Flush(nullptr); }
   /// Fields at output times: whether output k is due at time t.
@@ -64,6 +72,9 @@ class Recorder {
   io::CrackStateLog crack_state_;
   io::Progress progress_;
   io::FieldFile fields_;
+  FieldPeak field_peak_;
+  bool heat_views_ = false;
+  HeatCamera* camera_ = nullptr;
   interface::CrackInterface* crack_ = nullptr;
   std::vector<PetscInt> crack_probe_cells_;  ///< owned cell per crack probe (-1 elsewhere)
   std::vector<double> crack_probe_xy_;

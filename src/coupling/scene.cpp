@@ -66,6 +66,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));
   PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat));
+  PetscCall(ReadCameraOptions(comm, &s->camera));
   PetscCall(CheckScene(comm, *s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "recorder.hpp"
+#include "vibrotherm/coupling/heat_camera.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -34,12 +35,26 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   if (heat_needed) {
     heat_ = std::make_unique<HeatComponent>();
     PetscCall(heat_->Setup(specimen, scene, waves_.get(), summary));
+    PetscCall(SetupCamera(scene));
     PetscBool every = PETSC_FALSE;
     PetscCall(PetscOptionsHasName(nullptr, nullptr, "-energy_every", &every));
     if (every && waves_)
       PetscCall(PetscPrintf(comm, "vibrotherm: warning: -energy_every is not used while heat runs: energy.csv gets a "
                                   "row per coupling interval (-couple_dt), where every column is known\n"));
+  } else if (scene.camera.on) {
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: -camera: no heat runs in this scene, nothing to film: no "
+                                "camera.h5\n"));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::SetupCamera(const Scene& scene) {
+  PetscFunctionBeginUser;
+  if (!scene.camera.on) PetscFunctionReturn(0);
+  camera_ = std::make_unique<HeatCamera>();
+  PetscInt frames;
+  PetscCall(camera_->Setup(heat_->solver(), scene.camera, scene.final_time, &frames));
+  if (frames == 0) camera_.reset();
   PetscFunctionReturn(0);
 }
 
@@ -50,7 +65,11 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) 
   const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
   PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary));
-  if (heat_) PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));  // t = 0
+  if (heat_) {  // t = 0
+    PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir));
+    PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
+    PetscCall(recorder.OnHeatStep(heat_->solver()));
+  }
   if (waves_) PetscCall(RunCoupled(recorder, summary));
   if (heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12)) PetscCall(RunHeatAlone(recorder, summary));
   if (heat_) {
@@ -113,6 +132,7 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, PetscInt per_heat_step, 
     if (!heat_) continue;
     PetscCall(PetscLogStagePush(heat_stage_));
     PetscCall(heat_->StepTo(solver.time()));
+    PetscCall(recorder.OnHeatStep(heat_->solver()));
     PetscCall(PetscLogStagePop());
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
@@ -181,19 +201,14 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   heat.on_step = [this, &recorder](const heat::HeatSolver& h) {
     PetscFunctionBeginUser;
     PetscCall(recorder.RecordTemperature(h, false));
+    PetscCall(recorder.OnHeatStep(h));
     PetscCall(recorder.RecordEnergy(recorder.waves_at_stop(), heat_.get()));
     PetscCall(recorder.progress().Update(h.time(), h.steps()));
     PetscFunctionReturn(0);
   };
-  // One TSSolve per output segment: the adaptor needs the step history a new solve discards.
+  // One TSSolve per output segment (or camera window boundary): the adaptor needs the step history a new solve discards.
   while (heat.time() < final_time * (1 - 1e-12)) {
-    double stop = final_time;
-    for (double t : scene_->run.output_times)
-      if (t > heat.time() * (1 + 1e-12)) {
-        stop = std::min(stop, t);
-        break;
-      }
-    PetscCall(heat.AdvanceTo(stop));
+    PetscCall(heat.AdvanceTo(recorder.NextHeatStop(heat.time(), final_time)));
     if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));
   }
   heat.on_step = nullptr;

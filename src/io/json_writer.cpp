@@ -81,6 +81,12 @@ JsonWriter& JsonWriter::value(const char* key, long long v) {
   return *this;
 }
 
+JsonWriter& JsonWriter::value(const char* key, bool v) {
+  prefix(key);
+  out_ << (v ? "true" : "false");
+  return *this;
+}
+
 JsonWriter& JsonWriter::value(const char* key, const std::string& v) {
   prefix(key);
   out_ << quote(v);

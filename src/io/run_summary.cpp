@@ -8,6 +8,24 @@
 namespace vibrotherm::io {
 namespace {
 
+/// The heat field's peak and the camera's record (each only when it ran).
+void WriteHeatView(JsonWriter& json, const RunSummary& s) {
+  if (s.field_peak.known) {
+    json.value("field_max_temperature_rise", s.field_peak.rise);
+    json.begin_object("field_max_temperature_rise_at");
+    json.value("t", s.field_peak.t).value("x", s.field_peak.x).value("y", s.field_peak.y);
+    json.end_object();
+  }
+  const CameraSummary& c = s.camera;
+  if (c.frames == 0) return;
+  json.value("camera_peak_snr", c.peak_snr).value("camera_detectable", c.detectable);
+  json.begin_object("camera");
+  json.value("frames", c.frames).value("rows", c.rows).value("cols", c.cols).value("netd", c.netd);
+  json.value("peak_rise", c.peak_rise).value("peak_frame", c.peak_frame).value("peak_time", c.peak_time);
+  json.value("detect_snr", c.detect_snr);
+  json.end_object();
+}
+
 void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
   json.begin_object("mesh");
   json.value("source", m.source).value("cell_type", m.cell_type);
@@ -55,7 +73,8 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
       {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
       {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},
       {"derived.couple_dt", "s"}, {"derived.heat_dt", "s"}, {"derived.final_time", "s"}, {"modes.frequency", "Hz"},
-      {"field_max_temperature_rise", "K (t in s, x and y in m)"}};
+      {"field_max_temperature_rise", "K"}, {"field_max_temperature_rise_at", "t in s, x and y in m"},
+      {"camera.peak_rise", "K"}, {"camera.netd", "K"}, {"camera.peak_time", "s"}, {"camera_peak_snr", "1"}};
   json.begin_object("units");
   for (const auto& [key, unit] : units) json.value(key, std::string(unit));
   json.end_object();
@@ -112,6 +131,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
         json.end_object();
       }
       json.end_array();
+      WriteHeatView(json, s);
       if (!s.modes.empty()) {
         json.begin_array("modes");
         for (const auto& [frequency, participation] : s.modes)

@@ -10,7 +10,9 @@
 //          per coupling interval: energy and probe rows, fields, the quiet test.
 //          After the source, once the waves are quiet (-wave_quiet_fraction),
 //          the waves stop (their solver and the interface are freed) and the
-//          heat runs alone (adaptive) to -final_time.
+//          heat runs alone (adaptive) to -final_time, landing on output times
+//          and on the camera's frame windows.
+//          After every heat step: the field's peak rise and the camera's pixels.
 // Only what the scene needs is built: no crack (or an open crack law) → no
 // interface; nothing that can dissipate → no heat (unless -heat on);
 // -physics heat → no waves (prescribed -heat_crack_power on the cracks).
@@ -31,6 +33,7 @@
 namespace vibrotherm::coupling {
 
 class Recorder;
+class HeatCamera;
 
 class Simulation {
  public:
@@ -42,6 +45,8 @@ class Simulation {
   PetscErrorCode Run(const std::string& dir, io::RunSummary* summary);
 
  private:
+  /// The IR camera when the scene asks for one (-camera) and heat runs.
+  PetscErrorCode SetupCamera(const Scene& scene);
   PetscErrorCode RunCoupled(Recorder& recorder, io::RunSummary* summary);
   /// One coupling interval: waves and heat step by step, then the records of the interval.
   PetscErrorCode Interval(Recorder& recorder, PetscInt steps_per_heat_step, io::EnergyRow* row);
@@ -52,6 +57,7 @@ class Simulation {
   std::string dir_;
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;
+  std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
     double t, energy;

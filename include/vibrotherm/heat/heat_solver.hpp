@@ -90,6 +90,8 @@ class HeatSolver {
   double deposited() const { return deposited_; }
   /// Energy that left through sink and convective edges so far [J/m].
   double boundary_loss() const { return boundary_loss_; }
+  /// The rise θ = T − T0: the solver's own global vector of the heat DM (read only).
+  Vec rise() const { return theta_; }
   /// Temperature (not the rise) as a new global vector of the heat DM.
   PetscErrorCode Temperature(Vec* T) const;
   double time() const { return time_; }

@@ -18,6 +18,7 @@ class JsonWriter {
   JsonWriter& value(const char* key, long long v);
   JsonWriter& value(const char* key, int v) { return value(key, static_cast<long long>(v)); }
   JsonWriter& value(const char* key, const std::string& v);
+  JsonWriter& value(const char* key, bool v);
   JsonWriter& value(const char* key, const char* v) { return value(key, std::string(v)); }
   JsonWriter& boolean(const char* key, bool v);
 

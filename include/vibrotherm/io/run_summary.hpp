@@ -17,6 +17,22 @@ struct OptionRecord {
   std::string name, value, source;  ///< source: "command line", "options file" or "default"
 };
 
+/// The IR camera's record (coupling/heat_camera): frames, the best frame, detectability.
+struct CameraSummary {
+  long long frames = 0, rows = 0, cols = 0, peak_frame = 0;
+  double netd = 0.0, detect_snr = 0.0;
+  double peak_rise = 0.0;  ///< largest pixel of the noise-free frames [K]
+  double peak_time = 0.0;  ///< centre of that frame's window [s]
+  double peak_snr = 0.0;   ///< peak_rise / NETD
+  bool detectable = false; ///< peak_snr >= -camera_detect_snr
+};
+
+/// The largest rise over every heat dof at every heat step, when and where.
+struct FieldPeakSummary {
+  bool known = false;
+  double rise = 0.0, t = 0.0, x = 0.0, y = 0.0;  ///< [K], [s], [m]
+};
+
 struct RunSummary {
   std::string git_commit, date, host, command_line;
   std::vector<OptionRecord> option_values;  ///< every option the program declared
@@ -41,6 +57,8 @@ struct RunSummary {
   std::map<int, std::string> probe_labels;
   std::map<int, double> probe_max_temperature_rise;
   std::vector<std::pair<double, std::map<int, double>>> output_temperature_rise;
+  FieldPeakSummary field_peak;  ///< summary.json field_max_temperature_rise(_at), when heat ran
+  CameraSummary camera;         ///< summary.json camera, camera_peak_snr, camera_detectable (frames > 0)
   /// -modes: (frequency [Hz], defect participation) of each mode found.
   std::vector<std::pair<double, double>> modes;
   mesh::MeshSummary mesh;

@@ -1,0 +1,28 @@
+// The IR camera looking at the specimen's face (README "IR camera"): in plane
+// strain the temperature is uniform through the depth, so the heat field is
+// what the camera sees. Off unless -camera (or any -camera_* option) is given;
+// defaults of a cooled MWIR camera.
+#pragma once
+
+#include <petscsys.h>
+
+#include <vector>
+
+namespace vibrotherm::coupling {
+
+struct CameraOptions {
+  bool on = false;             ///< -camera, or any -camera_* option given (-camera 0: off)
+  double fps = 100.0;          ///< -camera_fps: frames per second [1/s]
+  double pixel = 5e-4;         ///< -camera_pixel: pixel size on the specimen [m]
+  double netd = 0.02;          ///< -camera_netd: noise-equivalent temperature difference [K]
+  double integration = 1e-3;   ///< -camera_integration: integration time of a frame [s]
+  std::vector<double> window;  ///< -camera_window x0,y0,x1,y1 [m]; empty: the specimen
+  PetscInt samples = 6;        ///< -camera_pixel_samples: n × n points per pixel (area average)
+  PetscInt seed = 1;           ///< -camera_seed: the noise's random seed
+  double detect_snr = 5.0;     ///< -camera_detect_snr: detectable when the peak SNR reaches it (Rose)
+};
+
+/// Reads and checks -camera*. Collective. A bad value is one line naming the option.
+PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* options);
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,30 @@
+// The largest temperature rise over the whole heat field (every heat dof), at
+// every heat step, with its time and place: summary.json
+// field_max_temperature_rise and field_max_temperature_rise_at (not just probes).
+#pragma once
+
+#include <petscvec.h>
+
+#include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+
+namespace vibrotherm::coupling {
+
+class FieldPeak {
+ public:
+  FieldPeak() = default;
+  FieldPeak(const FieldPeak&) = delete;
+  FieldPeak& operator=(const FieldPeak&) = delete;
+  ~FieldPeak();
+  /// The heat dofs' coordinates as global vectors (to say where the peak is). Collective.
+  PetscErrorCode Setup(const fe::LagrangeSpace& space);
+  /// One VecMax of the rise; the place is looked up only when the peak grows. Collective.
+  PetscErrorCode Update(const heat::HeatSolver& heat);
+  void Summarise(io::RunSummary* summary) const { summary->field_peak = peak_; }
+
+ private:
+  Vec x_ = nullptr, y_ = nullptr;
+  io::FieldPeakSummary peak_;
+};
+
+}  // namespace vibrotherm::coupling
