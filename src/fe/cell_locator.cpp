@@ -75,15 +75,19 @@ std::array<double, 4> CellLocator::MapJacobian(const Cell& c, const std::array<d
 bool CellLocator::Inside(const Cell& c, double x, double y, std::array<double, 2>* ref) const {
   std::array<double, 2> r = {0.0, 0.0};
   if (simplex_) r = {-1.0 / 3.0, -1.0 / 3.0};
-  for (int it = 0; it < 20; ++it) {  // Newton on x(r) = (x, y); one step for triangles
+  bool converged = false;
+  for (int it = 0; it < 20 && !converged; ++it) {  // Newton on x(r) = (x, y); one step for triangles
     const auto X = Map(c, r);
     const auto J = MapJacobian(c, r);
     const double fx = X[0] - x, fy = X[1] - y, det = J[0] * J[3] - J[1] * J[2];
     const double d0 = (J[3] * fx - J[1] * fy) / det, d1 = (-J[2] * fx + J[0] * fy) / det;
     r[0] -= d0, r[1] -= d1;
-    if (std::abs(d0) + std::abs(d1) < 1e-14) break;
+    converged = std::abs(d0) + std::abs(d1) < 1e-12;
   }
   *ref = r;
+  // From a point well outside a bilinear quad Newton may wander and stop inside
+  // [-1, 1]² without having converged: such a cell does not hold the point.
+  if (!converged && !simplex_) return false;
   const double tol = 1e-10;
   return simplex_ ? (r[0] >= -1 - tol && r[1] >= -1 - tol && r[0] + r[1] <= tol)
                   : (std::abs(r[0]) <= 1 + tol && std::abs(r[1]) <= 1 + tol);
