@@ -1,0 +1,100 @@
+"""camera.png: what the IR camera saw (camera.h5 of a -camera run).
+
+    draw(run_dir, out_png)
+
+Left: the best frame (largest noise-free pixel) without noise; middle: the same frame as
+the camera reads it (with NETD noise); right: the peak SNR of every frame (its largest
+noise-free pixel over the NETD) against time, with the detection threshold. Prints
+"skipped camera.png: <why>" and draws nothing when the run has no camera.h5.
+numpy, h5py and matplotlib only.
+"""
+import json
+import os
+
+import numpy as np
+
+
+def _read(run_dir):
+    """Frames (clean, noisy), their window times, the pixel grid and the camera's attributes."""
+    import h5py
+
+    with h5py.File(os.path.join(run_dir, "camera.h5"), "r") as f:
+        g = f["camera"]
+        times = g["time"][:]
+        attrs = {k: np.asarray(v) for k, v in g.attrs.items()}
+        peaks = np.array([g["clean_%d" % k][:].max() for k in range(len(times))])
+        best = int(np.argmax(peaks)) if len(peaks) else 0
+        clean = g["clean_%d" % best][:] if len(peaks) else None
+        noisy = g["frame_%d" % best][:] if len(peaks) else None
+    return times, peaks, best, clean, noisy, attrs
+
+
+def _detect_snr(run_dir):
+    try:
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            return float(json.load(f).get("camera", {}).get("detect_snr", 5.0))
+    except (OSError, ValueError):
+        return 5.0
+
+
+def _image(ax, fig, values, extent, title, cmap, vmin=None, vmax=None):
+    im = ax.imshow(values, origin="lower", extent=extent, cmap=cmap, vmin=vmin, vmax=vmax, interpolation="nearest")
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    fig.colorbar(im, ax=ax, shrink=0.85, label="temperature rise [K]")
+
+
+def _snr_panel(ax, times, peaks, netd, threshold, best):
+    snr = peaks / netd if netd > 0 else np.full_like(peaks, np.inf)
+    ax.plot(times[:, 0], snr, "o-", ms=3, color="#d62728", label="peak SNR of the frame")
+    ax.axhline(threshold, color="k", ls="--", lw=1, label="detectable from SNR %g" % threshold)
+    ax.plot(times[best, 0], snr[best], "k*", ms=10, label="best frame")
+    if len(times) > 1 and times[-1, 0] > 100 * times[0, 0]:
+        ax.set_xscale("log")
+    positive = snr[snr > 0]
+    if len(positive) and positive.max() / positive.min() > 100:
+        ax.set_yscale("log")
+    ax.set_xlabel("time (window centre) [s]")
+    ax.set_ylabel("peak rise / NETD")
+    ax.set_title("SNR vs time (NETD %g mK)" % (netd * 1e3), fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="best")
+
+
+def draw(run_dir, out_png):
+    """Draws camera.png from run_dir/camera.h5, or prints why it skips."""
+    if not os.path.exists(os.path.join(run_dir, "camera.h5")):
+        print("skipped %s: no camera.h5 (run with -camera)" % os.path.basename(out_png))
+        return None
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    times, peaks, best, clean, noisy, attrs = _read(run_dir)
+    if clean is None:
+        print("skipped %s: camera.h5 has no frame" % os.path.basename(out_png))
+        return None
+    netd, window = float(attrs["netd"]), attrs["window"] * 1e3
+    extent = [window[0], window[2], window[1], window[3]]
+    threshold = _detect_snr(run_dir)
+    aspect = (window[3] - window[1]) / (window[2] - window[0])
+    fig, axes = plt.subplots(1, 3, figsize=(15, max(4.5, min(8.0, 4.0 * aspect))),
+                             gridspec_kw={"width_ratios": [1, 1, 1.4]})
+    when = "[%.4g, %.4g] s" % (times[best, 1], times[best, 2])
+    _image(axes[0], fig, clean, extent, "best frame %d, %s, without noise\npeak %.3g K" % (best, when, peaks[best]),
+           "inferno", vmin=0.0, vmax=max(peaks[best], 1e-300))
+    # Scaled as the camera's display would be: the noise band (±2 NETD) or the signal, whichever is larger.
+    _image(axes[1], fig, noisy, extent, "as the camera reads it (NETD %g mK)\nSNR %.3g: %s" % (
+        netd * 1e3, peaks[best] / netd if netd > 0 else np.inf,
+        "detectable" if netd == 0 or peaks[best] / netd >= threshold else "not detectable"),
+        "inferno", vmin=-2 * netd, vmax=max(peaks[best], 2 * netd, 1e-300))
+    _snr_panel(axes[2], times, peaks, netd, threshold, best)
+    fig.suptitle("IR camera: %d frames at %g fps, integration %g ms, pixel %g mm" % (
+        len(times), float(attrs["fps"]), float(attrs["integration"]) * 1e3, float(attrs["pixel"]) * 1e3), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out_png, dpi=130)
+    plt.close(fig)
+    print("wrote", out_png)
+    return None
