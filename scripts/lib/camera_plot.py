@@ -37,8 +37,27 @@ def _detect_snr(run_dir):
         return 5.0
 
 
-def _image(ax, fig, values, extent, title, cmap, vmin=None, vmax=None):
+def _hot_box(values, extent):
+    """[x0, x1, y0, y1] around the pixels above 5 % of the peak, padded (the whole extent when they fill it)."""
+    rows, cols = np.nonzero(values > 0.05 * values.max())
+    if len(rows) == 0:
+        return None
+    ny, nx = values.shape
+    px, py = (extent[1] - extent[0]) / nx, (extent[3] - extent[2]) / ny
+    x0, x1 = extent[0] + cols.min() * px, extent[0] + (cols.max() + 1) * px
+    y0, y1 = extent[2] + rows.min() * py, extent[2] + (rows.max() + 1) * py
+    pad = 0.5 * max(x1 - x0, y1 - y0)
+    box = [max(extent[0], x0 - pad), min(extent[1], x1 + pad), max(extent[2], y0 - pad), min(extent[3], y1 + pad)]
+    whole = (box[1] - box[0]) * (box[3] - box[2]) > 0.5 * (extent[1] - extent[0]) * (extent[3] - extent[2])
+    return None if whole else box
+
+
+def _image(ax, fig, values, extent, title, cmap, vmin=None, vmax=None, box=None):
     im = ax.imshow(values, origin="lower", extent=extent, cmap=cmap, vmin=vmin, vmax=vmax, interpolation="nearest")
+    if box:
+        ax.set_xlim(box[0], box[1])
+        ax.set_ylim(box[2], box[3])
+        title += " (zoom)"
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
@@ -52,8 +71,7 @@ def _snr_panel(ax, times, peaks, netd, threshold, best):
     ax.plot(times[best, 0], snr[best], "k*", ms=10, label="best frame")
     if len(times) > 1 and times[-1, 0] > 100 * times[0, 0]:
         ax.set_xscale("log")
-    positive = snr[snr > 0]
-    if len(positive) and positive.max() / positive.min() > 100:
+    if np.all(snr > 0):  # from far below to far above the threshold: log
         ax.set_yscale("log")
     ax.set_xlabel("time (window centre) [s]")
     ax.set_ylabel("peak rise / NETD")
@@ -84,7 +102,7 @@ def draw(run_dir, out_png):
                              gridspec_kw={"width_ratios": [1, 1, 1.4]})
     when = "[%.4g, %.4g] s" % (times[best, 1], times[best, 2])
     _image(axes[0], fig, clean, extent, "best frame %d, %s, without noise\npeak %.3g K" % (best, when, peaks[best]),
-           "inferno", vmin=0.0, vmax=max(peaks[best], 1e-300))
+           "inferno", vmin=0.0, vmax=max(peaks[best], 1e-300), box=_hot_box(clean, extent))
     # Scaled as the camera's display would be: the noise band (±2 NETD) or the signal, whichever is larger.
     _image(axes[1], fig, noisy, extent, "as the camera reads it (NETD %g mK)\nSNR %.3g: %s" % (
         netd * 1e3, peaks[best] / netd if netd > 0 else np.inf,
