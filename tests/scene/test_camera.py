@@ -9,6 +9,7 @@ source in an infinite plate; the sink edges are 4 mm away, 3 diffusion lengths a
 - the noise (noisy − clean) has mean ≈ 0 and standard deviation = NETD within 10 %;
 - the same seed gives the same noise (2 ranks vs serial), another seed another noise;
 - 2 ranks give the serial clean frames to rounding (1e-9 of the peak);
+- with waves (frames inside coupled heat steps): the frame windows, 2 ranks = serial;
 - summary.json: camera_peak_snr = the best clean pixel / NETD, camera_detectable, and
   field_max_temperature_rise at the crack centre at the end, within 3 % of the closed form;
 - camera.xmf indexes every frame of camera.h5 (2DCoRectMesh, cell data);
@@ -178,8 +179,38 @@ def bad_options(tmp):
             print("refused: %s -> %s" % (" ".join(extra), lines[0]))
 
 
+def coupled(tmp):
+    """Waves and heat stepping together (frames inside the coupled heat steps): the windows, 2 ranks = serial."""
+    waves = ("-specimen_width 0.05 -specimen_height 0.1 -mesh_h 0.004 -mesh_h_crack 0.001 -edge_top source "
+             "-source_frequency 1e5 -source_amplitude 1e-7 -source_duration 3e-5 -source_ramp_cycles 1 "
+             "-contact_normal_law biwa -contact_biwa_m 0.5 -contact_biwa_C 1e11 -crack_law mmd -contact_mu 1 "
+             "-crack_center 0.025,0.05 -crack_length 0.02 -crack_angle 20 -final_time 2e-5 -camera_fps 1e5 "
+             "-camera_integration 5e-6 -camera_pixel 2.5e-4 -camera_window 0.01,0.04,0.04,0.06").split()
+    outs = []
+    for ranks in (1, 2):
+        out = os.path.join(tmp, "coupled%d" % ranks)
+        cmd = ([mpiexec, "-n", "2", "--oversubscribe"] if ranks == 2 else []) + [exe] + waves + ["-output_dir", out]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        check(r.returncode == 0, "coupled, %d rank(s): %s" % (ranks, r.stderr[-1500:]))
+        outs.append(out if r.returncode == 0 else None)
+    if not outs[0]:
+        return
+    clean, _, times, _, _, _ = read_frames(outs[0])
+    s = json.load(open(os.path.join(outs[0], "summary.json")))
+    check(np.allclose(times, [[2.5e-6, 0, 5e-6], [1.25e-5, 1e-5, 1.5e-5]], rtol=0, atol=1e-18),
+          "coupled: frame windows %s" % times.tolist())
+    check(0 < clean.max() <= s["field_max_temperature_rise"], "coupled: best pixel %g, field max %g"
+          % (clean.max(), s["field_max_temperature_rise"]))
+    print("coupled: best pixel %.4g K, field max %.4g K" % (clean.max(), s["field_max_temperature_rise"]))
+    if outs[1]:
+        pclean = read_frames(outs[1])[0]
+        diff = np.max(np.abs(pclean - clean)) / clean.max()
+        check(diff <= 1e-9, "coupled: 2 ranks vs serial %g of the peak" % diff)
+
+
 with tempfile.TemporaryDirectory() as tmp:
     bad_options(tmp)
+    coupled(tmp)
     serial = run(tmp, "serial", [])
     parallel = run(tmp, "mpi", ["-final_time", "3e-3"], ranks=2)  # two frames: 2 ranks are slow on 2 shared cores
     other = run(tmp, "seed", ["-camera_seed", "7", "-final_time", "1e-3"])
