@@ -5,14 +5,16 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
 
 #include "vibrotherm/fe/cell_locator.hpp"
 #include "vibrotherm/util/root_task.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
-constexpr double kMaxSamplePoints = 5e7;  ///< sub-sample points located at setup, at most
+constexpr double kMaxSamplePoints = 2e7;  ///< sub-sample points located at setup, at most
 }
 
 HeatCamera::~HeatCamera() {

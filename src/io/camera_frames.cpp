@@ -110,20 +110,22 @@ void CameraFrames::WriteXdmf() const {
   s << std::setprecision(17);
   s << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
     << "  <Grid Name=\"camera\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  // 2DCoRectMesh: dimensions and origin slowest first (y, then x); pixels are its cells.
+  // A one-pixel-thick slab of voxels (3DCoRectMesh, z from 0 to one pixel), pixels as its
+  // cells: both ParaView readers (XDMF Reader, Xdmf3 Reader S) read it in the x-y plane; a
+  // 2DCoRectMesh lands in the y-z plane. Dimensions and origin slowest first (z, y, x).
   for (std::size_t k = 0; k < times_.size() / 3; ++k) {
     s << "   <Grid Name=\"frame_" << k << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << times_[3 * k] << "\"/>\n"
-      << "    <Topology TopologyType=\"2DCoRectMesh\" Dimensions=\"" << grid_.rows + 1 << " " << grid_.cols + 1
-      << "\"/>\n    <Geometry GeometryType=\"ORIGIN_DXDY\">\n"
-      << "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"2\">" << grid_.y0 << " "
+      << "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"2 " << grid_.rows + 1 << " " << grid_.cols + 1
+      << "\"/>\n    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+      << "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"3\">0 " << grid_.y0 << " "
       << grid_.x0 << "</DataItem>\n"
-      << "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"2\">" << grid_.pixel << " "
-      << grid_.pixel << "</DataItem>\n    </Geometry>\n";
+      << "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"3\">" << grid_.pixel << " "
+      << grid_.pixel << " " << grid_.pixel << "</DataItem>\n    </Geometry>\n";
     for (const char* name : {"frame", "clean"})
       s << "    <Attribute Name=\"" << (std::string(name) == "frame" ? "temperature_rise" : "temperature_rise_clean")
         << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-        << "     <DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"" << grid_.rows << " "
+        << "     <DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"1 " << grid_.rows << " "
         << grid_.cols << "\">" << file << ":/camera/" << name << "_" << k << "</DataItem>\n    </Attribute>\n";
     s << "   </Grid>\n";
   }

@@ -12,7 +12,7 @@ source in an infinite plate; the sink edges are 4 mm away, 3 diffusion lengths a
 - with waves (frames inside coupled heat steps): the frame windows, 2 ranks = serial;
 - summary.json: camera_peak_snr = the best clean pixel / NETD, camera_detectable, and
   field_max_temperature_rise at the crack centre at the end, within 3 % of the closed form;
-- camera.xmf indexes every frame of camera.h5 (2DCoRectMesh, cell data);
+- camera.xmf indexes every frame of camera.h5 (a one-voxel 3DCoRectMesh slab at the window, cell data);
 - bad camera options are refused with one line naming the option, exit 2, nothing written.
 
 usage: test_camera.py VIBROTHERM MPIEXEC"""
@@ -151,10 +151,12 @@ def check_xdmf(out, frames, rows, cols):
     check(len(grids) == frames, "camera.xmf: %d grids for %d frames" % (len(grids), frames))
     for g in grids:
         top = g.find("Topology")
-        ok = top.get("TopologyType") == "2DCoRectMesh" and top.get("Dimensions") == "%d %d" % (rows + 1, cols + 1)
+        ok = top.get("TopologyType") == "3DCoRectMesh" and top.get("Dimensions") == "2 %d %d" % (rows + 1, cols + 1)
+        origin = [float(v) for v in g.find("Geometry").findall("DataItem")[0].text.split()]
+        ok = ok and np.allclose(origin, [0, 0.004, 0.003], rtol=0, atol=1e-15)  # z, y, x: the window's corner
         items = [a.find("DataItem") for a in g.findall("Attribute")]
         ok = ok and all(a.get("Center") == "Cell" for a in g.findall("Attribute"))
-        ok = ok and all(i.get("Dimensions") == "%d %d" % (rows, cols) for i in items)
+        ok = ok and all(i.get("Dimensions") == "1 %d %d" % (rows, cols) for i in items)
         check(ok and len(items) == 2, "camera.xmf grid %s" % g.get("Name"))
 
 

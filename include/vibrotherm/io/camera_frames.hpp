@@ -7,7 +7,8 @@
 //   /camera/x, /y     pixel centres [m] (cols, rows); row 0 is the bottom row (y ascending)
 //   group /camera attributes: fps, pixel, netd, integration, seed, window (x0 y0 x1 y1 imaged)
 // The .h5 is written as .partial and renamed by Finish; the .xmf (a temporal
-// collection of 2DCoRectMesh grids, frames as cell data) is written last.
+// collection of one-pixel-thick 3DCoRectMesh slabs, frames as cell data, which both
+// ParaView XDMF readers show in the x-y plane) is written last.
 #pragma once
 
 #include <hdf5.h>
