@@ -43,8 +43,10 @@ class Simulation {
 
  private:
   PetscErrorCode RunCoupled(Recorder& recorder, io::RunSummary* summary);
-  /// One coupling interval: waves and heat step by step, then the records of the interval.
-  PetscErrorCode Interval(Recorder& recorder, PetscInt steps_per_heat_step, io::EnergyRow* row);
+  /// One coupling interval: waves and the heat's substeps of about heat_dt each
+  /// (whole wave steps), then the records of the interval.
+  PetscErrorCode Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row);
+  PetscInt WaveStepsPerHeatStep(double heat_dt) const;
   PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
   PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
 
