@@ -1,17 +1,19 @@
 """camera.png: what the IR camera saw (camera.h5 of a -camera run).
 
-    draw(run_dir, out_png)
+    draw(run_dir, out_png)      draws, or prints "skipped camera.png: <why>"
+    figure(run_dir)             the figure, or raises run_data.Skip (scripts/plot's list)
 
 Left: the best frame (largest noise-free pixel) without noise; middle: the same frame as
 the camera reads it (with NETD noise); right: the peak SNR of every frame (its largest
-noise-free pixel over the NETD) against time, with the detection threshold. Prints
-"skipped camera.png: <why>" and draws nothing when the run has no camera.h5.
+noise-free pixel over the NETD) against time, with the detection threshold.
 numpy, h5py and matplotlib only.
 """
 import json
 import os
 
 import numpy as np
+
+from run_data import Skip
 
 
 def _read(run_dir):
@@ -82,9 +84,22 @@ def _snr_panel(ax, times, peaks, netd, threshold, best):
 
 def draw(run_dir, out_png):
     """Draws camera.png from run_dir/camera.h5, or prints why it skips."""
+    import matplotlib.pyplot as plt
+
+    try:
+        fig = figure(run_dir)
+    except Skip as why:
+        print("skipped %s: %s" % (os.path.basename(out_png), why))
+        return
+    fig.savefig(out_png, dpi=130)
+    plt.close(fig)
+    print("wrote", out_png)
+
+
+def figure(run_dir):
+    """The camera figure of run_dir; raises Skip when the run has no camera frames."""
     if not os.path.exists(os.path.join(run_dir, "camera.h5")):
-        print("skipped %s: no camera.h5 (run with -camera)" % os.path.basename(out_png))
-        return None
+        raise Skip("no camera.h5 (run with -camera)")
     import matplotlib
 
     matplotlib.use("Agg")
@@ -92,8 +107,7 @@ def draw(run_dir, out_png):
 
     times, peaks, best, clean, noisy, attrs = _read(run_dir)
     if clean is None:
-        print("skipped %s: camera.h5 has no frame" % os.path.basename(out_png))
-        return None
+        raise Skip("camera.h5 has no frame")
     netd, window = float(attrs["netd"]), attrs["window"] * 1e3
     extent = [window[0], window[2], window[1], window[3]]
     threshold = _detect_snr(run_dir)
@@ -112,7 +126,4 @@ def draw(run_dir, out_png):
     fig.suptitle("IR camera: %d frames at %g fps, integration %g ms, pixel %g mm" % (
         len(times), float(attrs["fps"]), float(attrs["integration"]) * 1e3, float(attrs["pixel"]) * 1e3), fontsize=10)
     fig.tight_layout()
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
-    print("wrote", out_png)
-    return None
+    return fig

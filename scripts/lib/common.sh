@@ -28,14 +28,16 @@ install_dependencies() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 }
 
+# build_project [TARGET...]: every target by default, or only the given ones.
 build_project() {
-  local generator=()
+  local generator=() targets=()
+  for target in "$@"; do targets+=(--target "$target"); done
   command -v ninja >/dev/null && generator=(-G Ninja)
   if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     cmake -S "$VIBROTHERM_ROOT" -B "$BUILD_DIR" "${generator[@]}" \
       -DCMAKE_BUILD_TYPE="${VIBROTHERM_BUILD_TYPE:-Release}" >/dev/null
   fi
-  cmake --build "$BUILD_DIR" -j "$(nproc)"
+  cmake --build "$BUILD_DIR" -j "$(nproc)" "${targets[@]}"
 }
 
 # Open MPI refuses to run as root unless told; CI and these machines run as root.

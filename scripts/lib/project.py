@@ -7,10 +7,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 BUILD_DIR = os.environ.get("VIBROTHERM_BUILD_DIR", os.path.join(ROOT, "build"))
 
 
-def build():
-    """Installs the missing Debian packages and builds (scripts/lib/common.sh)."""
-    subprocess.run(["bash", "-c", 'source "%s/scripts/lib/common.sh"; install_dependencies; build_project >&2' % ROOT],
-                   check=True, env=dict(os.environ, VIBROTHERM_BUILD_DIR=BUILD_DIR))
+def build(*targets):
+    """Installs the missing Debian packages and builds (scripts/lib/common.sh): the given
+    CMake targets only (e.g. "vibrotherm"), or everything when none is given."""
+    subprocess.run(["bash", "-c", 'source "%s/scripts/lib/common.sh"; install_dependencies; build_project "$@" >&2'
+                    % ROOT, "build"] + list(targets), check=True, env=dict(os.environ, VIBROTHERM_BUILD_DIR=BUILD_DIR))
 
 
 def mpi_env():

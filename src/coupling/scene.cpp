@@ -31,12 +31,12 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
     PetscCheck(std::isfinite(value), comm, PETSC_ERR_USER_INPUT, "%s must be finite, got %g", option, value);
   // Implicit types other than alpha2 would build a dense Jacobian; rk types with an
   // embedded error estimate reject steps rank by rank (a deadlock on 2 ranks).
-  char type[64] = "basicsymplectic", rk[64] = "4";
+  char type[64] = "velocityverlet", rk[64] = "4";
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_rk_type", rk, sizeof(rk), nullptr));
-  const std::vector<std::string> types = {"basicsymplectic", "rk", "ssp", "alpha2"};
+  const std::vector<std::string> types = {"velocityverlet", "basicsymplectic", "rk", "ssp", "alpha2"};
   PetscCheck(std::find(types.begin(), types.end(), std::string(type)) != types.end(), comm, PETSC_ERR_USER_INPUT,
-             "-wave_ts_type %s is not supported for waves (basicsymplectic|rk|ssp|alpha2)", type);
+             "-wave_ts_type %s is not supported for waves (velocityverlet|basicsymplectic|rk|ssp|alpha2)", type);
   const std::vector<std::string> rk_types = {"1fe", "2a", "3", "4"};
   PetscCheck(std::string(type) != "rk" || std::find(rk_types.begin(), rk_types.end(), std::string(rk)) != rk_types.end(),
              comm, PETSC_ERR_USER_INPUT, "-wave_ts_rk_type %s is not supported for waves (1fe|2a|3|4: fixed steps)", rk);

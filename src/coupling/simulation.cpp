@@ -88,7 +88,8 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   // A whole number of wave steps per heat step: every heat step has the same
   // length, so the heat matrix is factored once.
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
-  const PetscInt per_heat_step = std::max<PetscInt>(1, std::lround(scene_->couple_dt / solver.dt() / per_interval));
+  const double heat_dt = scene_->couple_dt / per_interval;
+  const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), up to %.0f steps to t = %g s\n",
@@ -113,7 +114,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
   bool quiet = false;
   while (solver.time() < final_time * (1 - 1e-12) && !quiet) {
-    PetscCall(Interval(recorder, per_heat_step, &row));
+    PetscCall(Interval(recorder, heat_dt, &row));
     PetscCall(WavesQuiet(row, &quiet));
   }
   PetscCall(PetscLogStagePop());
@@ -123,12 +124,17 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::Interval(Recorder& recorder, PetscInt per_heat_step, io::EnergyRow* row) {
+PetscInt Simulation::WaveStepsPerHeatStep(double heat_dt) const {
+  return std::max<PetscInt>(1, std::lround(heat_dt / waves_->solver().dt()));
+}
+
+PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row) {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves_->solver();
   const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
   for (PetscInt k = 0; k < heat_steps && solver.time() < scene_->final_time * (1 - 1e-12); ++k) {
-    PetscCall(waves_->Advance(per_heat_step, scene_->final_time));
+    // Counted again each time: the contact may have shrunk the wave step.
+    PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
     if (!heat_) continue;
     PetscCall(PetscLogStagePush(heat_stage_));
     PetscCall(heat_->StepTo(solver.time()));

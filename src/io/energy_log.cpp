@@ -24,7 +24,7 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
   const double imbalance = r.work_source - r.kinetic - r.strain - r.integrator_correction - r.radiated -
                            r.interface_stored - r.dissipated;
   const double error = max_work_ > 0.0 ? imbalance / max_work_ : 0.0;
-  max_error_ = std::max(max_error_, std::abs(error));
+  max_imbalance_ = std::max(max_imbalance_, std::abs(imbalance));
   if (budget_error) *budget_error = error;
   if (file_)
     file_->stream() << r.t << ',' << r.work_source << ',' << r.kinetic << ',' << r.strain << ',' << r.radiated << ','

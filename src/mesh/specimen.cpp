@@ -1,5 +1,7 @@
 #include "vibrotherm/mesh/specimen.hpp"
 
+#include "vibrotherm/mesh/memory_estimate.hpp"
+
 #include "vibrotherm/mesh/crack_split.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
 #include "vibrotherm/mesh/metis_partitioner.hpp"
@@ -48,6 +50,7 @@ struct MeshSource {
   char file[PETSC_MAX_PATH_LEN] = "", heat_file[PETSC_MAX_PATH_LEN] = "";
   PetscBool from_file = PETSC_FALSE, heat_from_file = PETSC_FALSE;
   PetscInt refinements = 0;
+  PetscBool force = PETSC_FALSE;  ///< run even above the memory estimate
 };
 
 PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
@@ -61,6 +64,8 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
                                nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
   PetscCall(PetscOptionsBoundedInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
                                    m->refinements, &m->refinements, nullptr, 0));
+  PetscCall(PetscOptionsBool("-force", "Run even when the memory estimate exceeds the memory available", nullptr,
+                             m->force, &m->force, nullptr));
   PetscOptionsEnd();
   PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
              "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
@@ -201,6 +206,27 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(Distribute(&s->heat, "heat_mesh"));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree) {
+  PetscFunctionBeginUser;
+  MeshSource source;
+  PetscCall(ReadMeshSource(comm, &source));
+  if (source.from_file) PetscFunctionReturn(0);  // its size is known only once read
+  SpecimenGeometry geometry;
+  PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  PetscMPIInt ranks;
+  PetscCallMPI(MPI_Comm_size(comm, &ranks));
+  const MemoryEstimate e = EstimateMemory(geometry, static_cast<int>(source.refinements), static_cast<int>(wave_degree), ranks);
+  double available = AvailableMemory();
+  PetscCallMPI(MPI_Bcast(&available, 1, MPI_DOUBLE, 0, comm));
+  PetscCall(PetscPrintf(comm, "Memory estimate: %.3g wave cells, %.3g wave dofs, %.3g heat dofs: about %.3g GB (%.3g GB available)\n",
+                        e.wave_cells, e.wave_dofs, e.heat_dofs, e.bytes / 1e9, available / 1e9));
+  PetscCheck(source.force || available <= 0.0 || e.bytes <= 0.9 * available, comm, PETSC_ERR_USER_INPUT,
+             "the scene needs about %.3g GB (%.3g wave cells, %.3g wave dofs), more than the %.3g GB available: coarsen "
+             "-mesh_h or -mesh_h_crack, lower -dm_refine, or -force",
+             e.bytes / 1e9, e.wave_cells, e.wave_dofs, available / 1e9);
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,7 @@
 #include "vibrotherm/wave/stability.hpp"
 
+#include "vibrotherm/wave/verlet_ts.hpp"
+
 #include <slepceps.h>
 
 #include <algorithm>
@@ -94,7 +96,8 @@ PetscErrorCode Stable(const char* prefix, double h, bool* stable, bool* implicit
   PetscCall(TSCreate(PETSC_COMM_SELF, &ts));
   PetscCall(TSSetOptionsPrefix(ts, prefix));
   PetscCall(TSSetProblemType(ts, TS_LINEAR));
-  PetscCall(TSSetType(ts, TSBASICSYMPLECTIC));
+  PetscCall(RegisterVelocityVerletTS());
+  PetscCall(TSSetType(ts, kVelocityVerletTS));  // the wave TS's default
   PetscCall(TSSetRHSFunction(ts, nullptr, OscillatorRHS, nullptr));
   PetscCall(TSRHSSplitSetIS(ts, "position", is_u));
   PetscCall(TSRHSSplitSetIS(ts, "momentum", is_v));

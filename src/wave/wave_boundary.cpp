@@ -27,151 +27,149 @@ PetscErrorCode FaceFrame(DM dm, const mesh::VertexCoordinates& x, PetscInt face,
   PetscFunctionReturn(0);
 }
 
-}  // namespace
+enum EdgeKind { kAbsorbing, kSource, kRoller, kAntisymmetric, kFixed, kKinds };
+const char* const kLabelOf[kKinds] = {"absorbing", "source", "roller", "antisymmetric", "fixed"};
 
-PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMaterial& material,
-                                 const Excitation& excitation, WaveBoundary* bc) {
+/// Per kind of edge, per node (at its x dof): Σ w B with B = ρ (c_p n nᵀ + c_s s sᵀ)
+/// for absorbing edges and d dᵀ otherwise (xx, yy, xy), and Σ w d (sum, 2 dofs).
+struct EdgeSums {
+  Vec xx = nullptr, yy = nullptr, xy = nullptr, sum = nullptr;
+  Vec* all[4] = {&xx, &yy, &xy, &sum};
+  EdgeSums() = default;
+  EdgeSums(const EdgeSums&) = delete;
+  EdgeSums& operator=(const EdgeSums&) = delete;
+  ~EdgeSums() {
+    for (Vec* v : all) (void)VecDestroy(v);
+  }
+};
+
+/// The sums of one kind's labelled faces into local vectors; *length: the faces' total length.
+PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::VertexCoordinates& x,
+                              const ElasticMaterial& material, const Excitation& excitation, int kind, EdgeSums* local,
+                              double* length) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
-  // Local accumulators, 2 dofs per node like the solution: one pair of vectors per kind.
-  enum { Absorbing, Source, Roller, Antisymmetric, Fixed, Kinds };
-  const char* names[Kinds] = {"absorbing", "source", "roller", "antisymmetric", "fixed"};
-  Vec xx[Kinds], yy[Kinds], xy[Kinds], sum[Kinds];
-  for (int k = 0; k < Kinds; ++k) {
-    for (Vec* v : {&xx[k], &yy[k], &xy[k], &sum[k]}) {
-      PetscCall(DMCreateLocalVector(dm, v));
-      PetscCall(VecSet(*v, 0.0));
-    }
+  for (Vec* v : local->all) {
+    PetscCall(DMCreateLocalVector(dm, v));
+    PetscCall(VecSet(*v, 0.0));
   }
+  *length = 0.0;
+  DMLabel label;
+  IS faces = nullptr;
+  PetscCall(DMGetLabel(dm, kLabelOf[kind], &label));
+  if (label) PetscCall(DMLabelGetStratumIS(label, 1, &faces));
+  if (!faces) PetscFunctionReturn(0);
   const double rho = material.density, cp = material.cp(), cs = material.cs();
+  // The direction each kind acts along: the source's chosen component, the
+  // tangent for an antisymmetry plane, the normal otherwise.
+  const bool tangential =
+      (kind == kSource && excitation.component == SourceComponent::Tangential) || kind == kAntisymmetric;
   std::vector<PetscInt> offsets;
   std::vector<double> weights;
-  double lengths[Kinds] = {0, 0, 0, 0, 0};
-  for (int k = 0; k < Kinds; ++k) {
-    DMLabel label;
-    PetscCall(DMGetLabel(dm, names[k], &label));
-    if (!label) continue;
-    IS faces;
-    PetscCall(DMLabelGetStratumIS(label, 1, &faces));
-    if (!faces) continue;
-    PetscInt nf;
-    const PetscInt* f;
-    PetscCall(ISGetLocalSize(faces, &nf));
-    PetscCall(ISGetIndices(faces, &f));
-    PetscScalar *axx, *ayy, *axy, *asum;
-    PetscCall(VecGetArray(xx[k], &axx));
-    PetscCall(VecGetArray(yy[k], &ayy));
-    PetscCall(VecGetArray(xy[k], &axy));
-    PetscCall(VecGetArray(sum[k], &asum));
-    for (PetscInt i = 0; i < nf; ++i) {
-      PetscInt depth;
-      PetscCall(DMPlexGetPointDepth(dm, f[i], &depth));
-      if (depth != 1) continue;
-      double n[2], s[2], L;
-      PetscCall(FaceFrame(dm, x, f[i], n, s));
-      PetscCall(space.FaceNodes(f[i], &offsets, &weights, &L));
-      lengths[k] += L;
-      // The direction each kind acts along.
-      // The direction each kind acts along: the source's chosen component, the
-      // tangent for an antisymmetry plane, the normal otherwise.
-      const bool tangential = (k == Source && excitation.component == SourceComponent::Tangential) || k == Antisymmetric;
-      const double* d = tangential ? s : n;
-      for (std::size_t j = 0; j < offsets.size(); ++j) {
-        const PetscInt o = offsets[j];
-        const double w = weights[j];
-        if (k == Absorbing) {  // ρ (c_p n nᵀ + c_s s sᵀ)
-          axx[o] += w * rho * (cp * n[0] * n[0] + cs * s[0] * s[0]);
-          ayy[o] += w * rho * (cp * n[1] * n[1] + cs * s[1] * s[1]);
-          axy[o] += w * rho * (cp * n[0] * n[1] + cs * s[0] * s[1]);
-        } else {
-          axx[o] += w * d[0] * d[0];
-          ayy[o] += w * d[1] * d[1];
-          axy[o] += w * d[0] * d[1];
-        }
-        asum[o] += w * d[0];
-        asum[o + 1] += w * d[1];
+  PetscInt nf;
+  const PetscInt* f;
+  PetscScalar *axx, *ayy, *axy, *asum;
+  PetscCall(ISGetLocalSize(faces, &nf));
+  PetscCall(ISGetIndices(faces, &f));
+  PetscCall(VecGetArray(local->xx, &axx));
+  PetscCall(VecGetArray(local->yy, &ayy));
+  PetscCall(VecGetArray(local->xy, &axy));
+  PetscCall(VecGetArray(local->sum, &asum));
+  for (PetscInt i = 0; i < nf; ++i) {
+    PetscInt depth;
+    PetscCall(DMPlexGetPointDepth(dm, f[i], &depth));
+    if (depth != 1) continue;
+    double n[2], s[2], L;
+    PetscCall(FaceFrame(dm, x, f[i], n, s));
+    PetscCall(space.FaceNodes(f[i], &offsets, &weights, &L));
+    *length += L;
+    const double* d = tangential ? s : n;
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+      const PetscInt o = offsets[j];
+      const double w = weights[j];
+      if (kind == kAbsorbing) {  // ρ (c_p n nᵀ + c_s s sᵀ)
+        axx[o] += w * rho * (cp * n[0] * n[0] + cs * s[0] * s[0]);
+        ayy[o] += w * rho * (cp * n[1] * n[1] + cs * s[1] * s[1]);
+        axy[o] += w * rho * (cp * n[0] * n[1] + cs * s[0] * s[1]);
+      } else {
+        axx[o] += w * d[0] * d[0];
+        ayy[o] += w * d[1] * d[1];
+        axy[o] += w * d[0] * d[1];
       }
+      asum[o] += w * d[0];
+      asum[o + 1] += w * d[1];
     }
-    PetscCall(VecRestoreArray(xx[k], &axx));
-    PetscCall(VecRestoreArray(yy[k], &ayy));
-    PetscCall(VecRestoreArray(xy[k], &axy));
-    PetscCall(VecRestoreArray(sum[k], &asum));
-    PetscCall(ISRestoreIndices(faces, &f));
-    PetscCall(ISDestroy(&faces));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lengths, Kinds, MPI_DOUBLE, MPI_SUM, comm));
-  bc->absorbing_length = lengths[Absorbing];
-  bc->source_length = lengths[Source];
+  PetscCall(VecRestoreArray(local->xx, &axx));
+  PetscCall(VecRestoreArray(local->yy, &ayy));
+  PetscCall(VecRestoreArray(local->xy, &axy));
+  PetscCall(VecRestoreArray(local->sum, &asum));
+  PetscCall(ISRestoreIndices(faces, &f));
+  PetscCall(ISDestroy(&faces));
+  PetscFunctionReturn(0);
+}
 
-  // Sum over ranks onto owned nodes.
-  Vec gxx[Kinds], gyy[Kinds], gxy[Kinds], gsum[Kinds];
-  for (int k = 0; k < Kinds; ++k) {
-    Vec* local[4] = {&xx[k], &yy[k], &xy[k], &sum[k]};
-    Vec* global[4] = {&gxx[k], &gyy[k], &gxy[k], &gsum[k]};
+/// Every kind's sums over all ranks, on the owned nodes (global vectors).
+PetscErrorCode SumEdgeKinds(const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                            const Excitation& excitation, EdgeSums global[kKinds], double lengths[kKinds]) {
+  PetscFunctionBeginUser;
+  DM dm = space.dm();
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  for (int k = 0; k < kKinds; ++k) {
+    EdgeSums local;
+    PetscCall(AccumulateKind(space, x, material, excitation, k, &local, &lengths[k]));
     for (int j = 0; j < 4; ++j) {
-      PetscCall(DMCreateGlobalVector(dm, global[j]));
-      PetscCall(VecSet(*global[j], 0.0));
-      PetscCall(DMLocalToGlobal(dm, *local[j], ADD_VALUES, *global[j]));
-      PetscCall(VecDestroy(local[j]));
+      PetscCall(DMCreateGlobalVector(dm, global[k].all[j]));
+      PetscCall(VecSet(*global[k].all[j], 0.0));
+      PetscCall(DMLocalToGlobal(dm, *local.all[j], ADD_VALUES, *global[k].all[j]));
     }
   }
-  PetscInt nlocal;
-  PetscCall(VecGetLocalSize(gxx[0], &nlocal));
-  const PetscScalar *A[Kinds][4];
-  for (int k = 0; k < Kinds; ++k) {
-    PetscCall(VecGetArrayRead(gxx[k], &A[k][0]));
-    PetscCall(VecGetArrayRead(gyy[k], &A[k][1]));
-    PetscCall(VecGetArrayRead(gxy[k], &A[k][2]));
-    PetscCall(VecGetArrayRead(gsum[k], &A[k][3]));
-  }
-  bc->constraints.clear();
-  bc->dashpots.clear();
-  const bool displacement = excitation.type == SourceType::Displacement;
-  for (PetscInt node = 0; node < nlocal / 2; ++node) {
-    const PetscInt i = 2 * node;
-    auto block = [&](int k, double* bxx, double* byy, double* bxy) {
-      *bxx = A[k][0][i];  // all three sums are accumulated at the node's x dof
-      *byy = A[k][1][i];
-      *bxy = A[k][2][i];
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lengths, kKinds, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
+/// Read access to the sums of every kind: A[kind][0..3] = xx, yy, xy, sum.
+struct EdgeSumArrays {
+  const PetscScalar* A[kKinds][4];
+};
+
+/// The dashpot and the constraints of each owned node from the summed edges.
+void NodeConditions(const EdgeSumArrays& e, PetscInt nodes, bool displacement, WaveBoundary* bc) {
+  for (PetscInt node = 0; node < nodes; ++node) {
+    const PetscInt i = 2 * node;  // all three block sums are accumulated at the node's x dof
+    const auto block = [&](int k, double b[3]) {
+      for (int j = 0; j < 3; ++j) b[j] = e.A[k][j][i];
+      return b[0] + b[1] > 0.0;
     };
-    double bxx, byy, bxy;
-    block(Absorbing, &bxx, &byy, &bxy);
-    if (bxx + byy > 0.0) bc->dashpots.push_back({node, bxx, bxy, byy});
-    block(Fixed, &bxx, &byy, &bxy);
-    if (bxx + byy > 0.0) {
+    double b[3];
+    if (block(kAbsorbing, b)) bc->dashpots.push_back({node, b[0], b[2], b[1]});
+    if (block(kFixed, b)) {
       bc->constraints.push_back({node, {1.0, 0.0}, false});
       bc->constraints.push_back({node, {0.0, 1.0}, false});
       continue;
     }
     // Principal direction of Σ w d dᵀ, signed like Σ w d (consistent along an edge).
-    auto principal = [&](int k, double dir[2]) {
-      block(k, &bxx, &byy, &bxy);
-      if (!(bxx + byy > 0.0)) return false;
-      const double theta = 0.5 * std::atan2(2.0 * bxy, bxx - byy);
+    const auto principal = [&](int k, double dir[2]) {
+      if (!block(k, b)) return false;
+      const double theta = 0.5 * std::atan2(2.0 * b[2], b[0] - b[1]);
       dir[0] = std::cos(theta);
       dir[1] = std::sin(theta);
-      if (dir[0] * A[k][3][i] + dir[1] * A[k][3][i + 1] < 0.0) dir[0] = -dir[0], dir[1] = -dir[1];
+      if (dir[0] * e.A[k][3][i] + dir[1] * e.A[k][3][i + 1] < 0.0) dir[0] = -dir[0], dir[1] = -dir[1];
       return true;
     };
     double d[2];
-    if (displacement && principal(Source, d)) bc->constraints.push_back({node, {d[0], d[1]}, true});
-    if (principal(Roller, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
-    if (principal(Antisymmetric, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
+    if (displacement && principal(kSource, d)) bc->constraints.push_back({node, {d[0], d[1]}, true});
+    if (principal(kRoller, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
+    if (principal(kAntisymmetric, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
   }
-  PetscCall(PetscInfo(nullptr, "wave boundary: %zu dashpots, %zu constraints\n", bc->dashpots.size(), bc->constraints.size()));
-  for (int k = 0; k < Kinds; ++k) {
-    PetscCall(VecRestoreArrayRead(gxx[k], &A[k][0]));
-    PetscCall(VecRestoreArrayRead(gyy[k], &A[k][1]));
-    PetscCall(VecRestoreArrayRead(gxy[k], &A[k][2]));
-    PetscCall(VecRestoreArrayRead(gsum[k], &A[k][3]));
-  }
-  // A prescribed component cannot absorb (its dashpot would only exchange energy
-  // with the support): keep each dashpot on the free directions of its node,
-  // C ← P C P with P = I − d dᵀ for every constrained direction d.
-  std::vector<std::vector<const Constraint*>> constrained(nlocal / 2);
+}
+
+/// A prescribed component cannot absorb (its dashpot would only exchange energy
+/// with the support): keep each dashpot on the free directions of its node,
+/// C ← P C P with P = I − d dᵀ for every constrained direction d.
+void KeepDashpotsOnFreeDirections(PetscInt nodes, WaveBoundary* bc) {
+  std::vector<std::vector<const Constraint*>> constrained(nodes);
   for (const Constraint& c : bc->constraints) constrained[c.node].push_back(&c);
   std::vector<Dashpot> kept;
   for (Dashpot d : bc->dashpots) {
@@ -190,12 +188,36 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
     if (d.xx + d.yy > 1e-12 * (std::abs(d.xx) + std::abs(d.yy) + 1e-300)) kept.push_back(d);
   }
   bc->dashpots.swap(kept);
-  if (!displacement) {
-    bc->traction_shape = gsum[Source];
-    gsum[Source] = nullptr;
+}
+
+}  // namespace
+
+PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                                 const Excitation& excitation, WaveBoundary* bc) {
+  PetscFunctionBeginUser;
+  EdgeSums sums[kKinds];
+  double lengths[kKinds];
+  PetscCall(SumEdgeKinds(space, material, excitation, sums, lengths));
+  bc->absorbing_length = lengths[kAbsorbing];
+  bc->source_length = lengths[kSource];
+  PetscInt nlocal;
+  PetscCall(VecGetLocalSize(sums[0].xx, &nlocal));
+  EdgeSumArrays arrays;
+  for (int k = 0; k < kKinds; ++k)
+    for (int j = 0; j < 4; ++j) PetscCall(VecGetArrayRead(*sums[k].all[j], &arrays.A[k][j]));
+  bc->constraints.clear();
+  bc->dashpots.clear();
+  const bool displacement = excitation.type == SourceType::Displacement;
+  NodeConditions(arrays, nlocal / 2, displacement, bc);
+  for (int k = 0; k < kKinds; ++k)
+    for (int j = 0; j < 4; ++j) PetscCall(VecRestoreArrayRead(*sums[k].all[j], &arrays.A[k][j]));
+  KeepDashpotsOnFreeDirections(nlocal / 2, bc);
+  PetscCall(PetscInfo(nullptr, "wave boundary: %zu dashpots, %zu constraints\n", bc->dashpots.size(),
+                      bc->constraints.size()));
+  if (!displacement) {  // the traction load's shape ∫φ d ds
+    bc->traction_shape = sums[kSource].sum;
+    sums[kSource].sum = nullptr;
   }
-  for (int k = 0; k < Kinds; ++k)
-    for (Vec* v : {&gxx[k], &gyy[k], &gxy[k], &gsum[k]}) PetscCall(VecDestroy(v));
   PetscFunctionReturn(0);
 }
 

@@ -26,6 +26,13 @@ with tempfile.TemporaryDirectory() as tmp:
             continue
         s = json.load(open(os.path.join(out, "summary.json")))
         summaries[ranks] = s
+        # The memory estimate printed before meshing counts cells within a factor 2.
+        estimate = [l for l in r.stdout.splitlines() if l.startswith("Memory estimate:")]
+        check(len(estimate) == 1, "one memory estimate line: %s" % r.stdout[:500])
+        if estimate:
+            cells = float(estimate[0].split()[2])
+            check(0.5 < cells / s["mesh"]["cells"] < 2.0,
+                  "estimated %g wave cells vs %d made" % (cells, s["mesh"]["cells"]))
         check(s["ranks"] == ranks, "ranks in summary")
         check(not any(f.endswith(".partial") for f in os.listdir(out)), "partial files left")
         xmf = ET.parse(os.path.join(out, "mesh.xmf")).getroot()

@@ -59,6 +59,22 @@ with tempfile.TemporaryDirectory() as tmp:
         check(len(rows) == 6 * (summary["steps_wave"] // 10), "probe rows %d" % len(rows))
         check(os.path.exists(os.path.join(out, "crack_state.csv")), "crack_state.csv written")
 
+# The summary's budget error is a property of the run, not of how often energy
+# rows are written (rows every step vs every 50 steps, waves alone).
+with tempfile.TemporaryDirectory() as tmp:
+    errors = {}
+    for every in (1, 50):
+        out = os.path.join(tmp, "every%d" % every)
+        r = subprocess.run([exe, "-options_file", os.path.join(src, "options/paper.opts"), "-final_time", "3e-5",
+                            "-heat", "off", "-crack_state_every", "0", "-energy_every", str(every), "-output_dir", out],
+                           capture_output=True, text=True)
+        check(r.returncode == 0, "energy rows every %d steps: %s" % (every, r.stderr[-2000:]))
+        if r.returncode == 0:
+            errors[every] = json.load(open(os.path.join(out, "summary.json")))["max_budget_error"]
+    if len(errors) == 2:
+        check(errors[1] < 1e-5 and abs(errors[1] - errors[50]) <= 0.1 * errors[1],
+              "budget error with rows every step %g vs every 50 steps %g" % (errors[1], errors[50]))
+
 if 1 in runs and 2 in runs:
     a, b = runs[1][0], runs[2][0]
     check(len(a) == len(b), "row counts differ: %d vs %d" % (len(a), len(b)))

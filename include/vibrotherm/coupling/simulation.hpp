@@ -48,8 +48,10 @@ class Simulation {
   /// The IR camera when the scene asks for one (-camera) and heat runs.
   PetscErrorCode SetupCamera(const Scene& scene);
   PetscErrorCode RunCoupled(Recorder& recorder, io::RunSummary* summary);
-  /// One coupling interval: waves and heat step by step, then the records of the interval.
-  PetscErrorCode Interval(Recorder& recorder, PetscInt steps_per_heat_step, io::EnergyRow* row);
+  /// One coupling interval: waves and the heat's substeps of about heat_dt each
+  /// (whole wave steps), then the records of the interval.
+  PetscErrorCode Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row);
+  PetscInt WaveStepsPerHeatStep(double heat_dt) const;
   PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
   PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
 

@@ -24,6 +24,7 @@ class CrackStateLog {
 
  private:
   std::unique_ptr<AtomicFile> file_;  ///< rank 0
+  std::string block_;                 ///< the rows of one time, formatted (capacity kept)
 };
 
 }  // namespace vibrotherm::io

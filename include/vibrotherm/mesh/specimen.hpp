@@ -42,6 +42,9 @@ PetscErrorCode SpecimenDestroy(Specimen* specimen);
 
 /// Reads (declares, for -help) every mesh option without building anything. Collective.
 PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
+/// Prints the memory estimate of a generated specimen (memory_estimate.hpp) and
+/// refuses, naming the options, one beyond the memory available unless -force.
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree);
 
 /// Reads the generated-specimen options into geometry (used by SpecimenCreate).
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry);

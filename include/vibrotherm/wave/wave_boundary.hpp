@@ -36,6 +36,9 @@ struct WaveBoundary {
   std::vector<Dashpot> dashpots;
   Vec traction_shape = nullptr;  ///< global: ∫φ d ds on the source edge (traction source only)
   double source_length = 0.0, absorbing_length = 0.0;
+  WaveBoundary() = default;
+  WaveBoundary(const WaveBoundary&) = delete;  // owns traction_shape
+  WaveBoundary& operator=(const WaveBoundary&) = delete;
   ~WaveBoundary() { (void)VecDestroy(&traction_shape); }
 };
 

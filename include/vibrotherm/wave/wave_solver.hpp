@@ -2,13 +2,16 @@
 // (options prefix -wave_): u̇ = v, M v̇ = −K u − C v + f_source(t) + f_extra(u).
 //
 // State X = [u; v] (per rank: owned u block, then owned v block). Explicit
-// default: basicsymplectic type 2 (velocity Verlet: drift–kick–drift), with the
+// default: velocity Verlet (drift–kick–drift; verlet_ts.hpp, or basicsymplectic type 2), with the
 // split RHS; inside the kick the dashpot force uses the trapezoidal mean of the
 // velocity (implicit in the 2x2 dashpot blocks), so absorbing edges never limit
 // the step. Other types (rk, ssp, alpha2-free explicit ones) use the full RHS.
-// Prescribed components (displacement source, roller, fixed) are imposed on the
-// acceleration and reset exactly after each step. History-dependent forces
-// (the crack interface, issue 5) plug in through ExtraForce / post-step hooks.
+// Boundary terms (boundary_terms.hpp: dashpots, prescribed components, traction
+// load) act in order on the acceleration; prescribed components are reset
+// exactly after each step. The step: step_control.hpp. History-dependent forces
+// (the crack interface) plug in through WaveInterface.
+// Files: wave_solver.cpp (setup, TS, explicit stepping), wave_alpha2.cpp
+// (implicit alpha2), wave_energy.cpp (energy accounting).
 #pragma once
 
 #include <petscts.h>
@@ -20,8 +23,10 @@
 
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
+#include "vibrotherm/wave/step_control.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
 
 namespace vibrotherm::wave {
@@ -30,6 +35,7 @@ struct WaveOptions {
   PetscInt degree = 1;   ///< -wave_degree 1|2
   double cfl = 0.9;      ///< -wave_cfl: fraction of the stability limit
   double dt = 0.0;       ///< -wave_dt: explicit step (0: cfl × limit)
+  ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
@@ -79,9 +85,10 @@ class WaveSolver {
   PetscInt StepsUntil(double t_end) const;
 
   /// Attaches an interface (not owned); call after Setup. The initial step
-  /// includes its stiffness at the expected largest approach (a0 + expected_approach);
-  /// a rarely needed safety net shrinks it later if the contact stiffens beyond that.
-  PetscErrorCode SetInterface(WaveInterface* interface, double expected_approach);
+  /// includes its stiffness as the -wave_contact_step rule says (now, or at the
+  /// worst case a0 + worst_approach); the check after every step shrinks it when
+  /// the contact stiffens beyond that (see step_control.hpp).
+  PetscErrorCode SetInterface(WaveInterface* interface, double worst_approach);
   /// The lumped mass (global vector).
   Vec mass() const { return M_; }
 
@@ -91,13 +98,14 @@ class WaveSolver {
   PetscErrorCode Energy(WaveEnergy* e) const;  ///< kinetic and strain computed now
   double time() const { return time_; }
   PetscInt steps() const { return steps_; }
-  double dt() const { return dt_; }
-  double stable_dt() const { return stable_dt_; }
+  double dt() const { return step_.dt(); }
+  double stable_dt() const { return step_.stable_dt(); }
   double omega_max() const { return omega_max_; }
-  PetscInt dt_reductions() const { return dt_reductions_; }
+  PetscInt dt_reductions() const { return step_.reductions(); }
   PetscInt dofs() const { return global_dofs_; }
   const fe::LagrangeSpace& space() const { return space_; }
-  /// Displacement and velocity (global vectors of the DM; views into the state).
+  /// Displacement and velocity (global vectors of the DM; views on the state's
+  /// memory, valid until RestoreFields; writes through them change the state).
   PetscErrorCode GetFields(Vec* u, Vec* v) const;
   PetscErrorCode RestoreFields(Vec* u, Vec* v) const;
   /// The stepping operator A = −M⁻¹K (one MatMult per force evaluation).
@@ -106,20 +114,30 @@ class WaveSolver {
   TS ts() const { return ts_; }
 
  private:
+  // Explicit types (wave_solver.cpp).
   static PetscErrorCode RHSFull(TS ts, PetscReal t, Vec X, Vec F, void* ctx);
   static PetscErrorCode RHSPosition(TS ts, PetscReal t, Vec v, Vec f, void* ctx);
   static PetscErrorCode RHSMomentum(TS ts, PetscReal t, Vec u, Vec f, void* ctx);
   static PetscErrorCode PostStep(TS ts);
-  // Implicit alpha2: M A + C V + K U = f(t), constraints on the acceleration.
+  PetscErrorCode CreateFieldViews(MPI_Comm comm, PetscInt n);
+  PetscErrorCode CreateTS(MPI_Comm comm);
+  PetscErrorCode SetupStepControl(MPI_Comm comm);
+  PetscErrorCode CheckFinite(double t, double h) const;
+  /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
+  PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
+  /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
+  PetscErrorCode CheckStableStep();
+  // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
+  PetscErrorCode SetupAlpha2(MPI_Comm comm);
   static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
   static PetscErrorCode I2Jacobian(TS ts, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA,
                                    Mat J, Mat P, void* ctx);
   /// f = −K u − C v + g(t) f_source (no mass scaling, no constraints).
   PetscErrorCode Forces(double t, Vec u, Vec v, Vec f) const;
-  /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
-  PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
-  PetscErrorCode ImposeConstraints(double t, Vec u, Vec v) const;
-  PetscErrorCode AccountStep(double t, double dt);
+  // Energy accounting (wave_energy.cpp).
+  PetscErrorCode AccountStep(double t, double h);
+  /// −(dt²/8) vᵀKv: velocity Verlet's integrator term at the current step.
+  PetscErrorCode IntegratorTerm(double dt, double* term) const;
 
   DM dm_ = nullptr;
   fe::LagrangeSpace space_;
@@ -127,28 +145,24 @@ class WaveSolver {
   Excitation excitation_;
   WaveOptions options_;
   WaveBoundary boundary_;
+  std::vector<std::unique_ptr<BoundaryTerm>> terms_;  ///< in the order they act
+  StepControl step_;
   Mat A_ = nullptr;  ///< −M⁻¹K: the explicit step needs no separate mass scaling
   Mat K_ = nullptr;  ///< the stiffness itself, kept for alpha2's Jacobian only
-  Vec M_ = nullptr, Minv_ = nullptr, traction_accel_ = nullptr;  ///< M⁻¹ f_source shape
+  Vec M_ = nullptr, Minv_ = nullptr;
   Vec X_ = nullptr, force_ = nullptr;
+  Vec u_ = nullptr, v_ = nullptr;  ///< u and v: vectors on X_'s memory (GetFields)
   Vec u_view_ = nullptr, v_view_ = nullptr;  ///< alpha2: the TS's solution and velocity, views into X_
   Mat J_ = nullptr;                          ///< alpha2 Jacobian
   IS is_u_ = nullptr, is_v_ = nullptr;
   TS ts_ = nullptr;
   bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false, second_order_ = false;
-  double dt_ = 0, stable_dt_ = 0, omega_max_ = 0, time_ = 0;
-  double omega_dt_max_ = 0;              ///< (ω dt)_max of the TS type (0: implicit)
-  PetscInt dt_reductions_ = 0;           ///< times the contact forced a smaller step
+  double omega_max_ = 0, time_ = 0;
   WaveInterface* interface_ = nullptr;
-  PetscErrorCode CheckStableStep();     ///< shrinks dt when the interface stiffens
   PetscInt steps_ = 0, global_dofs_ = 0;
-  WaveEnergy accounted_;            ///< this rank's radiated energy and source work so far
-  std::vector<double> dashpot_v_prev_;   ///< velocities of the dashpot nodes at the last step
-  std::vector<PetscInt> traction_dofs_;  ///< owned dofs loaded by a traction source
-  std::vector<double> traction_u_prev_;  ///< their displacements at the last step
-  std::vector<double> reaction_;    ///< per constraint: force the support applies (last kick)
-  bool reaction_from_kick_ = false;
-  double source_power_prev_ = 0.0;  ///< this rank's support power at the last step (trapezoid)
+  BoundaryEnergy accounted_;         ///< this rank's radiated energy and source work so far
+  double integrator_offset_ = 0.0;   ///< integrator-term jumps of earlier step changes (global)
+  bool reaction_from_kick_ = false;  ///< the constraints' support forces are the last kick's
 };
 
 }  // namespace vibrotherm::wave

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <string>
@@ -92,6 +94,7 @@ PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
+  PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree));
   const double t = MPI_Wtime();
   PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen));
   summary->stages["mesh"] = MPI_Wtime() - t;
@@ -100,6 +103,16 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   if (app.modes && !app.mesh_only) PetscCall(modes_run->Setup(*specimen, scene, summary));
   else if (!app.mesh_only) PetscCall(simulation->Setup(*specimen, scene, summary));
   PetscFunctionReturn(0);
+}
+
+/// A declared default as the help printed it; PETSc prints some array options
+/// without a default from uninitialised memory (-wave_ts_time_span <6.9e-310>):
+/// a subnormal number is such garbage, recorded as "unset".
+std::string RecordedDefault(const std::string& value) {
+  char* end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  const bool number = end && *end == '\0' && !value.empty();
+  return number && x != 0.0 && std::fpclassify(x) == FP_SUBNORMAL ? "unset" : value;
 }
 
 /// The run record of summary.json: where and from what, every option with its
@@ -119,7 +132,8 @@ void RecordRun(const std::vector<std::string>& command_line, const std::vector<D
     PetscBool given = PETSC_FALSE;
     PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given);
     const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
-    summary->option_values.push_back({d.name, d.value, typed ? "command line" : given ? "options file" : "default"});
+    summary->option_values.push_back({d.name, given ? d.value : RecordedDefault(d.value),
+                                      typed ? "command line" : given ? "options file" : "default"});
   }
   summary->derived["final_time"] = scene.final_time;
   summary->derived_rules["final_time"] = scene.run.final_time > 0 ? "-final_time" : "the source duration";

@@ -1,0 +1,24 @@
+// What a scene will allocate, estimated from its geometry before any mesh is
+// made (a fine -mesh_h or a -dm_refine would otherwise allocate for minutes):
+// cells from the size field (far field W·H/h², plus each crack's graded band
+// ∫ (2L + 2πd) / h(d)² dd with h(d) = h_crack + grading·d), ×4 per -dm_refine;
+// dofs per cell of the Lagrange degree; bytes per cell and per dof calibrated
+// on the paper scene (mesh and topology ~2 kB/cell, matrix and vectors
+// ~10 B per nonzero + 30 vectors). A rough estimate: within a factor 2–3.
+#pragma once
+
+#include "vibrotherm/mesh/scene_geometry.hpp"
+
+namespace vibrotherm::mesh {
+
+struct MemoryEstimate {
+  double wave_cells = 0, wave_dofs = 0, heat_cells = 0, heat_dofs = 0;
+  double bytes = 0;  ///< all ranks together, the libraries' own footprint included
+};
+
+MemoryEstimate EstimateMemory(const SpecimenGeometry& geometry, int refinements, int wave_degree, int ranks);
+
+/// Bytes the machine can still give (MemAvailable of /proc/meminfo); 0 if unknown.
+double AvailableMemory();
+
+}  // namespace vibrotherm::mesh

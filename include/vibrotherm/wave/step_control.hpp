@@ -1,0 +1,50 @@
+// The explicit wave step: dt < (ω dt)_max / ω_max, with ω_max² ≤ ω_bulk² +
+// ω_contact² (Weyl: the crack adds a positive semidefinite stiffness).
+//   bulk     ω_bulk from SLEPc, once;
+//   contact  ω_contact² from the crack interface's current tangent stiffness.
+// Rule -wave_contact_step:
+//   current     (default) the step starts from the contact as it is (the
+//               initial approach); the first step after which cfl × the limit
+//               falls below it, it shrinks to the smaller of 90 % of itself and
+//               cfl × the limit at twice the current contact stiffness. The
+//               check after every step is exact (the Weyl bound; one reduction
+//               of a scalar); a run sees a few reductions (summary.json);
+//   worst_case  the step starts from every cell pressed twice the source
+//               amplitude beyond its initial approach (the rule before issue 17;
+//               safe but several times smaller than needed in the paper scene).
+// Steps are rounded down to 4 significant digits so that runs on different rank
+// counts (whose eigenvalue solves differ in the last digits) share a time grid.
+#pragma once
+
+#include <petscsys.h>
+
+namespace vibrotherm::wave {
+
+enum class ContactStepRule { kCurrent, kWorstCase };
+
+class StepControl {
+ public:
+  /// omega_dt_max = 0: an implicit type (no limit). fixed_dt > 0: the user's step.
+  PetscErrorCode Setup(MPI_Comm comm, double omega_max, double omega_dt_max, double cfl, double fixed_dt,
+                       const char* ts_type);
+  /// The initial step with the contact stiffness omega2 (rule's state) included.
+  void IncludeContact(double omega2);
+  /// After a step, with the contact's current omega2: *changed when the step shrank.
+  PetscErrorCode Check(double omega2, double time, PetscInt steps, bool* changed);
+  double dt() const { return dt_; }
+  double stable_dt() const { return stable_dt_; }
+  double omega_dt_max() const { return omega_dt_max_; }
+  bool implicit() const { return omega_dt_max_ <= 0.0; }
+  PetscInt reductions() const { return reductions_; }
+  /// Rounded down to 4 significant digits.
+  static double RoundDown(double raw);
+
+ private:
+  double Limit(double omega2) const;  ///< (ω dt)_max / √(ω_bulk² + omega2)
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  double omega_max_ = 0.0, omega_dt_max_ = 0.0, cfl_ = 0.9, fixed_dt_ = 0.0;
+  double dt_ = 0.0, stable_dt_ = 0.0;
+  PetscInt reductions_ = 0;
+};
+
+}  // namespace vibrotherm::wave

@@ -1,0 +1,53 @@
+#include "vibrotherm/mesh/memory_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+namespace vibrotherm::mesh {
+namespace {
+
+/// Cells of the graded band around one crack beyond what the far-field size would give.
+double CrackBandCells(const SpecimenGeometry& g, const Crack& c) {
+  const double d_max = std::max(0.0, (g.h - g.h_crack) / g.grading);
+  const int n = 200;
+  double cells = 0.0;
+  for (int i = 0; i < n; ++i) {  // midpoint rule over the distance from the crack
+    const double d = (i + 0.5) * d_max / n, h = g.h_crack + g.grading * d;
+    cells += (2.0 * c.length + 2.0 * M_PI * d) * (1.0 / (h * h) - 1.0 / (g.h * g.h)) * d_max / n;
+  }
+  return cells;
+}
+
+}  // namespace
+
+MemoryEstimate EstimateMemory(const SpecimenGeometry& g, int refinements, int wave_degree, int ranks) {
+  MemoryEstimate e;
+  double cells = g.width * g.height / (g.h * g.h);
+  for (const Crack& c : g.cracks) cells += CrackBandCells(g, c);
+  if (!g.quads) cells *= 2.3;  // triangles of the same size
+  cells *= std::pow(4.0, refinements);
+  e.wave_cells = cells;
+  const double nodes_per_cell = wave_degree == 2 ? 4.0 : 1.0, nonzeros_per_row = wave_degree == 2 ? 50.0 : 18.0;
+  e.wave_dofs = 2.0 * nodes_per_cell * cells;
+  e.heat_cells = 3.5 * cells / std::pow(4.0, refinements);  // the heat mesh ignores -dm_refine
+  e.heat_dofs = e.heat_cells;
+  const double mesh_bytes = 2e3 * (e.wave_cells + e.heat_cells);
+  const double wave_bytes = e.wave_dofs * (10.0 * nonzeros_per_row + 30.0 * 8.0);
+  const double heat_bytes = e.heat_dofs * 500.0;  // matrix, Cholesky factor, vectors
+  e.bytes = mesh_bytes + wave_bytes + heat_bytes + 1e8 * ranks;  // + PETSc, MPI, HDF5 per process
+  return e;
+}
+
+double AvailableMemory() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kb;
+  std::string unit;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb * 1024.0;
+  return 0.0;
+}
+
+}  // namespace vibrotherm::mesh

@@ -1,0 +1,82 @@
+// The wave solver's energy accounting: per step, what the boundary terms
+// exchange (radiated by dashpots, worked by the source); on request, the
+// kinetic and strain energy and velocity Verlet's integrator term.
+#include <algorithm>
+
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::wave {
+
+PetscErrorCode WaveSolver::AccountStep(double t, double h) {
+  PetscFunctionBeginUser;
+  // Boundary quantities only: no full-vector copies, no reduction per step
+  // (Energy() sums the ranks' accounts).
+  Vec u = nullptr, v = nullptr;
+  PetscCall(GetFields(&u, &v));
+  const bool end_state_forces =
+      !reaction_from_kick_ && std::any_of(terms_.begin(), terms_.end(),
+                                          [](const auto& term) { return term->needs_end_state_forces(); });
+  if (end_state_forces) PetscCall(Acceleration(t, u, v, force_, 0.0));  // the supports' forces at the end state
+  StepState state;
+  state.start = SignalValues::At(excitation_.signal, t - h);
+  state.middle = SignalValues::At(excitation_.signal, t - 0.5 * h);
+  state.end = SignalValues::At(excitation_.signal, t);
+  state.h = h;
+  state.reactions_from_kick = reaction_from_kick_;
+  PetscCall(VecGetArrayRead(u, &state.u));
+  PetscCall(VecGetArrayRead(v, &state.v));
+  for (auto& term : terms_) term->Account(state, &accounted_);
+  PetscCall(VecRestoreArrayRead(u, &state.u));
+  PetscCall(VecRestoreArrayRead(v, &state.v));
+  PetscCall(RestoreFields(&u, &v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::IntegratorTerm(double dt, double* term) const {
+  PetscFunctionBeginUser;
+  *term = 0.0;
+  if (!velocity_verlet_) PetscFunctionReturn(0);
+  // With A = −M⁻¹K: vᵀKv = −(M∘v)·(A v).
+  Vec u, v, Av, Mv;
+  PetscCall(GetFields(&u, &v));
+  PetscCall(VecDuplicate(v, &Av));
+  PetscCall(VecDuplicate(v, &Mv));
+  PetscCall(VecPointwiseMult(Mv, v, M_));
+  PetscCall(MatMult(A_, v, Av));
+  PetscScalar vKv;
+  PetscCall(VecDot(Mv, Av, &vKv));
+  PetscCall(VecDestroy(&Av));
+  PetscCall(VecDestroy(&Mv));
+  PetscCall(RestoreFields(&u, &v));
+  *term = dt * dt / 8.0 * PetscRealPart(vKv);  // −(dt²/8) vᵀKv
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
+  PetscFunctionBeginUser;
+  Vec u, v, Au, Mu;
+  PetscCall(GetFields(&u, &v));
+  PetscCall(VecDuplicate(u, &Au));
+  PetscCall(VecDuplicate(u, &Mu));
+  PetscCall(VecPointwiseMult(Mu, v, M_));
+  PetscScalar kinetic, strain;
+  PetscCall(VecDot(Mu, v, &kinetic));
+  PetscCall(VecPointwiseMult(Mu, u, M_));
+  PetscCall(MatMult(A_, u, Au));
+  PetscCall(VecDot(Mu, Au, &strain));  // −uᵀKu
+  PetscCall(VecDestroy(&Au));
+  PetscCall(VecDestroy(&Mu));
+  PetscCall(RestoreFields(&u, &v));
+  double local[2] = {accounted_.radiated, accounted_.work_source}, global[2];
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  e->radiated = global[0];
+  e->work_source = global[1];
+  e->kinetic = 0.5 * PetscRealPart(kinetic);
+  e->strain = -0.5 * PetscRealPart(strain);
+  PetscCall(IntegratorTerm(step_.dt(), &e->integrator));
+  e->integrator += integrator_offset_;
+  if (interface_) PetscCall(interface_->Energies(&e->interface_stored, &e->dissipated));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::wave
