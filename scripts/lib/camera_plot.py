@@ -73,6 +73,9 @@ def _snr_panel(ax, times, peaks, netd, threshold, best):
     ax.plot(times[best, 0], snr[best], "k*", ms=10, label="best frame")
     if len(times) > 1 and times[-1, 0] > 100 * times[0, 0]:
         ax.set_xscale("log")
+    else:
+        ax.locator_params(axis="x", nbins=6)
+        ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
     if np.all(snr > 0):  # from far below to far above the threshold: log
         ax.set_yscale("log")
     ax.set_xlabel("time (window centre) [s]")
