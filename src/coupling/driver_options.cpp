@@ -71,6 +71,10 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
              "-couple_dt must be > 0 and finite, got %g", o->couple_dt);
   PetscCheck(o->max_steps >= 1.0 && std::isfinite(o->max_steps), comm, PETSC_ERR_USER_INPUT,
              "-max_steps must be >= 1 and finite, got %g", o->max_steps);
+  // PETSc counts steps in a PetscInt: a larger count would wrap around (a run "done in 1 step").
+  PetscCheck(o->max_steps <= static_cast<double>(PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT,
+             "-max_steps must be <= %g (PETSc's step counter), got %g", static_cast<double>(PETSC_MAX_INT),
+             o->max_steps);
   PetscCheck(o->heat_substeps >= 1, comm, PETSC_ERR_USER_INPUT, "-heat_substeps must be >= 1, got %" PetscInt_FMT,
              o->heat_substeps);
   PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");

@@ -66,17 +66,7 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::model::mesh::generate(2);
   }
 
-  MeshData mesh;
-  const NodeMap nodes = collect_nodes();
-  mesh.coords = nodes.coords;
-  collect_cells(nodes, mesh, "gmsh");
-
-  collect_rectangle_edges(nodes, g, mesh);
-  for (std::size_t i = 0; i < g.cracks.size(); ++i) {
-    mesh.crack_names.push_back("crack" + std::to_string(i + 1));
-    for (int curve : crack_curves[i]) append(mesh.crack_edges, curve_edges(nodes, curve, static_cast<int>(i)));
-  }
-  return mesh;
+  return collect_rectangle_mesh(g, crack_curves, "gmsh");
 }
 
 MeshData read_mesh_file(const std::string& path) {

@@ -154,4 +154,18 @@ std::pair<std::array<double, 2>, std::array<double, 2>> curve_end_points(int cur
   return {ends[0], ends[1]};
 }
 
+MeshData collect_rectangle_mesh(const SpecimenGeometry& g, const std::vector<std::vector<int>>& crack_curves,
+                                const std::string& where) {
+  MeshData mesh;
+  const NodeMap nodes = collect_nodes();
+  mesh.coords = nodes.coords;
+  collect_cells(nodes, mesh, where);
+  collect_rectangle_edges(nodes, g, mesh);
+  for (std::size_t i = 0; i < crack_curves.size(); ++i) {
+    mesh.crack_names.push_back("crack" + std::to_string(i + 1));
+    for (int curve : crack_curves[i]) append(mesh.crack_edges, curve_edges(nodes, curve, static_cast<int>(i)));
+  }
+  return mesh;
+}
+
 }  // namespace vibrotherm::mesh::gmsh_support

@@ -47,6 +47,11 @@ bool has_triangles();
 /// sinks (every outer edge is a sink by default) into mesh.
 void collect_rectangle_edges(const NodeMap& nodes, const SpecimenGeometry& g, MeshData& mesh);
 
+/// The current 2D mesh of a generated rectangle: cells, outer edges, and crack i's
+/// edges from its model curves crack_curves[i] (named crack1, crack2, ...).
+MeshData collect_rectangle_mesh(const SpecimenGeometry& g, const std::vector<std::vector<int>>& crack_curves,
+                                const std::string& where);
+
 /// The mesh size as a background field: size_min within dist_min of `curves`,
 /// growing linearly to size_max at dist_max; size_max everywhere without curves.
 struct GradedSize {

@@ -292,16 +292,7 @@ MeshData generate_heat_mesh(const SpecimenGeometry& g, const HeatMeshSizes& size
     gmsh::model::mesh::generate(2);
   }
 
-  MeshData mesh;
-  const NodeMap nodes = collect_nodes();
-  mesh.coords = nodes.coords;
-  collect_cells(nodes, mesh, "heat mesh");
-  collect_rectangle_edges(nodes, g, mesh);
-  for (std::size_t i = 0; i < bands.size(); ++i) {
-    mesh.crack_names.push_back("crack" + std::to_string(i + 1));
-    for (int curve : crack_curves[i]) append(mesh.crack_edges, curve_edges(nodes, curve, static_cast<int>(i)));
-  }
-  return mesh;
+  return collect_rectangle_mesh(g, crack_curves, "heat mesh");
 }
 
 }  // namespace vibrotherm::mesh

@@ -65,6 +65,39 @@ PetscErrorCode SummariseHeatMesh(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionReturn(0);
 }
 
+/// Per crack, this rank's crack-tip vertices (labelled crack_tip), each attributed
+/// to the crack of a face it bounds.
+PetscErrorCode CountCrackTips(DM dm, DMLabel crack, DMLabel tip, const std::vector<bool>& ghost, PetscInt chart0,
+                              std::vector<PetscInt>* tips) {
+  PetscFunctionBeginUser;
+  IS tip_is;
+  PetscCall(DMLabelGetStratumIS(tip, 1, &tip_is));
+  if (tip_is) {
+    PetscInt n;
+    const PetscInt* v;
+    PetscCall(ISGetLocalSize(tip_is, &n));
+    PetscCall(ISGetIndices(tip_is, &v));
+    for (PetscInt i = 0; i < n; ++i) {
+      if (ghost[v[i] - chart0]) continue;
+      const PetscInt* support;
+      PetscInt ns;
+      PetscCall(DMPlexGetSupportSize(dm, v[i], &ns));
+      PetscCall(DMPlexGetSupport(dm, v[i], &support));
+      for (PetscInt k = 0; k < ns; ++k) {
+        PetscInt id;
+        PetscCall(DMLabelGetValue(crack, support[k], &id));
+        if (id >= 1) {
+          ++(*tips)[id - 1];
+          break;
+        }
+      }
+    }
+    PetscCall(ISRestoreIndices(tip_is, &v));
+    PetscCall(ISDestroy(&tip_is));
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
@@ -104,7 +137,7 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
       corners = cone_size;
       for (PetscInt k = 0; k < cone_size; ++k) {
         double h;
-      PetscCall(EdgeLength(x, dm, cone[k], &h));
+        PetscCall(EdgeLength(x, dm, cone[k], &h));
         h_min = std::min(h_min, h);
         h_max = std::max(h_max, h);
       }
@@ -125,32 +158,7 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
       if (pair[0] != pair[1] && !ghost[cone[k] - chart0] && tensor_edges_seen.insert(cone[k]).second) ++pairs[id - 1];
     }
   }
-  // Tips: vertices labelled crack_tip, attributed to the crack of a face they bound.
-  IS tip_is;
-  PetscCall(DMLabelGetStratumIS(tip, 1, &tip_is));
-  if (tip_is) {
-    PetscInt n;
-    const PetscInt* v;
-    PetscCall(ISGetLocalSize(tip_is, &n));
-    PetscCall(ISGetIndices(tip_is, &v));
-    for (PetscInt i = 0; i < n; ++i) {
-      if (ghost[v[i] - chart0]) continue;
-      const PetscInt* support;
-      PetscInt ns;
-      PetscCall(DMPlexGetSupportSize(dm, v[i], &ns));
-      PetscCall(DMPlexGetSupport(dm, v[i], &support));
-      for (PetscInt k = 0; k < ns; ++k) {
-        PetscInt id;
-        PetscCall(DMLabelGetValue(crack, support[k], &id));
-        if (id >= 1) {
-          ++tips[id - 1];
-          break;
-        }
-      }
-    }
-    PetscCall(ISRestoreIndices(tip_is, &v));
-    PetscCall(ISDestroy(&tip_is));
-  }
+  PetscCall(CountCrackTips(dm, crack, tip, ghost, chart0, &tips));
 
   PetscCallMPI(MPI_Allreduce(&bulk, &s->cells, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&cohesive, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));

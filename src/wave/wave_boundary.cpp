@@ -1,8 +1,11 @@
 #include "vibrotherm/wave/wave_boundary.hpp"
 
+#include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::wave {
 namespace {
@@ -27,8 +30,10 @@ PetscErrorCode FaceFrame(DM dm, const mesh::VertexCoordinates& x, PetscInt face,
   PetscFunctionReturn(0);
 }
 
-enum EdgeKind { kAbsorbing, kSource, kRoller, kAntisymmetric, kFixed, kKinds };
-const char* const kLabelOf[kKinds] = {"absorbing", "source", "roller", "antisymmetric", "fixed"};
+// The kinds of edge are mesh::EdgeKind (one list: the options, the labels, these sums).
+using mesh::EdgeKind;
+constexpr int kKinds = static_cast<int>(std::tuple_size<std::remove_reference_t<decltype(mesh::all_edge_kinds())>>::value);
+constexpr int Index(EdgeKind kind) { return static_cast<int>(kind); }
 
 /// Per kind of edge, per node (at its x dof): Σ w B with B = ρ (c_p n nᵀ + c_s s sᵀ)
 /// for absorbing edges and d dᵀ otherwise (xx, yy, xy), and Σ w d (sum, 2 dofs).
@@ -45,7 +50,7 @@ struct EdgeSums {
 
 /// The sums of one kind's labelled faces into local vectors; *length: the faces' total length.
 PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::VertexCoordinates& x,
-                              const ElasticMaterial& material, const Excitation& excitation, int kind, EdgeSums* local,
+                              const ElasticMaterial& material, const Excitation& excitation, EdgeKind kind, EdgeSums* local,
                               double* length) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
@@ -56,14 +61,15 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
   *length = 0.0;
   DMLabel label;
   IS faces = nullptr;
-  PetscCall(DMGetLabel(dm, kLabelOf[kind], &label));
+  PetscCall(DMGetLabel(dm, mesh::to_string(kind), &label));
   if (label) PetscCall(DMLabelGetStratumIS(label, 1, &faces));
   if (!faces) PetscFunctionReturn(0);
   const double rho = material.density, cp = material.cp(), cs = material.cs();
   // The direction each kind acts along: the source's chosen component, the
   // tangent for an antisymmetry plane, the normal otherwise.
   const bool tangential =
-      (kind == kSource && excitation.component == SourceComponent::Tangential) || kind == kAntisymmetric;
+      (kind == EdgeKind::Source && excitation.component == SourceComponent::Tangential) ||
+      kind == EdgeKind::Antisymmetric;
   std::vector<PetscInt> offsets;
   std::vector<double> weights;
   PetscInt nf;
@@ -87,7 +93,7 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
     for (std::size_t j = 0; j < offsets.size(); ++j) {
       const PetscInt o = offsets[j];
       const double w = weights[j];
-      if (kind == kAbsorbing) {  // ρ (c_p n nᵀ + c_s s sᵀ)
+      if (kind == EdgeKind::Absorbing) {  // ρ (c_p n nᵀ + c_s s sᵀ)
         axx[o] += w * rho * (cp * n[0] * n[0] + cs * s[0] * s[0]);
         ayy[o] += w * rho * (cp * n[1] * n[1] + cs * s[1] * s[1]);
         axy[o] += w * rho * (cp * n[0] * n[1] + cs * s[0] * s[1]);
@@ -116,9 +122,10 @@ PetscErrorCode SumEdgeKinds(const fe::LagrangeSpace& space, const ElasticMateria
   DM dm = space.dm();
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
-  for (int k = 0; k < kKinds; ++k) {
+  for (EdgeKind kind : mesh::all_edge_kinds()) {
+    const int k = Index(kind);
     EdgeSums local;
-    PetscCall(AccumulateKind(space, x, material, excitation, k, &local, &lengths[k]));
+    PetscCall(AccumulateKind(space, x, material, excitation, kind, &local, &lengths[k]));
     for (int j = 0; j < 4; ++j) {
       PetscCall(DMCreateGlobalVector(dm, global[k].all[j]));
       PetscCall(VecSet(*global[k].all[j], 0.0));
@@ -143,8 +150,8 @@ void NodeConditions(const EdgeSumArrays& e, PetscInt nodes, bool displacement, W
       return b[0] + b[1] > 0.0;
     };
     double b[3];
-    if (block(kAbsorbing, b)) bc->dashpots.push_back({node, b[0], b[2], b[1]});
-    if (block(kFixed, b)) {
+    if (block(Index(EdgeKind::Absorbing), b)) bc->dashpots.push_back({node, b[0], b[2], b[1]});
+    if (block(Index(EdgeKind::Fixed), b)) {
       bc->constraints.push_back({node, {1.0, 0.0}, false});
       bc->constraints.push_back({node, {0.0, 1.0}, false});
       continue;
@@ -159,9 +166,9 @@ void NodeConditions(const EdgeSumArrays& e, PetscInt nodes, bool displacement, W
       return true;
     };
     double d[2];
-    if (displacement && principal(kSource, d)) bc->constraints.push_back({node, {d[0], d[1]}, true});
-    if (principal(kRoller, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
-    if (principal(kAntisymmetric, d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
+    if (displacement && principal(Index(EdgeKind::Source), d)) bc->constraints.push_back({node, {d[0], d[1]}, true});
+    if (principal(Index(EdgeKind::Roller), d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
+    if (principal(Index(EdgeKind::Antisymmetric), d)) bc->constraints.push_back({node, {d[0], d[1]}, false});
   }
 }
 
@@ -198,8 +205,8 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
   EdgeSums sums[kKinds];
   double lengths[kKinds];
   PetscCall(SumEdgeKinds(space, material, excitation, sums, lengths));
-  bc->absorbing_length = lengths[kAbsorbing];
-  bc->source_length = lengths[kSource];
+  bc->absorbing_length = lengths[Index(EdgeKind::Absorbing)];
+  bc->source_length = lengths[Index(EdgeKind::Source)];
   PetscInt nlocal;
   PetscCall(VecGetLocalSize(sums[0].xx, &nlocal));
   EdgeSumArrays arrays;
@@ -215,8 +222,8 @@ PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMa
   PetscCall(PetscInfo(nullptr, "wave boundary: %zu dashpots, %zu constraints\n", bc->dashpots.size(),
                       bc->constraints.size()));
   if (!displacement) {  // the traction load's shape ∫φ d ds
-    bc->traction_shape = sums[kSource].sum;
-    sums[kSource].sum = nullptr;
+    bc->traction_shape = sums[Index(EdgeKind::Source)].sum;
+    sums[Index(EdgeKind::Source)].sum = nullptr;
   }
   PetscFunctionReturn(0);
 }

@@ -94,6 +94,7 @@ expect_error "-wave_ts_type beuler is not supported for waves" $box $crack -wave
 expect_error "-wave_ts_rk_type 3bs is not supported for waves" $box $crack -wave_ts_type rk -wave_ts_rk_type 3bs
 expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 30
 expect_error "-max_steps must be >= 1" $box $crack -max_steps 0
+expect_error "-max_steps must be <= 2.14748e+09" $box $crack -max_steps 1e12
 expect_error "more than the" $box $crack -mesh_h 2e-6 -mesh_h_crack 2e-6
 
 echo "bad input: $passed passed, $failed failed"
