@@ -19,7 +19,7 @@ cores; --full tries every value on every option.
 
 usage: test_generated_bad_input.py VIBROTHERM VIBROTHERM_CONTACT [--full]
            [--only REGEX] [--values v1,v2,...] [--timeout SECONDS]"""
-import argparse, csv, json, math, os, re, subprocess, sys, tempfile, time
+import argparse, concurrent.futures, csv, json, math, os, re, subprocess, sys, tempfile, time
 
 VALUES = ["nan", "inf", "-inf", "-1", "0", "abc", ""]
 CORE = ["nan", "-1", "abc"]
@@ -52,6 +52,7 @@ CONTEXT = {
     "-heat_crack_power": ["-physics", "heat"],
     "-material_expansion": ["-thermoelastic", "one_way"],
     "-heat_T_ext": ["-heat_bc", "convective"], "-heat_h": ["-heat_bc", "convective"],
+    "-crack_probe_crack": ["-crack_probe", "0.5"],
 }
 # vibrotherm-contact: a short built-in history written to a file.
 CONTACT_SCENE = ["-history_cycles", "1", "-history_steps_per_cycle", "20"]
@@ -77,6 +78,8 @@ ALLOWED = {
     "-material_nu": {"0"},
     # No thermoelastic coupling / a material that shrinks when heated.
     "-material_expansion": {"0", "-1"},
+    # The wave reader declares -source_duration >= 0: 0 is a run without excitation.
+    "-source_duration": {"0"},
     # Abrupt switch-on; uniform element size.
     "-source_ramp_cycles": {"0"}, "-mesh_grading": {"0"}, "-heat_mesh_grading": {"0"},
     # Booleans: 0 is false; a bare flag ("") is true.
@@ -159,71 +162,81 @@ def verdict(option, value, code, stderr, out_path, allowed, out_files, elapsed):
     return ""
 
 
+def make_case(program, exe, scene, context, option, value, cwd):
+    """The command of one case, the path that must not exist after an error, and
+    the files to check after a normal run."""
+    if program == "vibrotherm":
+        out = os.path.join(cwd, (value or "none") if option == "-output_dir" else "out")
+        cmd = [exe] + scene + context.get(option, []) + ([] if option == "-output_dir" else ["-output_dir", out])
+        files = [os.path.join(out, f) for f in ("summary.json", "energy.csv", "probes.csv")]
+    else:
+        out = os.path.join(cwd, (value or "none") if option == "-o" else "cell.csv")
+        cmd = [exe] + scene + context.get(option, []) + ([] if option == "-o" else ["-o", out])
+        files = [out]
+    return cmd + [option, value], out, files
+
+
+def run_case(case, env, timeout):
+    """'' when the case passes, else why not; and the seconds it took."""
+    program, option, value, cmd, cwd, out, files, allowed = case
+    t = time.time()
+    try:
+        r = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+        code, stderr = r.returncode, r.stderr
+    except subprocess.TimeoutExpired:
+        code, stderr = None, ""
+    elapsed = time.time() - t
+    why = verdict(option, value, code, stderr, out, allowed, files, elapsed)
+    stray = [f for f in os.listdir(cwd) if os.path.join(cwd, f) != out]
+    if not why and stray:  # nothing outside the output directory either
+        why = "wrote %s" % ", ".join(stray)
+    return why, elapsed
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("vibrotherm")
     p.add_argument("contact")
     p.add_argument("--full", action="store_true", help="every value on every option")
     p.add_argument("--only", default="", help="options matching this regular expression only")
-    p.add_argument("--values", default="", help="comma-separated values instead of the defaults")
+    p.add_argument("--values", default=None, help="comma-separated values instead of the defaults")
     p.add_argument("--timeout", type=float, default=20.0)
+    p.add_argument("--jobs", type=int, default=1, help="cases run at once")
     args = p.parse_args()
-    args.vibrotherm, args.contact = os.path.abspath(args.vibrotherm), os.path.abspath(args.contact)
     env = dict(os.environ)
     # A singleton MPI process without an mpirun daemon: starts ~0.25 s faster.
     env.setdefault("OMPI_MCA_ess_singleton_isolated", "1")
-
-    programs = [("vibrotherm", args.vibrotherm, declared_options(args.vibrotherm, "vibrotherm:"), SCENE, CONTEXT,
-                 ALLOWED),
-                ("vibrotherm-contact", args.contact, declared_options(args.contact, None), CONTACT_SCENE,
-                 CONTACT_CONTEXT, CONTACT_ALLOWED)]
-    total = failed = 0
+    vibrotherm, contact = os.path.abspath(args.vibrotherm), os.path.abspath(args.contact)
+    programs = [("vibrotherm", vibrotherm, declared_options(vibrotherm, "vibrotherm:"), SCENE, CONTEXT, ALLOWED),
+                ("vibrotherm-contact", contact, declared_options(contact, None), CONTACT_SCENE, CONTACT_CONTEXT,
+                 CONTACT_ALLOWED)]
     start = time.time()
     with tempfile.TemporaryDirectory() as tmp:
+        cases = []
         for program, exe, options, scene, context, allowed in programs:
             options = [o for o in options if re.search(args.only, o)]
             for i, option in enumerate(options):
-                if args.values:
+                if args.values is not None:
                     values = args.values.split(",")
                 elif args.full:
                     values = VALUES
                 else:
                     values = CORE + [EXTRA[i % len(EXTRA)]]
                 for value in values:
-                    total += 1
-                    cwd = os.path.join(tmp, "case%d" % total)
+                    cwd = os.path.join(tmp, "case%d" % len(cases))
                     os.makedirs(cwd)
-                    if program == "vibrotherm":
-                        out = os.path.join(cwd, (value or "none") if option == "-output_dir" else "out")
-                        cmd = [exe] + scene + context.get(option, [])
-                        if option != "-output_dir":
-                            cmd += ["-output_dir", out]
-                        cmd += [option, value]
-                        files = [os.path.join(out, f) for f in ("summary.json", "energy.csv", "probes.csv")]
-                    else:
-                        out = os.path.join(cwd, (value or "none") if option == "-o" else "cell.csv")
-                        cmd = [exe] + scene + context.get(option, [])
-                        if option != "-o":
-                            cmd += ["-o", out]
-                        cmd += [option, value]
-                        files = [out]
-                    t = time.time()
-                    try:
-                        r = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True,
-                                           timeout=args.timeout)
-                        code, stderr = r.returncode, r.stderr
-                    except subprocess.TimeoutExpired:
-                        code, stderr = None, ""
-                    why = verdict(option, value, code, stderr, out, allowed, files, time.time() - t)
-                    if why:
-                        failed += 1
-                        print("FAIL %s %s %r: %s" % (program, option, value, why), flush=True)
-                    # Nothing written outside the output directory either.
-                    stray = [f for f in os.listdir(cwd) if os.path.join(cwd, f) != out]
-                    if stray and not why:
-                        failed += 1
-                        print("FAIL %s %s %r: wrote %s" % (program, option, value, ", ".join(stray)), flush=True)
-    print("generated bad input: %d cases, %d failed, %.0f s" % (total, failed, time.time() - start))
+                    cmd, out, files = make_case(program, exe, scene, context, option, value, cwd)
+                    cases.append((program, option, value, cmd, cwd, out, files, allowed))
+        failed, slowest = 0, (0.0, "")
+        with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
+            for case, (why, elapsed) in zip(cases, pool.map(lambda c: run_case(c, env, args.timeout), cases)):
+                program, option, value = case[:3]
+                slowest = max(slowest, (elapsed, "%s %s %r" % (program, option, value)))
+                if why:
+                    failed += 1
+                    print("FAIL %s %s %r: %s" % (program, option, value, why), flush=True)
+    print("generated bad input: %d options, %d cases, %d failed, %.0f s (slowest %.1f s: %s)"
+          % (len({c[:2] for c in cases}), len(cases), failed, time.time() - start, slowest[0], slowest[1]))
     return 1 if failed else 0
 
 
