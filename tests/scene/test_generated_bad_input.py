@@ -76,8 +76,8 @@ ALLOWED = {
     "-output_times": {"0"},
     # Poisson ratio in (-1, 0.5): 0 is valid.
     "-material_nu": {"0"},
-    # No thermoelastic coupling / a material that shrinks when heated.
-    "-material_expansion": {"0", "-1"},
+    # No thermoelastic coupling (-help: "(-thermoelastic)"; the heat reader wants >= 0).
+    "-material_expansion": {"0"},
     # The wave reader declares -source_duration >= 0: 0 is a run without excitation.
     "-source_duration": {"0"},
     # Abrupt switch-on; uniform element size.
@@ -88,7 +88,7 @@ ALLOWED = {
     "-output_dir": ANY_NAME,
 }
 CONTACT_ALLOWED = {
-    "-contact_a0": {"-1", "0"}, "-contact_mu": {"0"},
+    "-contact_a0": {"-1", "0"}, "-contact_mu": {"0"}, "-material_nu": {"0"},
     # History sinusoids: any amplitude, offset, phase or drift; no ramp.
     **{"-history_%s_%s" % (x, f): {"-1", "0"} for x in "ab" for f in ("amplitude", "offset", "phase", "rate")},
     "-history_ramp_cycles": {"0"},
