@@ -65,6 +65,8 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
   // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
   PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
              m->refinements);
+  PetscCheck(!m->from_file || m->file[0], comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
+  PetscCheck(!m->heat_from_file || m->heat_file[0], comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
              "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
   PetscFunctionReturn(0);
