@@ -9,15 +9,15 @@
 
 namespace vibrotherm::contact {
 
-std::vector<HistoryPoint> read_history_csv(const std::string& path) {
+std::vector<HistoryPoint> read_history_csv(const std::string& path, const std::string& option) {
   std::vector<HistoryPoint> rows;
-  for (const CsvRow& r : read_csv_rows(path, "-history", {"t", "a", "b"})) {
+  for (const CsvRow& r : read_csv_rows(path, option, {"t", "a", "b"})) {
     const HistoryPoint p{r.values[0], r.values[1], r.values[2]};
     if (!rows.empty() && !(p.t > rows.back().t))
-      throw InputError("-history " + path + " line " + std::to_string(r.line) + ": t must increase");
+      throw InputError(option + " " + path + " line " + std::to_string(r.line) + ": t must increase");
     rows.push_back(p);
   }
-  if (rows.size() < 2) throw InputError("-history " + path + ": needs at least two rows");
+  if (rows.size() < 2) throw InputError(option + " " + path + ": needs at least two rows");
   return rows;
 }
 

@@ -58,12 +58,17 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   o->physics = static_cast<PhysicsChoice>(physics);
   o->heat = static_cast<HeatChoice>(heat);
   o->thermoelastic = thermoelastic == 1;
+  // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
+  PetscCheck(o->probe_points.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "-probe_points needs x,y pairs, got %zu numbers", o->probe_points.size());
   for (double s : o->crack_probes)
     PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);
   std::sort(o->output_times.begin(), o->output_times.end());
   for (double t : o->output_times)
     PetscCheck(t >= 0.0, comm, PETSC_ERR_USER_INPUT, "-output_times: times must be >= 0, got %g", t);
   PetscCheck(o->crack_state_every >= 0, comm, PETSC_ERR_USER_INPUT, "-crack_state_every must be >= 0");
+  PetscCheck(o->crack_probe_crack >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-crack_probe_crack must be >= 1 (cracks are numbered from 1), got %" PetscInt_FMT, o->crack_probe_crack);
   // Given values must be usable: never silently replaced by the default.
   PetscCheck(!final_set || (o->final_time > 0.0 && std::isfinite(o->final_time)), comm, PETSC_ERR_USER_INPUT,
              "-final_time must be > 0 and finite, got %g", o->final_time);

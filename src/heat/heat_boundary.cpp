@@ -3,6 +3,7 @@
 #include <petscdmplex.h>
 #include <petscsf.h>
 
+#include <cmath>
 #include <map>
 
 #include "vibrotherm/mesh/labels.hpp"
@@ -73,7 +74,10 @@ PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOpt
       const std::string name = std::string("-heat_bc_") + mesh::to_string(static_cast<mesh::Side>(s));
       PetscCall(ParseKind(comm, name.c_str(), o->side[s], &kind));
     }
-  PetscCheck(o->h >= 0, comm, PETSC_ERR_USER_INPUT, "-heat_h must be >= 0, got %g", o->h);
+  PetscCheck(o->h >= 0 && std::isfinite(o->h), comm, PETSC_ERR_USER_INPUT, "-heat_h must be >= 0 and finite, got %g",
+             o->h);
+  PetscCheck(o->T_ext > 0 && std::isfinite(o->T_ext), comm, PETSC_ERR_USER_INPUT,
+             "-heat_T_ext must be > 0 K and finite, got %g", o->T_ext);
   PetscFunctionReturn(0);
 }
 

@@ -21,9 +21,13 @@ PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* m) 
   PetscCall(PetscOptionsReal("-material_expansion", "Linear thermal expansion coefficient [1/K] (-thermoelastic)",
                              nullptr, m->expansion, &m->expansion, nullptr));
   PetscOptionsEnd();
-  PetscCheck(m->conductivity > 0, comm, PETSC_ERR_USER_INPUT, "-heat_conductivity must be > 0, got %g", m->conductivity);
-  PetscCheck(m->capacity > 0, comm, PETSC_ERR_USER_INPUT, "-heat_capacity must be > 0, got %g", m->capacity);
-  PetscCheck(m->T0 > 0, comm, PETSC_ERR_USER_INPUT, "-heat_T0 must be > 0 K, got %g", m->T0);
+  // Finite here too (CheckScene checks them later): -heat_T0 is the default of -heat_T_ext, checked first otherwise.
+  PetscCheck(m->conductivity > 0 && std::isfinite(m->conductivity), comm, PETSC_ERR_USER_INPUT,
+             "-heat_conductivity must be > 0 and finite, got %g", m->conductivity);
+  PetscCheck(m->capacity > 0 && std::isfinite(m->capacity), comm, PETSC_ERR_USER_INPUT,
+             "-heat_capacity must be > 0 and finite, got %g", m->capacity);
+  PetscCheck(m->T0 > 0 && std::isfinite(m->T0), comm, PETSC_ERR_USER_INPUT, "-heat_T0 must be > 0 K and finite, got %g",
+             m->T0);
   PetscCheck(m->expansion >= 0 && std::isfinite(m->expansion), comm, PETSC_ERR_USER_INPUT,
              "-material_expansion must be >= 0 and finite, got %g", m->expansion);
   PetscFunctionReturn(0);

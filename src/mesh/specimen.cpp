@@ -62,11 +62,16 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
   PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
                                "physical curve names; default: the unsplit -mesh_file mesh)",
                                nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
-  PetscCall(PetscOptionsBoundedInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
-                                   m->refinements, &m->refinements, nullptr, 0));
+  PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
+                            m->refinements, &m->refinements, nullptr));
   PetscCall(PetscOptionsBool("-force", "Run even when the memory estimate exceeds the memory available", nullptr,
                              m->force, &m->force, nullptr));
   PetscOptionsEnd();
+  // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
+  PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
+             m->refinements);
+  PetscCheck(!m->from_file || m->file[0], comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
+  PetscCheck(!m->heat_from_file || m->heat_file[0], comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
              "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
   PetscFunctionReturn(0);

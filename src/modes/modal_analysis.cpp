@@ -26,11 +26,11 @@ PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double 
                              o->defect_radius, &o->defect_radius, nullptr));
   PetscOptionsEnd();
   PetscCheck(o->n >= 1, comm, PETSC_ERR_USER_INPUT, "-modes_n must be >= 1, got %" PetscInt_FMT, o->n);
-  PetscCheck(o->target_frequency > 0.0, comm, PETSC_ERR_USER_INPUT,
-             "-modes_target_frequency must be > 0 Hz (a free specimen's rigid motions sit at 0), got %g",
+  PetscCheck(o->target_frequency > 0.0 && std::isfinite(o->target_frequency), comm, PETSC_ERR_USER_INPUT,
+             "-modes_target_frequency must be > 0 Hz (a free specimen's rigid motions sit at 0) and finite, got %g",
              o->target_frequency);
-  PetscCheck(o->defect_radius >= 0.0, comm, PETSC_ERR_USER_INPUT, "-modes_defect_radius must be >= 0, got %g",
-             o->defect_radius);
+  PetscCheck(o->defect_radius >= 0.0 && std::isfinite(o->defect_radius), comm, PETSC_ERR_USER_INPUT,
+             "-modes_defect_radius must be >= 0 and finite, got %g", o->defect_radius);
   PetscFunctionReturn(0);
 }
 

@@ -10,33 +10,56 @@ namespace {
 
 bool IsUserError(PetscErrorCode n) { return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN; }
 
-/// PETSc's "Input string X has no numeric value" does not name the option: find
-/// the options whose value holds X ("" when the message is another one).
-std::string NonNumericOption(const char* mess) {
-  static const std::string head = "Input string ", tail = " has no numeric value";
+/// PETSc's messages about a value it cannot parse, which do not name the option.
+struct ValueMessage {
+  const char *head, *tail, *expected;
+};
+const ValueMessage kValueMessages[] = {
+    {"Input string ", " has no numeric value", "a number"},
+    {"Input string ", " has no integer value", "an integer"},
+    {"Unknown logical value: ", "", "true or false (1|0|yes|no)"},
+};
+
+/// When mess is one of kValueMessages about X: "<options whose value, or one of
+/// its comma-separated entries, is X>: expected ..., got 'X'"; else "".
+std::string UnparsedValueOption(const char* mess) {
   const std::string m = mess ? mess : "";
-  const std::size_t a = m.find(head), b = m.find(tail);
-  if (a == std::string::npos || b == std::string::npos || b < a + head.size()) return "";
-  const std::string value = m.substr(a + head.size(), b - a - head.size());
+  std::string value;
+  const char* expected = nullptr;
+  for (const ValueMessage& v : kValueMessages) {
+    const std::string head = v.head, tail = v.tail;
+    const std::size_t a = m.find(head);
+    if (a == std::string::npos) continue;
+    const std::size_t b = tail.empty() ? m.size() : m.find(tail, a + head.size());
+    if (b == std::string::npos) continue;
+    value = m.substr(a + head.size(), b - a - head.size());
+    expected = v.expected;
+    break;
+  }
+  if (!expected || value.empty()) return "";
   char* all = nullptr;
   if (PetscOptionsGetAll(nullptr, &all) || !all) return "";
   std::istringstream words(all);
   PetscFree(all);
   std::string word, option, names;
   while (words >> word) {
-    if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.') {
+    if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.' &&
+        word != value) {
       option = word;
-    } else if (!option.empty() && word.find(value) != std::string::npos) {
-      names += (names.empty() ? "" : ", ") + option;
+      continue;
     }
+    std::istringstream entries(word);
+    bool holds = false;
+    for (std::string entry; std::getline(entries, entry, ',');) holds = holds || entry == value;
+    if (!option.empty() && holds) names += (names.empty() ? "" : ", ") + option;
   }
-  return names.empty() ? "" : names + ": expected a number, got '" + value + "'";
+  return names.empty() ? "" : names + ": expected " + expected + ", got '" + value + "'";
 }
 
 PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const char* file, PetscErrorCode n,
                                 PetscErrorType p, const char* mess, void* ctx) {
   if (!IsUserError(n) && p == PETSC_ERROR_INITIAL) {
-    const std::string option = NonNumericOption(mess);
+    const std::string option = UnparsedValueOption(mess);
     if (!option.empty()) {  // a user error after all: every rank reads the options, every rank gets here
       PetscMPIInt rank = 0;
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);

@@ -152,4 +152,28 @@ PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOpti
           unknown.c_str(), hint.c_str());
 }
 
+PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<DeclaredOption>& declared) {
+  PetscFunctionBeginUser;
+  // PETSc takes "-mesh_h" without a value (or with "") as not given: the run would
+  // go on with the default. Flags (shown TRUE or FALSE) need no value.
+  std::string missing;
+  for (const DeclaredOption& d : declared) {
+    if (d.value == "TRUE" || d.value == "FALSE") continue;
+    PetscBool given = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given));
+    if (!given) continue;
+    char value[8] = "";
+    PetscCall(PetscOptionsGetString(nullptr, nullptr, d.name.c_str(), value, sizeof(value), nullptr));
+    if (value[0] == '\0') {
+      missing = d.name;
+      break;
+    }
+  }
+  // Rank 0 saw the help (the declared list): it decides for all.
+  int found = missing.empty() ? 0 : 1;
+  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));
+  PetscCheck(!found, comm, PETSC_ERR_USER_INPUT, "%s: needs a value", missing.c_str());
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm

@@ -21,6 +21,8 @@ PetscErrorCode OptionsRealList(PetscOptionItems* PetscOptionsObject, const char*
   PetscCall(PetscOptionsString(option, help, nullptr, fallback.c_str(), text, sizeof(text), &given));
   if (set) *set = given;
   if (!given) PetscFunctionReturn(0);
+  // "-crack_center" alone (or with ""): PETSc gives an empty string.
+  PetscCheck(text[0] != '\0', PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: needs a value", option);
   values->clear();
   std::stringstream entries(text);
   std::string entry;

@@ -30,7 +30,7 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
              o->degree);
   PetscCheck(o->cfl > 0.0 && o->cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_cfl must be in (0, 1], got %g", o->cfl);
-  PetscCheck(o->dt >= 0.0, comm, PETSC_ERR_USER_INPUT, "-wave_dt must be > 0, got %g", o->dt);
+  PetscCheck(o->dt >= 0.0, comm, PETSC_ERR_USER_INPUT, "-wave_dt must be >= 0 (0: -wave_cfl x the stability limit), got %g", o->dt);
   PetscFunctionReturn(0);
 }
 

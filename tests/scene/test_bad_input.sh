@@ -96,6 +96,19 @@ expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 
 expect_error "-max_steps must be >= 1" $box $crack -max_steps 0
 expect_error "-max_steps must be <= 2.14748e+09" $box $crack -max_steps 1e12
 expect_error "more than the" $box $crack -mesh_h 2e-6 -mesh_h_crack 2e-6
+# Found by test_generated_bad_input.py (issue 16): once exit 1, accepted, or written first.
+expect_error "-mesh_only: expected true or false" $box $crack -mesh_only maybe
+expect_error "-heat_substeps: expected an integer, got 'abc'" $box $crack -heat_substeps abc
+expect_error "-mesh_h: needs a value" $box $crack -mesh_h ""
+expect_error "-crack_center: needs a value" $box $crack -crack_center
+expect_error "-mesh_file: needs a value" -mesh_file ""
+expect_error "-dm_refine must be >= 0, got -1" $box $crack -dm_refine -1
+expect_error "-heat_h must be >= 0 and finite, got inf" $box $crack -heat_h inf
+expect_error "-heat_T_ext must be > 0 K and finite, got 0" $box $crack -heat_T_ext 0
+expect_error "-heat_T0 must be > 0 K and finite, got inf" $box $crack -heat_T0 inf
+expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_target_frequency inf
+expect_error "-crack_probe_crack must be >= 1" $box $crack -crack_probe 0.5 -crack_probe_crack 0
+expect_error "-probe_points needs x,y pairs, got 3 numbers" $box $crack -probe_points 0.01,0.01,0.02
 
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

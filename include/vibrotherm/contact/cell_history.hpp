@@ -16,8 +16,8 @@ struct HistoryPoint {
 };
 
 /// Reads a CSV with columns t,a,b (a header line and # comments allowed).
-/// InputError naming the file and line on bad rows or non-increasing t.
-std::vector<HistoryPoint> read_history_csv(const std::string& path);
+/// InputError naming option, the file and line on bad rows or non-increasing t.
+std::vector<HistoryPoint> read_history_csv(const std::string& path, const std::string& option = "-history");
 
 /// x(t) = offset + rate t + ramp(t) · amplitude · sin(2π f t + phase).
 struct SineComponent {

@@ -31,4 +31,9 @@ PetscErrorCode OptionAuditEnd(std::vector<DeclaredOption>* declared);
 /// naming the first with the nearest declared name, or (allow_unknown) a warning. Collective.
 PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared, bool allow_unknown);
 
+/// A declared option given without a value ("-mesh_h" or "-mesh_h ''"), which
+/// PETSc's readers take as not given: an error "<name>: needs a value" (flags,
+/// shown TRUE or FALSE, excepted). Collective.
+PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<DeclaredOption>& declared);
+
 }  // namespace vibrotherm

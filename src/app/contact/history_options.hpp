@@ -26,6 +26,8 @@ struct HistoryOptions {
   /// The CSV file given with -history or -cell_history ("" for none);
   /// InputError if both are given.
   std::string history_file() const;
+  /// The option that gave history_file(): -history or -cell_history.
+  std::string history_option() const { return file.empty() && !cell_file.empty() ? "-cell_history" : "-history"; }
 };
 
 const std::vector<contact::Parameter<HistoryOptions>>& history_parameters();

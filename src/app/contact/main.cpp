@@ -55,7 +55,7 @@ std::vector<std::string> known_options() {
 
 std::vector<contact::HistoryPoint> make_history(const app::HistoryOptions& h) {
   const std::string file = h.history_file();
-  return file.empty() ? contact::make_sine_history(h.sine()) : contact::read_history_csv(file);
+  return file.empty() ? contact::make_sine_history(h.sine()) : contact::read_history_csv(file, h.history_option());
 }
 
 /// Drives the cell; the rows reach their destination only if every row is finite.

@@ -174,6 +174,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line) 
   PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, declared, app.allow_unknown));
+  PetscCall(CheckMissingValues(comm, declared));
   RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked: outputs from here on.
