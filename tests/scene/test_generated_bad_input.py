@@ -85,6 +85,10 @@ ALLOWED = {
     "-source_ramp_cycles": {"0"}, "-mesh_grading": {"0"}, "-heat_mesh_grading": {"0"},
     # Booleans: 0 is false; a bare flag ("") is true.
     "-mesh_only": {"0", ""}, "-modes": {"0", ""}, "-allow_unknown": {"0", ""}, "-heat_lumped_mass": {"0", ""},
+    # The camera switch and -force are booleans; any integer seeds the noise; 0 fps: no camera.
+    "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
+    # NETD 0: a noise-free camera (the clean frames).
+    "-camera_netd": {"0"},
     # A directory name is any name.
     "-output_dir": ANY_NAME,
 }
