@@ -125,7 +125,7 @@ class HeatSolver {
   };
   std::vector<FacetLoad> facets_;
   std::vector<fe::LocatedPoint> probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, bool fixed_step, TS* ts);
+  PetscErrorCode CreateTS(const char* prefix, TSType type, TS* ts);
   PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);
   static constexpr PetscInt kDirectSolveDofs = 50000;  ///< above: CG + AMG even for fixed steps
   TS coupled_ts_ = nullptr, free_ts_ = nullptr;  ///< prefixes -heat_ and -heat_free_
