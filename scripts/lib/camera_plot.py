@@ -118,8 +118,15 @@ def figure(run_dir):
     fig, axes = plt.subplots(1, 3, figsize=(15, max(4.5, min(8.0, 4.0 * aspect))),
                              gridspec_kw={"width_ratios": [1, 1, 1.4]})
     when = "[%.4g, %.4g] s" % (times[best, 1], times[best, 2])
+    # A frame that also cools (thermoelastic heating) on a diverging scale centred on 0.
+    lowest = float(np.min(clean))
+    if lowest < -1e-3 * peaks[best]:
+        span = max(peaks[best], -lowest, 1e-300)
+        cmap, vmin, vmax = "RdBu_r", -span, span
+    else:
+        cmap, vmin, vmax = "inferno", 0.0, max(peaks[best], 1e-300)
     _image(axes[0], fig, clean, extent, "best frame %d, %s, without noise\npeak %.3g K" % (best, when, peaks[best]),
-           "inferno", vmin=0.0, vmax=max(peaks[best], 1e-300), box=_hot_box(clean, extent))
+           cmap, vmin=vmin, vmax=vmax, box=_hot_box(clean, extent))
     # Scaled as the camera's display would be: the noise band (±2 NETD) or the signal, whichever is larger.
     _image(axes[1], fig, noisy, extent, "as the camera reads it (NETD %g mK)\nSNR %.3g: %s" % (
         netd * 1e3, peaks[best] / netd if netd > 0 else np.inf,
