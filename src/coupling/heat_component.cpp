@@ -2,6 +2,7 @@
 
 #include "vibrotherm/coupling/thermoelastic_source.hpp"
 #include "vibrotherm/mesh/crack_line.hpp"
+#include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -11,10 +12,8 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
                                     io::RunSummary* summary) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.heat);
-  PetscLogStage stage;
-  PetscCall(PetscLogStageRegister("Heat setup", &stage));
-  const double t0 = MPI_Wtime();
-  PetscCall(PetscLogStagePush(stage));
+  TimedStage stage;
+  PetscCall(stage.Begin("Heat setup"));
   PetscCall(solver_.Setup(specimen.heat, scene.heat));
   summary->dofs_heat = solver_.dofs();
   const PetscInt ncracks = static_cast<PetscInt>(specimen.cracks.size());
@@ -44,8 +43,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   std::vector<double> probes = scene.run.probe_points;
   probes.insert(probes.end(), crack_probe_xy_.begin(), crack_probe_xy_.end());
   PetscCall(solver_.SetProbePoints(probes));
-  PetscCall(PetscLogStagePop());
-  summary->stages["heat_setup"] = MPI_Wtime() - t0;
+  PetscCall(stage.End(&summary->stages["heat_setup"]));
   PetscFunctionReturn(0);
 }
 

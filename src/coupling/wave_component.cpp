@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -60,10 +61,8 @@ PetscErrorCode WarnAboutTheSource(DM dm, const Scene& scene, double dt) {
 PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
-  PetscLogStage stage;
-  PetscCall(PetscLogStageRegister("Wave setup", &stage));
-  const double t0 = MPI_Wtime();
-  PetscCall(PetscLogStagePush(stage));
+  TimedStage stage;
+  PetscCall(stage.Begin("Wave setup"));
   solver_ = std::make_unique<wave::WaveSolver>();
   PetscCall(solver_->Setup(specimen.wave, scene.material, scene.excitation, scene.wave));
   std::unique_ptr<contact::CrackLaw> law;
@@ -74,8 +73,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
-  PetscCall(PetscLogStagePop());
-  summary->stages["wave_setup"] = MPI_Wtime() - t0;
+  PetscCall(stage.End(&summary->stages["wave_setup"]));
   summary->derived["wave_dt"] = solver_->dt();
   summary->derived["wave_stable_dt"] = solver_->stable_dt();
   const char* rule = scene.wave.contact_step == wave::ContactStepRule::kWorstCase
