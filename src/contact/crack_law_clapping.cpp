@@ -30,6 +30,9 @@ class ClappingLaw final : public CrackLaw {
   double friction_bound() const override { return std::numeric_limits<double>::infinity(); }
   bool has_contact() const override { return true; }
 
+  std::vector<double> save_state(std::size_t c) const override { return save_cell_values(c, {&a_, &b_}); }
+  void restore_state(std::size_t c, const double* v, std::size_t n) override { restore_cell_values(c, v, n, {&a_, &b_}); }
+
  private:
   std::unique_ptr<NormalLaw> law_;
   std::vector<double> a_, b_;

@@ -4,6 +4,8 @@
 // order in the step (the MMD law is the exact one).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
@@ -65,6 +67,11 @@ class CoulombLaw final : public CrackLaw {
   bool can_dissipate() const override { return mu_ > 0.0; }
   double friction_bound() const override { return mu_; }
   bool has_contact() const override { return true; }
+  std::vector<double> save_state(std::size_t c) const override { return {cells_[c].a, cells_[c].b, cells_[c].b0}; }
+  void restore_state(std::size_t c, const double* v, std::size_t n) override {
+    if (n != 3) throw std::runtime_error("coulomb crack law: a saved cell state has 3 values, not " + std::to_string(n));
+    cells_[c] = {v[0], v[1], v[2]};
+  }
 
  private:
   struct Cell {

@@ -30,6 +30,8 @@ class MmdLaw final : public CrackLaw {
   bool can_dissipate() const override { return cfg_.mu > 0.0; }
   double friction_bound() const override { return cfg_.mu; }
   bool has_contact() const override { return true; }
+  std::vector<double> save_state(std::size_t cell) const override { return diagrams_[cell].save(); }
+  void restore_state(std::size_t cell, const double* v, std::size_t n) override { diagrams_[cell].restore(v, n); }
 
   const MemoryDiagram& diagram(std::size_t cell) const { return diagrams_[cell]; }
 

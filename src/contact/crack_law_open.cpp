@@ -22,6 +22,9 @@ class OpenLaw final : public CrackLaw {
   double friction_bound() const override { return std::numeric_limits<double>::infinity(); }
   bool has_contact() const override { return false; }
 
+  std::vector<double> save_state(std::size_t c) const override { return save_cell_values(c, {&b_}); }
+  void restore_state(std::size_t c, const double* v, std::size_t n) override { restore_cell_values(c, v, n, {&b_}); }
+
  private:
   std::vector<double> b_;  // the faces slide freely: b0 follows b
 };

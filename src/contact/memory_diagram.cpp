@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "mmd_detail.hpp"
 
@@ -257,6 +259,32 @@ double MemoryDiagram::stored_energy(const MmdConfig& cfg) const {
     Ut += m * (bt - A.f) * dN + m * m * integral;
   }
   return 2.0 * pts_.back().law.M + 2.0 * Ut / cfg.theta;
+}
+
+}  // namespace vibrotherm::contact
+
+namespace vibrotherm::contact {
+
+namespace {
+constexpr std::size_t kHeader = 3, kPerPoint = 6;  // a, b, b0; α, f, N, N', M, T_before
+}
+
+std::vector<double> MemoryDiagram::save() const {
+  std::vector<double> values = {a_, b_, b0_};
+  for (const Breakpoint& p : pts_) values.insert(values.end(), {p.alpha, p.f, p.law.N, p.law.dN, p.law.M, p.T_before});
+  return values;
+}
+
+void MemoryDiagram::restore(const double* values, std::size_t n) {
+  if (n < kHeader || (n - kHeader) % kPerPoint != 0)
+    throw std::runtime_error("memory diagram: a saved state of " + std::to_string(n) + " values is malformed");
+  a_ = values[0], b_ = values[1], b0_ = values[2];
+  pts_.clear();
+  for (const double* p = values + kHeader; p < values + n; p += kPerPoint) {
+    Breakpoint b;
+    b.alpha = p[0], b.f = p[1], b.law.N = p[2], b.law.dN = p[3], b.law.M = p[4], b.T_before = p[5];
+    pts_.push_back(b);
+  }
 }
 
 }  // namespace vibrotherm::contact

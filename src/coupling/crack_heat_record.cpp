@@ -44,4 +44,25 @@ PetscErrorCode CrackHeatRecord::Write(MPI_Comm comm, const std::string& path, co
   PetscFunctionReturn(0);
 }
 
+void CrackHeatRecord::Save(io::Checkpoint& checkpoint, const std::vector<long long>& keys) const {
+  checkpoint.PutShared("crack_heat/time", times_);
+  const std::size_t cells = keys.size(), n = times_.size();
+  std::vector<double> by_cell(cells * n);  // cell-major: a cell's history is one item
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t i = 0; i < cells; ++i) by_cell[i * n + k] = densities_[k * cells + i];
+  checkpoint.PutKeyed("crack_heat/density", keys, static_cast<int>(n), by_cell);
+}
+
+PetscErrorCode CrackHeatRecord::Restore(const io::Checkpoint& checkpoint, const std::vector<long long>& keys) {
+  PetscFunctionBeginUser;
+  PetscCall(checkpoint.GetShared("crack_heat/time", &times_));
+  const std::size_t cells = keys.size(), n = times_.size();
+  std::vector<double> by_cell;
+  PetscCall(checkpoint.GetKeyed("crack_heat/density", keys, static_cast<int>(n), &by_cell));
+  densities_.assign(cells * n, 0.0);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t i = 0; i < cells; ++i) densities_[k * cells + i] = by_cell[i * n + k];
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

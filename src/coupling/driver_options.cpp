@@ -35,6 +35,10 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscCall(PetscOptionsReal("-max_steps",
                              "Largest number of wave steps a run may take (refused at setup with the estimate)", nullptr,
                              o->max_steps, &o->max_steps, nullptr));
+  PetscCall(PetscOptionsReal("-checkpoint_every_s",
+                             "Wall seconds between checkpoints (DIR/checkpoint.h5, for -restart DIR) while the waves run; "
+                             "0: only when SIGTERM, SIGINT or SIGUSR1 stops the run", nullptr, o->checkpoint_every_s,
+                             &o->checkpoint_every_s, nullptr));
   PetscCall(PetscOptionsReal("-wave_quiet_fraction",
                              "Waves stop after the source once, for a whole period, the mechanical energy left "
                              "(a bound on the heat still to come) is below this fraction of the energy dissipated "
@@ -74,6 +78,8 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
              "-final_time must be > 0 and finite, got %g", o->final_time);
   PetscCheck(!couple_set || (o->couple_dt > 0.0 && std::isfinite(o->couple_dt)), comm, PETSC_ERR_USER_INPUT,
              "-couple_dt must be > 0 and finite, got %g", o->couple_dt);
+  PetscCheck(o->checkpoint_every_s >= 0.0 && std::isfinite(o->checkpoint_every_s), comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every_s must be >= 0 and finite, got %g", o->checkpoint_every_s);
   PetscCheck(o->max_steps >= 1.0 && std::isfinite(o->max_steps), comm, PETSC_ERR_USER_INPUT,
              "-max_steps must be >= 1 and finite, got %g", o->max_steps);
   // PETSc counts steps in a PetscInt: a larger count would wrap around (a run "done in 1 step").

@@ -101,4 +101,21 @@ PetscErrorCode HeatComponent::Summarise(io::RunSummary* summary) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode HeatComponent::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Save(checkpoint, specimen.heat_origin));
+  for (const auto& source : sources_) PetscCall(source->Save(checkpoint, specimen));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Restore(checkpoint, specimen.heat_origin));
+  for (auto& source : sources_) {
+    PetscCall(source->Restore(checkpoint, specimen));
+    if (solver_.steps() > 0) deposited_by_source_[source->name()] = source->deposited();
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

@@ -31,4 +31,32 @@ PetscErrorCode FrictionHeatSource::Finish(const std::string& dir) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+std::vector<long long> CellKeys(const interface::CrackInterface& crack, const mesh::PointOrigin& origin) {
+  std::vector<long long> keys;
+  for (const interface::ContactCell& c : crack.cells()) keys.push_back(origin[c.plus]);
+  return keys;
+}
+
+}  // namespace
+
+PetscErrorCode FrictionHeatSource::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
+  PetscFunctionBeginUser;
+  checkpoint.PutShared("friction_heat/deposited", {deposited_});
+  record_.Save(checkpoint, CellKeys(*crack_, specimen.wave_origin));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  std::vector<double> deposited;
+  PetscCall(checkpoint.GetShared("friction_heat/deposited", &deposited, 1));
+  deposited_ = deposited[0];
+  PetscCall(record_.Restore(checkpoint, CellKeys(*crack_, specimen.wave_origin)));
+  // The last exchange took the energies the interface holds now (checkpoints follow a heat step).
+  transfer_.set_previous(crack_->dissipated_per_area());
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

@@ -9,15 +9,18 @@ namespace vibrotherm::coupling {
 
 PetscErrorCode Recorder::Open(const DriverOptions& options, const std::string& dir,
                               const fe::LagrangeSpace& probe_space, interface::CrackInterface* crack,
-                              const std::vector<double>& crack_probe_xy, io::RunSummary* summary) {
+                              const std::vector<double>& crack_probe_xy, io::RunSummary* summary,
+                              const io::Checkpoint* resume) {
   PetscFunctionBeginUser;
   options_ = &options;
   summary_ = summary;
   crack_ = crack;
   crack_probe_xy_ = crack_probe_xy;
   MPI_Comm comm = PetscObjectComm((PetscObject)probe_space.dm());
-  PetscCall(probes_.Setup(probe_space, options.probe_points, dir + "/probes.csv"));
-  PetscCall(energy_.Open(comm, dir + "/energy.csv"));
+  std::vector<double> bytes = {-1, -1, -1, 0};  // probes, energy, crack state; fields written before
+  if (resume) PetscCall(resume->GetShared("recorder/bytes", &bytes, 4));
+  PetscCall(probes_.Setup(probe_space, options.probe_points, dir + "/probes.csv", static_cast<long long>(bytes[0])));
+  PetscCall(energy_.Open(comm, dir + "/energy.csv", static_cast<long long>(bytes[1])));
   for (std::size_t p = 0; p < probes_.count(); ++p)
     summary->probe_labels[static_cast<int>(p)] =
         "point (" + std::to_string(probes_.points()[p][0]) + ", " + std::to_string(probes_.points()[p][1]) + ")";
@@ -30,9 +33,18 @@ PetscErrorCode Recorder::Open(const DriverOptions& options, const std::string& d
       PetscCall(crack_->NearestCell(options.crack_probe_crack - 1, s, &cell));
       crack_probe_cells_.push_back(cell);
     }
-    if (options.crack_state_every > 0) PetscCall(crack_state_.Open(comm, dir + "/crack_state.csv"));
+    if (options.crack_state_every > 0)
+      PetscCall(crack_state_.Open(comm, dir + "/crack_state.csv", static_cast<long long>(bytes[2])));
   }
-  if (!options.output_times.empty()) PetscCall(fields_.Open(comm, dir + "/fields.h5", io::XdmfLayout::kSeriesPerGrid));
+  if (!options.output_times.empty()) {
+    // Outputs before the checkpoint are kept on the same partition (the grids' vertex numbering is the partition's).
+    const bool append = resume && bytes[3] > 0 && resume->same_ranks();
+    if (resume && bytes[3] > 0 && !append)
+      PetscCall(PetscPrintf(comm, "vibrotherm: warning: -restart on %d ranks instead of %d: the %d field outputs before the "
+                                  "checkpoint are not carried over into fields.h5\n",
+                            static_cast<int>(summary->mesh.ranks), resume->writer_ranks(), static_cast<int>(bytes[3])));
+    PetscCall(fields_.Open(comm, dir + "/fields.h5", io::XdmfLayout::kSeriesPerGrid, "time", append));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -167,7 +179,7 @@ PetscErrorCode Recorder::WriteFields(double t, WaveComponent* waves, const HeatC
     std::map<int, double> rises;
     for (std::size_t p = 0; p < bracket_.T1.size(); ++p)
       rises[static_cast<int>(p)] = bracket_.T1[p] - heat->material().T0;
-    summary_->output_temperature_rise.push_back({t, rises});
+    if (!replaying_) summary_->output_temperature_rise.push_back({t, rises});
   }
   if (w) {
     if (!fields_.has_grid("wave")) PetscCall(fields_.AddMesh("wave", w->space()));
@@ -179,6 +191,7 @@ PetscErrorCode Recorder::WriteFields(double t, WaveComponent* waves, const HeatC
     if (crack_) PetscCall(WriteCrackFields(k, t));
   }
   ++outputs_written_;
+  if (!replaying_) written_times_.push_back(t);
   while (OutputDue(t)) ++next_output_;
   PetscFunctionReturn(0);
 }

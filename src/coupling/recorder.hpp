@@ -17,6 +17,7 @@
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/io/crack_state_log.hpp"
 #include "vibrotherm/io/energy_log.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
 #include "vibrotherm/io/field_output.hpp"
 #include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/io/progress.hpp"
@@ -30,9 +31,17 @@ class Recorder {
   /// Opens the outputs in dir. `probe_space`: the space probes are located in
   /// (the wave space, or the heat space when no wave runs). crack_probe_xy: the
   /// crack probes' points (temperature is evaluated there).
+  /// resume: continue the files of the interrupted run whose checkpoint it is (restart).
   PetscErrorCode Open(const DriverOptions& options, const std::string& dir, const fe::LagrangeSpace& probe_space,
                       interface::CrackInterface* crack, const std::vector<double>& crack_probe_xy,
-                      io::RunSummary* summary);
+                      io::RunSummary* summary, const io::Checkpoint* resume = nullptr);
+  /// Checkpoints (recorder_state.cpp): file lengths, what the summary has
+  /// gathered so far, the outputs written; and back, replaying the field
+  /// outputs' index (restore after the components). Collective.
+  PetscErrorCode Save(io::Checkpoint& checkpoint) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, WaveComponent* waves, const HeatComponent* heat);
+  /// The run stops for a restart: the files stay as .partial, as the checkpoint describes them.
+  void Keep();
   /// After every accepted wave step: probe rows (held), energy rows (without heat), crack state.
   PetscErrorCode OnWaveStep(const wave::WaveSolver& w, bool energy_rows);
   /// Appends an energy row: the wave columns of `wave_row`, the heat columns of heat (if any).
@@ -80,6 +89,8 @@ class Recorder {
   std::vector<double> crack_probe_xy_;
   io::TemperatureBracket bracket_;  ///< probe temperatures at the last two heat times
   io::EnergyRow waves_at_stop_;
+  bool replaying_ = false;
+  std::vector<double> written_times_;  ///< time of each field output written  ///< Restore is indexing the outputs written before the checkpoint
   std::size_t next_output_ = 0;
   int outputs_written_ = 0;
 };

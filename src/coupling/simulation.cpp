@@ -15,6 +15,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
   scene_ = &scene;
+  specimen_ = &specimen;
   const DriverOptions& run = scene.run;
   PetscCheck(run.crack_probes.empty() || !specimen.cracks.empty(), comm, PETSC_ERR_USER_INPUT,
              "-crack_probe needs a crack (-crack_center or crack curves in -mesh_file)");
@@ -58,20 +59,29 @@ PetscErrorCode Simulation::SetupCamera(const Scene& scene) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary) {
+PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, const RunControl& control) {
   PetscFunctionBeginUser;
   dir_ = dir;
-  Recorder recorder;
+  control_ = control;
   const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
+  PetscCall(schedule_.Start(PetscObjectComm((PetscObject)probe_space.dm()), scene_->run.checkpoint_every_s));
+  PetscCall(CanCheckpoint(&checkpoints_));
+  Recorder recorder;
   PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
-                          heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary));
-  if (heat_) {  // t = 0
-    PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir));
+                          heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
+  if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir));
+  if (heat_ && !control.restart) {  // t = 0
     PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
   }
+  if (control.restart) PetscCall(Resume(*control.restart, recorder));
   if (waves_) PetscCall(RunCoupled(recorder, summary));
-  if (heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12)) PetscCall(RunHeatAlone(recorder, summary));
+  if (!interrupted_by_ && heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12))
+    PetscCall(RunHeatAlone(recorder, summary));
+  if (interrupted_by_) {  // the files stay as the checkpoint describes them
+    recorder.Keep();
+    PetscFunctionReturn(0);
+  }
   if (heat_) {
     PetscCall(heat_->StopSources(dir));
     PetscCall(heat_->Summarise(summary));
@@ -110,14 +120,18 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   PetscCall(PetscLogStagePush(wave_stage_));
   io::EnergyRow row;
   PetscCall(waves_->Energy(&row));
-  PetscCall(recorder.RecordEnergy(row, heat_.get()));  // t = 0
-  if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
+  if (!control_.restart) {  // t = 0
+    PetscCall(recorder.RecordEnergy(row, heat_.get()));
+    if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
+  }
   bool quiet = false;
-  while (solver.time() < final_time * (1 - 1e-12) && !quiet) {
+  while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
     PetscCall(Interval(recorder, heat_dt, &row));
     PetscCall(WavesQuiet(row, &quiet));
+    PetscCall(CheckpointIfDue(recorder, quiet));
   }
   PetscCall(PetscLogStagePop());
+  if (interrupted_by_) PetscFunctionReturn(0);
   summary->stages["wave_steps"] = MPI_Wtime() - t0 - (heat_ ? heat_->seconds() : 0.0);
   PetscCall(recorder.progress().Done(solver.time(), solver.steps()));
   PetscCall(StopWaves(recorder, row, summary));
@@ -204,8 +218,11 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
   if (recorder.OutputDue(t_begin)) PetscCall(recorder.WriteFields(t_begin, nullptr, heat_.get()));
-  heat.on_step = [this, &recorder](const heat::HeatSolver& h) {
+  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver& h) {
     PetscFunctionBeginUser;
+    bool due;  // no checkpoints here: a signal stops the run, a restart repeats this phase
+    PetscCall(schedule_.Poll(&due, &interrupted_by_));
+    if (interrupted_by_) heat.RequestStop();
     PetscCall(recorder.RecordTemperature(h, false));
     PetscCall(recorder.OnHeatStep(h));
     PetscCall(recorder.RecordEnergy(recorder.waves_at_stop(), heat_.get()));
@@ -213,7 +230,7 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
     PetscFunctionReturn(0);
   };
   // One TSSolve per output segment (or camera window boundary): the adaptor needs the step history a new solve discards.
-  while (heat.time() < final_time * (1 - 1e-12)) {
+  while (heat.time() < final_time * (1 - 1e-12) && !interrupted_by_) {
     PetscCall(heat.AdvanceTo(recorder.NextHeatStop(heat.time(), final_time)));
     if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));
   }

@@ -161,4 +161,23 @@ PetscErrorCode ThermoelasticSource::Finish(const std::string&) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ThermoelasticSource::Save(io::Checkpoint& checkpoint, const mesh::Specimen&) const {
+  PetscFunctionBeginUser;
+  checkpoint.PutShared("thermoelastic/deposited", {deposited_});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ThermoelasticSource::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen&) {
+  PetscFunctionBeginUser;
+  std::vector<double> deposited;
+  PetscCall(checkpoint.GetShared("thermoelastic/deposited", &deposited, 1));
+  deposited_ = deposited[0];
+  // The last exchange took the displacement the wave solver holds now (checkpoints follow a heat step).
+  Vec u, v;
+  PetscCall(waves_->GetFields(&u, &v));
+  PetscCall(VecCopy(u, u_prev_));
+  PetscCall(waves_->RestoreFields(&u, &v));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

@@ -139,4 +139,18 @@ PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode WaveComponent::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
+  PetscFunctionBeginUser;
+  PetscCall(solver_->Save(checkpoint, specimen.wave_origin));
+  if (crack_) PetscCall(crack_->Save(checkpoint, specimen.wave_origin));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  PetscCall(solver_->Restore(checkpoint, specimen.wave_origin));
+  if (crack_) PetscCall(crack_->Restore(checkpoint, specimen.wave_origin));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

@@ -285,6 +285,12 @@ PetscErrorCode HeatSolver::IJacobian(TS, PetscReal, Vec, Vec, PetscReal shift, M
   auto known = self->last_shift_.find(J);
   if (known != self->last_shift_.end() && std::abs(known->second - shift) <= 1e-10 * std::abs(shift))
     PetscFunctionReturn(0);
+  PetscCall(AssembleJacobian(self, shift, J));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J) {
+  PetscFunctionBeginUser;
   self->last_shift_[J] = shift;
   PetscCall(MatCopy(self->K_, J, SAME_NONZERO_PATTERN));
   PetscCall(MatAXPY(J, shift, self->M_, SAME_NONZERO_PATTERN));
@@ -303,6 +309,7 @@ PetscErrorCode HeatSolver::PostStep(TS ts) {
   PetscCall(self->Account(t - self->time_));
   self->time_ = t;
   if (self->on_step) PetscCall(self->on_step(*self));
+  if (self->stop_requested_) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
   PetscFunctionReturn(0);
 }
 

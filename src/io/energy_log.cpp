@@ -6,13 +6,14 @@
 
 namespace vibrotherm::io {
 
-PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path) {
+PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path, long long resume_bytes) {
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    VibrothermCallCpp(PETSC_COMM_SELF, file_ = std::make_unique<AtomicFile>(path));
-    file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
+    VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
+    if (resume_bytes < 0)
+      file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
                        "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic\n";
   }
   PetscFunctionReturn(0);

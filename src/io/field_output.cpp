@@ -13,13 +13,16 @@ namespace vibrotherm::io {
 FieldFile::~FieldFile() { (void)PetscViewerDestroy(&viewer_); }
 
 PetscErrorCode FieldFile::Open(MPI_Comm comm, const std::string& h5_path, XdmfLayout layout,
-                               const std::string& axis) {
+                               const std::string& axis, bool append) {
   PetscFunctionBeginUser;
   comm_ = comm;
   path_ = h5_path;
   layout_ = layout;
   axis_ = axis;
-  PetscCall(PetscViewerHDF5Open(comm, AtomicFile::partial_name(h5_path).c_str(), FILE_MODE_WRITE, &viewer_));
+  const std::string partial = AtomicFile::partial_name(h5_path);
+  PetscCheck(!append || std::filesystem::exists(partial), comm, PETSC_ERR_FILE_OPEN,
+             "-restart: cannot resume '%s': missing", partial.c_str());
+  PetscCall(PetscViewerHDF5Open(comm, partial.c_str(), append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &viewer_));
   PetscFunctionReturn(0);
 }
 
@@ -101,6 +104,7 @@ PetscErrorCode FieldFile::AddGrid(const std::string& name, Grid g, PetscInt corn
   grids_[name] = g;
   order_.push_back(name);
 
+  if (index_only_) PetscFunctionReturn(0);
   PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + name).c_str()));
   IS topology;
   PetscCall(ISCreateGeneral(comm_, static_cast<PetscInt>(cells.size()), cells.data(), PETSC_COPY_VALUES, &topology));
@@ -117,6 +121,11 @@ PetscErrorCode FieldFile::Write(const Dataset& d, const std::vector<PetscInt>& r
   PetscFunctionBeginUser;
   Grid& g = grids_.at(d.grid);
   const int nc = d.components;
+  const std::string name = k < 0 ? d.field : d.field + "_" + std::to_string(k);
+  if (index_only_) {
+    if (k >= 0) PetscCall(Index(g, d, name, k, t));
+    PetscFunctionReturn(0);
+  }
   const PetscInt owned = d.cell ? g.owned_cells : g.owned_vertices;
   const PetscInt global = d.cell ? g.xdmf.cells : g.xdmf.vertices;
   Vec out;
@@ -126,7 +135,6 @@ PetscErrorCode FieldFile::Write(const Dataset& d, const std::vector<PetscInt>& r
     for (int c = 0; c < nc; ++c) PetscCall(VecSetValue(out, rows[i] * nc + c, values[nc * i + c], INSERT_VALUES));
   PetscCall(VecAssemblyBegin(out));
   PetscCall(VecAssemblyEnd(out));
-  const std::string name = k < 0 ? d.field : d.field + "_" + std::to_string(k);
   PetscCall(PetscObjectSetName((PetscObject)out, name.c_str()));
   PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + d.grid).c_str()));
   PetscCall(PetscViewerHDF5SetBaseDimension2(viewer_, PETSC_TRUE));  // scalars as N × 1
@@ -135,11 +143,15 @@ PetscErrorCode FieldFile::Write(const Dataset& d, const std::vector<PetscInt>& r
   if (k >= 0) PetscCall(PetscViewerHDF5WriteObjectAttribute(viewer_, (PetscObject)out, axis_.c_str(), PETSC_DOUBLE, &t));
   PetscCall(PetscViewerHDF5PopGroup(viewer_));
   PetscCall(VecDestroy(&out));
-  if (k >= 0) {
-    const std::string h5 = std::filesystem::path(path_).filename().string();
-    g.outputs[k].push_back({d.field, nc, d.cell, h5 + ":/" + d.grid + "/" + name});
-    times_[k] = t;
-  }
+  if (k >= 0) PetscCall(Index(g, d, name, k, t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldFile::Index(Grid& g, const Dataset& d, const std::string& name, int k, double t) {
+  PetscFunctionBeginUser;
+  const std::string h5 = std::filesystem::path(path_).filename().string();
+  g.outputs[k].push_back({d.field, d.components, d.cell, h5 + ":/" + d.grid + "/" + name});
+  times_[k] = t;
   PetscFunctionReturn(0);
 }
 

@@ -17,7 +17,7 @@ double TemperatureBracket::at(std::size_t probe, double t) const {
 }
 
 PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy,
-                                  const std::string& path) {
+                                  const std::string& path, long long resume_bytes) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
@@ -34,11 +34,11 @@ PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vec
     points_.push_back({xy[2 * i], xy[2 * i + 1]});
   }
   if (rank == 0) {
-    VibrothermCallCpp(PETSC_COMM_SELF, file_ = std::make_unique<AtomicFile>(path));
+    VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
     // 12 significant digits (2-rank runs equal serial ones to 1e-10 of the amplitude),
     // the temperature 17 (a rise of 1e-7 K on 293 K); a third smaller than all at 17.
     file_->stream().precision(12);
-    file_->stream() << "t,probe,x,y,ux,uy,vx,vy,temperature,a,b,b0,N,T,state,power,W\n";
+    if (resume_bytes < 0) file_->stream() << "t,probe,x,y,ux,uy,vx,vy,temperature,a,b,b0,N,T,state,power,W\n";
   }
   PetscCall(DMCreateLocalVector(dm, &u_local_));
   PetscCall(DMCreateLocalVector(dm, &v_local_));

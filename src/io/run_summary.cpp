@@ -95,6 +95,8 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.begin_object();
       json.value("version", version()).value("git_commit", s.git_commit).value("date", s.date);
       json.value("host", s.host).value("command_line", s.command_line);
+      json.value("complete", s.complete);
+      if (!s.restarted_from.empty()) json.value("restarted_from", s.restarted_from);
       json.begin_array("physics_ran");
       for (const std::string& p : s.physics_ran) json.value(nullptr, p);
       json.end_array();

@@ -30,18 +30,22 @@ PetscErrorCode RegisterMeshLogging(MeshLog* log) {
   PetscFunctionReturn(0);
 }
 
-/// Distributes dm in place with the partitioner chosen by the options.
-PetscErrorCode Distribute(DM* dm, const char* name) {
+/// Distributes dm in place with the partitioner chosen by the options; origin:
+/// each new point's number in the serial mesh (checkpoint keys).
+PetscErrorCode Distribute(DM* dm, const char* name, PointOrigin* origin) {
   PetscFunctionBeginUser;
   PetscPartitioner part;
   PetscCall(DMPlexGetPartitioner(*dm, &part));
   PetscCall(PetscPartitionerSetFromOptions(part));
   DM distributed = nullptr;
-  PetscCall(DMPlexDistribute(*dm, 0, nullptr, &distributed));
+  PetscSF migration = nullptr;
+  PetscCall(DMPlexDistribute(*dm, 0, &migration, &distributed));
   if (distributed) {
     PetscCall(DMDestroy(dm));
     *dm = distributed;
   }
+  PetscCall(OriginFromMigration(*dm, migration, origin));
+  PetscCall(PetscSFDestroy(&migration));
   PetscCall(PetscObjectSetName((PetscObject)*dm, name));
   PetscFunctionReturn(0);
 }
@@ -207,8 +211,8 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   s->wave = split;
   if (heat) PetscCall(DMDestroy(&serial));
   s->heat = heat ? heat : serial;
-  PetscCall(Distribute(&s->wave, "wave_mesh"));
-  PetscCall(Distribute(&s->heat, "heat_mesh"));
+  PetscCall(Distribute(&s->wave, "wave_mesh", &s->wave_origin));
+  PetscCall(Distribute(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);

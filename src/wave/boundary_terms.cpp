@@ -47,6 +47,9 @@ class TractionLoad final : public BoundaryTerm {
       u_prev_[k] = s.u[i];
     }
   }
+  void Resume(const StepState& s) override {
+    for (std::size_t k = 0; k < dofs_.size(); ++k) u_prev_[k] = s.u[dofs_[k]];
+  }
 
  private:
   Vec shape_, mass_;  // not owned
@@ -100,6 +103,12 @@ class Dashpots final : public BoundaryTerm {
       e->radiated += s.h * (d.xx * vx * vx + 2.0 * d.xy * vx * vy + d.yy * vy * vy);
       v_prev_[2 * k] = s.v[i];
       v_prev_[2 * k + 1] = s.v[i + 1];
+    }
+  }
+  void Resume(const StepState& s) override {
+    for (std::size_t k = 0; k < dashpots_.size(); ++k) {
+      v_prev_[2 * k] = s.v[2 * dashpots_[k].node];
+      v_prev_[2 * k + 1] = s.v[2 * dashpots_[k].node + 1];
     }
   }
 
@@ -160,6 +169,8 @@ class Constraints final : public BoundaryTerm {
     e->work_source += 0.5 * s.h * (power_prev_ + power);
     power_prev_ = power;
   }
+  std::vector<double> SavedAccount() const override { return {power_prev_}; }
+  void RestoreAccount(const std::vector<double>& values) override { power_prev_ = values.at(0); }
 
  private:
   std::vector<Constraint> constraints_;

@@ -106,7 +106,7 @@ TEST(Simulation, HeatReceivesExactlyTheDissipatedEnergy) {
     ASSERT_NE(mkdtemp(dir), nullptr);
   }
   MPI_Bcast(dir, sizeof(dir), MPI_CHAR, 0, PETSC_COMM_WORLD);
-  ASSERT_EQ(simulation.Run(dir, &summary), 0);
+  ASSERT_EQ(simulation.Run(dir, &summary, coupling::RunControl{}), 0);
   EXPECT_EQ(summary.physics_ran, (std::vector<std::string>{"wave", "contact", "heat"}));
   EXPECT_GT(summary.dissipated_energy, 0.0);
   EXPECT_NEAR(summary.heat_deposited, summary.dissipated_energy, 1e-12 * summary.dissipated_energy);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,7 +50,17 @@ class CrackLaw {
   virtual bool has_contact() const = 0;
   /// The bound |T| ≤ friction_bound() · N the law keeps (μ; +∞ for laws without friction limit).
   virtual double friction_bound() const = 0;
+
+  /// The committed state of a cell as numbers (checkpoints), and back bit for
+  /// bit; restore_state throws std::runtime_error on a state of the wrong shape.
+  virtual std::vector<double> save_state(std::size_t cell) const = 0;
+  virtual void restore_state(std::size_t cell, const double* values, std::size_t n) = 0;
 };
+
+/// save_state / restore_state of a law whose state is one value per cell in each of `columns`.
+std::vector<double> save_cell_values(std::size_t cell, std::initializer_list<const std::vector<double>*> columns);
+void restore_cell_values(std::size_t cell, const double* values, std::size_t n,
+                         std::initializer_list<std::vector<double>*> columns);
 
 using CrackLawFactory = std::unique_ptr<CrackLaw> (*)(const ContactParameters&);
 

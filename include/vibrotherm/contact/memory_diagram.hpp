@@ -77,6 +77,9 @@ class MemoryDiagram {
     double T_before;     ///< (1/θ) Σ slopes·ΔN of the segments left of this point
   };
   const std::vector<Breakpoint>& diagram() const { return pts_; }
+  /// The committed state as numbers (a, b, b0, then 6 per breakpoint) and back, bit for bit (checkpoints).
+  std::vector<double> save() const;
+  void restore(const double* values, std::size_t n);  ///< throws std::runtime_error on a malformed state
 
  private:
   void push_point(const NormalLaw& law, const MmdConfig& cfg, double alpha, double f, const NormalLawValue* value);

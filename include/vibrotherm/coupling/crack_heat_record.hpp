@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/friction_heat.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -23,6 +24,9 @@ class CrackHeatRecord {
   void Append(double t, const FrictionHeat& heat);
   /// Gathers on rank 0 and writes path. Collective.
   PetscErrorCode Write(MPI_Comm comm, const std::string& path, const FrictionHeat& heat) const;
+  /// The record so far, per cell under `keys` (the owned cells' checkpoint keys), and back.
+  void Save(io::Checkpoint& checkpoint, const std::vector<long long>& keys) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const std::vector<long long>& keys);
 
  private:
   std::vector<double> times_, densities_;  ///< densities_: intervals × owned cells

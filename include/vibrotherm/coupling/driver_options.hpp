@@ -21,6 +21,7 @@ struct DriverOptions {
   PetscInt heat_substeps = 3;         ///< -heat_substeps: heat steps per coupling interval (each with its own friction energy)
   double quiet_fraction = 1e-2;       ///< -wave_quiet_fraction
   double max_steps = 2e8;             ///< -max_steps: a run whose wave steps would exceed it is refused at setup
+  double checkpoint_every_s = 600.0;  ///< -checkpoint_every_s: wall seconds between checkpoints (0: only on signals)
   std::vector<double> output_times;   ///< -output_times t1,t2,... (fields.h5)
   PetscInt energy_every = 10;         ///< -energy_every: steps between energy.csv rows (waves without heat)
   PetscInt probe_every = 1;           ///< -probe_every: steps between probe rows

@@ -21,6 +21,9 @@ class FieldPeak {
   /// One VecMax of the rise; the place is looked up only when the peak grows. Collective.
   PetscErrorCode Update(const heat::HeatSolver& heat);
   void Summarise(io::RunSummary* summary) const { summary->field_peak = peak_; }
+  /// The peak so far (checkpoints).
+  const io::FieldPeakSummary& peak() const { return peak_; }
+  void set_peak(const io::FieldPeakSummary& peak) { peak_ = peak; }
 
  private:
   Vec x_ = nullptr, y_ = nullptr;

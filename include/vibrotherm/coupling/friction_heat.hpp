@@ -32,6 +32,8 @@ class FrictionHeat {
   PetscErrorCode AddLoad(const std::vector<double>& dissipated_per_area, double interval, Vec Q);
   /// Line density q_c [W/m²] of the owned cells in the last Load.
   const std::vector<double>& density() const { return density_; }
+  /// The cells' dissipated energies at the last exchange (restarts: the interface's restored ones).
+  void set_previous(const std::vector<double>& dissipated_per_area) { previous_ = dissipated_per_area; }
   /// The wave-side crack elements (node = global contact-cell index), the same on every rank.
   const std::vector<CrackElement>& wave_elements() const { return wave_elements_; }
   /// Vertices of the wave mesh's cracks: (crack, ξ, x, y) per vertex, the same on every rank.

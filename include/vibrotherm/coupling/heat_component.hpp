@@ -42,6 +42,10 @@ class HeatComponent {
   /// Heat columns of energy.csv.
   PetscErrorCode Energy(io::EnergyRow* row) const;
   PetscErrorCode Summarise(io::RunSummary* summary) const;
+  /// Checkpoints (after a heat step while the waves run): the solver and its sources; and back
+  /// (after the waves have restored theirs).
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
   /// Wall time spent stepping the heat [s].
   double seconds() const { return seconds_; }
   void add_seconds(double s) { seconds_ += s; }

@@ -10,6 +10,8 @@
 #include "vibrotherm/coupling/crack_heat_record.hpp"
 #include "vibrotherm/coupling/friction_heat.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -24,6 +26,10 @@ class HeatSource {
   virtual double deposited() const = 0;
   /// Its name in summary.json and energy.csv (heat_<name>).
   virtual const char* name() const = 0;
+  /// Checkpoints, taken right after a heat step: what it keeps that the
+  /// physics it reads (restored before it) does not tell; and back.
+  virtual PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const = 0;
+  virtual PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) = 0;
 };
 
 /// Friction at the crack (crack law dissipation → line density on the crack),
@@ -36,6 +42,8 @@ class FrictionHeatSource final : public HeatSource {
   PetscErrorCode Finish(const std::string& dir) override;
   double deposited() const override { return deposited_; }
   const char* name() const override { return "friction"; }
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
 
  private:
   interface::CrackInterface* crack_ = nullptr;

@@ -13,6 +13,11 @@
 //          heat runs alone (adaptive) to -final_time, landing on output times
 //          and on the camera's frame windows.
 //          After every heat step: the field's peak rise and the camera's pixels.
+// Checkpoints (simulation_checkpoint.cpp): between coupling intervals, every
+// -checkpoint_every_s and on SIGTERM/SIGINT/SIGUSR1 (the run then stops); a
+// restart restores every component and the recorder and goes on as if never
+// stopped. The heat running alone is not checkpointed: a signal there stops
+// the run, and a restart repeats it from the last checkpoint of the waves.
 // Only what the scene needs is built: no crack (or an open crack law) → no
 // interface; nothing that can dissipate → no heat (unless -heat on);
 // -physics heat → no waves (prescribed -heat_crack_power on the cracks).
@@ -24,9 +29,11 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/checkpoint_schedule.hpp"
 #include "vibrotherm/coupling/heat_component.hpp"
 #include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/coupling/wave_component.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 
@@ -35,14 +42,22 @@ namespace vibrotherm::coupling {
 class Recorder;
 class HeatCamera;
 
+/// How a run starts and what its checkpoints carry.
+struct RunControl {
+  const io::Checkpoint* restart = nullptr;  ///< continue from this checkpoint (read by the caller)
+  std::string fingerprint;                  ///< the options a restart must share with the run it continues
+};
+
 class Simulation {
  public:
   Simulation();
   ~Simulation();
   /// Builds what the scene needs; all input is checked here, before any output.
   PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
-  /// Runs to the final time, writing the outputs into dir.
-  PetscErrorCode Run(const std::string& dir, io::RunSummary* summary);
+  /// Runs to the final time (or until a signal stops it), writing the outputs into dir.
+  PetscErrorCode Run(const std::string& dir, io::RunSummary* summary, const RunControl& control);
+  /// The signal that stopped the run (0: it ran to its end).
+  int interrupted_by() const { return interrupted_by_; }
 
  private:
   /// The IR camera when the scene asks for one (-camera) and heat runs.
@@ -54,9 +69,22 @@ class Simulation {
   PetscInt WaveStepsPerHeatStep(double heat_dt) const;
   PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
   PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
+  // Checkpoints (simulation_checkpoint.cpp).
+  /// Between coupling intervals: a checkpoint when due; a signal stops the run.
+  PetscErrorCode CheckpointIfDue(Recorder& recorder, bool quiet);
+  PetscErrorCode WriteCheckpoint(Recorder& recorder) const;
+  /// Every component and the recorder back to the checkpoint's state.
+  PetscErrorCode Resume(const io::Checkpoint& checkpoint, Recorder& recorder);
+  /// Whether this scene's state can be checkpointed (says why not, once).
+  PetscErrorCode CanCheckpoint(bool* can) const;
 
   const Scene* scene_ = nullptr;
+  const mesh::Specimen* specimen_ = nullptr;
   std::string dir_;
+  RunControl control_;
+  CheckpointSchedule schedule_;
+  bool checkpoints_ = false;  ///< this scene's state can be checkpointed
+  int interrupted_by_ = 0;
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field

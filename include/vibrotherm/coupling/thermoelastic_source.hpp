@@ -32,6 +32,8 @@ class ThermoelasticSource final : public HeatSource {
   PetscErrorCode Finish(const std::string& dir) override;
   double deposited() const override { return deposited_; }
   const char* name() const override { return "thermoelastic"; }
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
 
  private:
   PetscErrorCode Assemble(const fe::LagrangeSpace& wave_space, const fe::LagrangeSpace& heat_space, double beta_T0);

@@ -34,6 +34,9 @@ class WaveComponent {
   /// Fills the wave and contact parts of the summary and frees the solvers.
   PetscErrorCode Stop(io::RunSummary* summary);
   bool running() const { return solver_ != nullptr; }
+  /// Checkpoints: the wave solver and the crack interface; and back.
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
 
  private:
   std::unique_ptr<wave::WaveSolver> solver_;

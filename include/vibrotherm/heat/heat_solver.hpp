@@ -28,6 +28,8 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/mesh/point_origin.hpp"
 
 namespace vibrotherm::heat {
 
@@ -81,6 +83,8 @@ class HeatSolver {
   PetscErrorCode AdvanceInSteps(double t_end, PetscInt steps);
   /// Called after every accepted step (recording while the heat TS runs alone).
   std::function<PetscErrorCode(const HeatSolver&)> on_step;
+  /// Ends the running AdvanceTo after the current step (the run was interrupted).
+  void RequestStop() { stop_requested_ = true; }
 
   /// Temperature at a point (collective; NaN outside).
   PetscErrorCode TemperatureAt(double x, double y, double* T) const;
@@ -100,12 +104,18 @@ class HeatSolver {
   const fe::LagrangeSpace& space() const { return space_; }
   const HeatBoundary& boundary() const { return boundary_; }
   const HeatMaterial& material() const { return material_; }
+  /// The coupled phase's state (θ keyed by dof origin; time, steps, accounts,
+  /// the Jacobian's shift) into a checkpoint, and back (heat_solver_state.cpp).
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
 
  private:
   static PetscErrorCode IFunction(TS ts, PetscReal t, Vec theta, Vec theta_dot, Vec F, void* ctx);
   static PetscErrorCode IJacobian(TS ts, PetscReal t, Vec theta, Vec theta_dot, PetscReal shift, Mat J, Mat P,
                                   void* ctx);
   static PetscErrorCode PostStep(TS ts);
+  /// J = K + shift M with the sink rows, unless it holds that shift already.
+  static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
   PetscErrorCode Account(double h);
   PetscErrorCode ScaleTolerance();
 
@@ -134,6 +144,7 @@ class HeatSolver {
   std::map<Mat, double> last_shift_;  ///< shift of the Jacobian each matrix holds
   double peak_rise_ = 0.0;  ///< largest rise seen [K] (sets the absolute tolerance)
   PetscInt steps_ = 0, global_dofs_ = 0;
+  bool stop_requested_ = false;
   PetscLogEvent source_event_ = 0;
 };
 

@@ -21,6 +21,8 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/interface/crack_record.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/mesh/point_origin.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::interface {
@@ -68,6 +70,10 @@ class CrackInterface final : public wave::WaveInterface {
   PetscErrorCode NearestCell(PetscInt crack, double xi, PetscInt* owned_index) const;
   /// Largest (|T| − μN)/(μN) over committed steps with N above rounding (≤ 0: Coulomb's bound held), global.
   PetscErrorCode MaxFrictionExcess(double* excess) const;
+  /// Every cell's committed state (law memory, a, b, power, W, last step) and
+  /// the accounts into a checkpoint, keyed by the + point's origin; and back (crack_interface_state.cpp).
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
   /// Wall time spent evaluating and committing the interface (this rank).
   double seconds() const { return seconds_; }
 

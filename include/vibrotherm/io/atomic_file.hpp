@@ -4,6 +4,7 @@
 #pragma once
 
 #include <fstream>
+#include <memory>
 #include <string>
 
 namespace vibrotherm::io {
@@ -12,6 +13,10 @@ class AtomicFile {
  public:
   /// Opens "<path>.partial" for writing; throws std::runtime_error naming the path.
   explicit AtomicFile(std::string path);
+  /// Reopens "<path>.partial" left by an interrupted run, cut back to
+  /// `resume_bytes` (its length at the checkpoint), to append to it; throws
+  /// naming the file when it is missing or shorter.
+  AtomicFile(std::string path, long long resume_bytes);
   ~AtomicFile();  ///< without commit(): removes the partial file
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -19,6 +24,10 @@ class AtomicFile {
   std::ofstream& stream() { return out_; }
   /// Flushes and renames onto the final path; throws on I/O failure.
   void commit();
+  /// Its length so far, flushed [bytes] (what a checkpoint records).
+  long long bytes();
+  /// Flushes and leaves the .partial file for a restart instead of removing it.
+  void keep();
 
   /// Renames an already written "<path>.partial" onto path (for files written
   /// by other libraries, e.g. HDF5).
@@ -30,5 +39,8 @@ class AtomicFile {
   std::ofstream out_;
   bool committed_ = false;
 };
+
+/// A new AtomicFile, or (resume_bytes >= 0) the interrupted run's cut back to resume_bytes.
+std::unique_ptr<AtomicFile> OpenAtomicFile(const std::string& path, long long resume_bytes);
 
 }  // namespace vibrotherm::io

@@ -17,7 +17,11 @@ namespace vibrotherm::io {
 class CrackStateLog {
  public:
   /// Rank 0 opens path. Collective.
-  PetscErrorCode Open(MPI_Comm comm, const std::string& path);
+  /// resume_bytes >= 0: continue the interrupted run's file (checkpoint restart).
+  PetscErrorCode Open(MPI_Comm comm, const std::string& path, long long resume_bytes = -1);
+  /// Checkpoints: bytes written (rank 0), and leaving the file for a restart.
+  long long bytes() const { return file_ ? file_->bytes() : 0; }
+  void Keep() { if (file_) file_->keep(); }
   /// Appends the rows of one time (rank 0's records; others pass theirs empty).
   void Record(double t, const std::vector<interface::CrackCellRecord>& records);
   PetscErrorCode Finish();

@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "vibrotherm/io/atomic_file.hpp"
 
@@ -27,13 +28,19 @@ struct EnergyRow {
 
 class EnergyLog {
  public:
-  PetscErrorCode Open(MPI_Comm comm, const std::string& path);
+  /// resume_bytes >= 0: continue the interrupted run's file (checkpoint restart).
+  PetscErrorCode Open(MPI_Comm comm, const std::string& path, long long resume_bytes = -1);
   /// Appends a row and returns its budget error.
   PetscErrorCode Record(const EnergyRow& row, double* budget_error);
   PetscErrorCode Finish();
   /// The largest imbalance of any row over the largest source work of the run:
   /// unlike the rows' running normalisation (huge relative errors of tiny
   /// imbalances in the first steps), independent of how often rows are written.
+  /// Checkpoints: bytes written (rank 0), the running maxima, and leaving the file for a restart.
+  long long bytes() const { return file_ ? file_->bytes() : 0; }
+  std::vector<double> maxima() const { return {max_work_, max_imbalance_}; }
+  void set_maxima(const std::vector<double>& m) { max_work_ = m.at(0), max_imbalance_ = m.at(1); }
+  void Keep() { if (file_) file_->keep(); }
   double max_budget_error() const { return max_work_ > 0.0 ? max_imbalance_ / max_work_ : 0.0; }
 
  private:

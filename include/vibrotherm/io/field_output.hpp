@@ -39,7 +39,12 @@ class FieldFile {
   FieldFile& operator=(const FieldFile&) = delete;
   ~FieldFile();
   /// `axis`: the attribute naming an output's position, "time" [s] or "frequency" [Hz].
-  PetscErrorCode Open(MPI_Comm comm, const std::string& h5_path, XdmfLayout layout, const std::string& axis = "time");
+  /// append: reopen the .partial an interrupted run left (checkpoint restart).
+  PetscErrorCode Open(MPI_Comm comm, const std::string& h5_path, XdmfLayout layout, const std::string& axis = "time",
+                      bool append = false);
+  /// While on, grids and fields are only indexed for the .xmf, not written: a
+  /// restart replays the outputs the interrupted run wrote before its checkpoint.
+  void set_index_only(bool on) { index_only_ = on; }
   /// The bulk cells of dm as grid `name` (geometry and topology). Collective.
   PetscErrorCode AddMesh(const std::string& name, DM dm);
   /// The same for the DM of space, whose global vectors WriteField then takes.
@@ -85,6 +90,8 @@ class FieldFile {
   PetscErrorCode Write(const Dataset& d, const std::vector<PetscInt>& rows, const std::vector<double>& values,
                        int k, double t);
   PetscErrorCode WriteXdmf() const;
+  /// Adds dataset `name` of output k (time t) to the .xmf index.
+  PetscErrorCode Index(Grid& g, const Dataset& d, const std::string& name, int k, double t);
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   std::string path_, axis_;
@@ -93,6 +100,7 @@ class FieldFile {
   std::map<std::string, Grid> grids_;
   std::vector<std::string> order_;  ///< grid names in the order added
   std::map<int, double> times_;
+  bool index_only_ = false;
 };
 
 }  // namespace vibrotherm::io

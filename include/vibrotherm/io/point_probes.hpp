@@ -32,7 +32,12 @@ class PointProbes {
  public:
   /// Locates the points (x, y pairs) in space; errors name -probe_points when a
   /// point lies outside the specimen. Rank 0 opens `path` (written atomically).
-  PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path);
+  /// resume_bytes >= 0: continue the interrupted run's file (checkpoint restart).
+  PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path,
+                       long long resume_bytes = -1);
+  /// Checkpoints: bytes written (rank 0; no rows held), and leaving the file for a restart.
+  long long bytes() const { return file_ ? file_->bytes() : 0; }
+  void Keep() { if (file_) file_->keep(); }
   /// Holds one row per probe with displacement u and velocity v (global vectors).
   PetscErrorCode Record(double t, Vec u, Vec v);
   /// Holds a crack-probe row (rank 0).

@@ -35,6 +35,9 @@ struct FieldPeakSummary {
 
 struct RunSummary {
   std::string git_commit, date, host, command_line;
+  /// True only for a run that reached its end (false: stopped by a signal, see checkpoint.h5).
+  bool complete = false;
+  std::string restarted_from;  ///< the checkpoint a restarted run continued from
   std::vector<OptionRecord> option_values;  ///< every option the program declared
   std::map<std::string, double> derived;    ///< values the program chose (dt, intervals, sizes)
   std::map<std::string, std::string> derived_rules;  ///< how it chose them

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vibrotherm/mesh/heat_mesh.hpp"
+#include "vibrotherm/mesh/point_origin.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::mesh {
@@ -29,6 +30,7 @@ struct Specimen {
   std::vector<CrackInfo> cracks;
   std::string source;  ///< "generated" or the mesh file
   std::string heat_source;  ///< "graded", "wave" (the unsplit wave mesh) or the heat mesh file
+  PointOrigin wave_origin, heat_origin;  ///< serial point of each local point (checkpoint keys)
 };
 
 /// Reads -mesh_file or the generated-specimen options (-specimen_*, -crack_*,

@@ -67,6 +67,12 @@ class BoundaryTerm {
   virtual bool needs_end_state_forces() const { return false; }
   /// Adds the energy this term exchanged over the step.
   virtual void Account(const StepState& s, BoundaryEnergy* e) = 0;
+  /// Restarting from a checkpoint: what Account remembers of the last step that
+  /// the state cannot tell (this rank's numbers; restored before Resume) ...
+  virtual std::vector<double> SavedAccount() const { return {}; }
+  virtual void RestoreAccount(const std::vector<double>& /*values*/) {}
+  /// ... and what it can: the last step's end state is the state restored (s.u, s.v).
+  virtual void Resume(const StepState& /*s*/) {}
 };
 
 /// The terms of a boundary, in the order they act: traction load, dashpots, constraints.

@@ -18,6 +18,8 @@
 
 #include <petscsys.h>
 
+#include <vector>
+
 namespace vibrotherm::wave {
 
 enum class ContactStepRule { kCurrent, kWorstCase };
@@ -36,6 +38,11 @@ class StepControl {
   double omega_dt_max() const { return omega_dt_max_; }
   bool implicit() const { return omega_dt_max_ <= 0.0; }
   PetscInt reductions() const { return reductions_; }
+  /// Its state (step, limit, reductions) as numbers, and back (checkpoints).
+  std::vector<double> state() const { return {dt_, stable_dt_, static_cast<double>(reductions_)}; }
+  void set_state(const std::vector<double>& s) {
+    dt_ = s.at(0), stable_dt_ = s.at(1), reductions_ = static_cast<PetscInt>(s.at(2));
+  }
   /// Rounded down to 4 significant digits.
   static double RoundDown(double raw);
 

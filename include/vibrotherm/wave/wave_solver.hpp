@@ -22,6 +22,8 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/mesh/point_origin.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
@@ -100,6 +102,7 @@ class WaveSolver {
   PetscInt steps() const { return steps_; }
   double dt() const { return step_.dt(); }
   double stable_dt() const { return step_.stable_dt(); }
+  bool implicit() const { return step_.implicit(); }
   double omega_max() const { return omega_max_; }
   PetscInt dt_reductions() const { return step_.reductions(); }
   PetscInt dofs() const { return global_dofs_; }
@@ -112,6 +115,11 @@ class WaveSolver {
   Mat stepping_operator() const { return A_; }
   Vec lumped_mass() const { return M_; }
   TS ts() const { return ts_; }
+  /// The state between steps (u, v keyed by dof origin; time, steps, step
+  /// control, energy accounts) into a checkpoint, and back (wave_solver_state.cpp).
+  /// Restore after Setup and SetInterface; the interface restores itself.
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
 
  private:
   // Explicit types (wave_solver.cpp).

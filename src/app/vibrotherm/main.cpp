@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
   PetscCall(vibrotherm::PushUserErrorHandler("vibrotherm"));
-  const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line);
+  int status = 0;
+  const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line, &status);
   PetscCall(SlepcFinalize());
-  return vibrotherm::ExitCode(ierr);
+  return ierr ? vibrotherm::ExitCode(ierr) : status;
 }

@@ -20,6 +20,7 @@
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/util/option_audit.hpp"
 #include "vibrotherm/util/version.hpp"
+#include "restart.hpp"
 
 namespace vibrotherm::app {
 namespace {
@@ -28,7 +29,7 @@ namespace {
 const std::vector<std::string>& RunOutputFiles() {
   static const std::vector<std::string> files = {
       "summary.json", "mesh.h5", "mesh.xmf", "fields.h5", "fields_wave.xmf", "fields_heat.xmf", "fields_cracks.xmf",
-      "fields.xmf" /* before fields_<grid>.xmf */, "probes.csv", "energy.csv",
+      "fields.xmf" /* before fields_<grid>.xmf */, "probes.csv", "energy.csv", "checkpoint.h5",
       "crack_state.csv", "crack_heat.h5", "camera.h5", "camera.xmf", "modes.csv", "modes.h5", "modes.xmf",
       "vibrotherm.log", "traction_loop.png", "crack_temperature.png", "temperature_maps.png", "energy_budget.png",
       "crack_spacetime.png", "camera.png", "modes.png"};
@@ -37,8 +38,10 @@ const std::vector<std::string>& RunOutputFiles() {
 
 /// Creates the output directory on rank 0 and removes an earlier run's outputs
 /// there (with their .partial leftovers), so no old file sits beside new ones.
+/// A restart keeps what its checkpoint continues: the checkpoint, the .partial
+/// files, and the interrupted run's log as vibrotherm.before-restart.log.
 /// A failure is an error on every rank.
-PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir) {
+PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir, bool restart) {
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -47,9 +50,14 @@ PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     failed = !std::filesystem::is_directory(dir);
-    for (const std::string& name : RunOutputFiles())
-      for (const std::string& file : {dir + "/" + name, dir + "/" + name + ".partial"})
-        if (!failed && std::filesystem::remove(file, ec)) ++removed;
+    if (restart) std::filesystem::rename(dir + "/vibrotherm.log", dir + "/vibrotherm.before-restart.log", ec);
+    ec.clear();
+    for (const std::string& name : RunOutputFiles()) {
+      if (restart && name == "checkpoint.h5") continue;
+      const std::string file = dir + "/" + name;
+      if (!failed && std::filesystem::remove(file, ec)) ++removed;
+      if (!failed && !restart && std::filesystem::remove(file + ".partial", ec)) ++removed;
+    }
     failed = failed || static_cast<bool>(ec);
   }
   PetscCallMPI(MPI_Bcast(&failed, 1, MPI_INT, 0, comm));
@@ -59,10 +67,21 @@ PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir) {
   PetscFunctionReturn(0);
 }
 
+/// A complete run needs no checkpoint: removed, so that no -restart repeats its end.
+PetscErrorCode RemoveCheckpoint(MPI_Comm comm, const std::string& dir) {
+  PetscFunctionBeginUser;
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  std::error_code ec;
+  if (rank == 0) std::filesystem::remove(dir + "/checkpoint.h5", ec);
+  PetscFunctionReturn(0);
+}
+
 struct AppOptions {
   PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
   PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
   char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
+  char restart[PETSC_MAX_PATH_LEN] = "";  ///< -restart DIR: continue the run whose checkpoint is in DIR
 };
 
 PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
@@ -74,9 +93,21 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
                              o->modes, &o->modes, nullptr));
   PetscCall(PetscOptionsString("-output_dir", "Output directory (scripts/run: results/<options-file-stem>)", nullptr,
                                o->output_dir, o->output_dir, sizeof(o->output_dir), nullptr));
+  PetscCall(PetscOptionsString("-restart",
+                               "Continue the interrupted run whose outputs and checkpoint.h5 are in this directory "
+                               "(the same options; it becomes the output directory)",
+                               nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
   PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
                              nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
   PetscOptionsEnd();
+  PetscBool dir_set = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output_dir", &dir_set));
+  if (o->restart[0]) {
+    PetscCheck(!dir_set || std::string(o->output_dir) == o->restart, comm, PETSC_ERR_USER_INPUT,
+               "-restart %s writes into that directory: -output_dir %s differs", o->restart, o->output_dir);
+    PetscCheck(!o->modes && !o->mesh_only, comm, PETSC_ERR_USER_INPUT, "-restart continues a time run, not -modes or -mesh_only");
+    PetscCall(PetscStrncpy(o->output_dir, o->restart, sizeof(o->output_dir)));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -145,8 +176,9 @@ void RecordRun(const std::vector<std::string>& command_line, const std::vector<D
 
 }  // namespace
 
-PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line) {
+PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, int* status) {
   PetscFunctionBeginUser;
+  *status = 0;
   const double t0 = MPI_Wtime();
   PetscBool version = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-version", &version));
@@ -177,9 +209,17 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line) 
   PetscCall(CheckMissingValues(comm, declared));
   RecordRun(command_line, declared, scene, &summary);
 
-  // Everything has been checked: outputs from here on.
+  // Everything has been checked (and the checkpoint read): outputs from here on.
   const std::string dir = app.output_dir;
-  PetscCall(MakeOutputDirectory(comm, dir));
+  io::Checkpoint checkpoint(comm);
+  coupling::RunControl control;
+  control.fingerprint = OptionFingerprint(summary);
+  if (app.restart[0]) {
+    PetscCall(ReadRestart(comm, dir, control.fingerprint, &checkpoint));
+    control.restart = &checkpoint;
+    summary.restarted_from = dir + "/checkpoint.h5";
+  }
+  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr));
   PetscCall(io::RunLogOpen(comm, dir + "/vibrotherm.log"));
   PetscLogStage output_stage;
   PetscCall(PetscLogStageRegister("Output", &output_stage));
@@ -189,10 +229,14 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line) 
   PetscCall(PetscLogStagePop());
   summary.stages["output"] = MPI_Wtime() - t;
   if (app.modes && !app.mesh_only) PetscCall(modes_run.Write(dir));
-  else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary));
+  else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
+  summary.complete = simulation.interrupted_by() == 0;
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
-  PetscCall(PetscPrintf(comm, "outputs in %s\n", dir.c_str()));
+  if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
+  PetscCall(PetscPrintf(comm, "outputs in %s%s\n", dir.c_str(), summary.complete ? "" : " (incomplete: summary.json says \"complete\": false)"));
+  // Stopped by a signal: the shell's convention for it, 128 + the signal.
+  *status = summary.complete ? 0 : 128 + simulation.interrupted_by();
   PetscCall(mesh::SpecimenDestroy(&specimen));
   PetscCall(io::RunLogClose());
   PetscFunctionReturn(0);

@@ -7,5 +7,6 @@
 
 namespace vibrotherm::app {
 /// The whole program after PetscInitialize.
-PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line);
+/// *status: the exit status besides errors (128 + the signal that stopped a run for a restart).
+PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, int* status);
 }  // namespace vibrotherm::app

@@ -1,0 +1,91 @@
+// The recorder in checkpoints: how long each output file was, what the summary
+// has gathered so far (probe peaks, rises at output times, the field peak),
+// the probe temperature bracket and the field outputs written.
+#include "recorder.hpp"
+
+#include "vibrotherm/util/errors.hpp"
+
+namespace vibrotherm::coupling {
+namespace {
+
+/// A map int → double as [key, value, ...].
+std::vector<double> Flatten(const std::map<int, double>& map) {
+  std::vector<double> flat;
+  for (const auto& [key, value] : map) flat.insert(flat.end(), {static_cast<double>(key), value});
+  return flat;
+}
+
+std::map<int, double> Unflatten(const double* flat, std::size_t n) {
+  std::map<int, double> map;
+  for (std::size_t i = 0; i + 1 < n; i += 2) map[static_cast<int>(flat[i])] = flat[i + 1];
+  return map;
+}
+
+}  // namespace
+
+PetscErrorCode Recorder::Save(io::Checkpoint& checkpoint) const {
+  PetscFunctionBeginUser;
+  PetscCheck(!camera_, PETSC_COMM_SELF, PETSC_ERR_SUP, "the IR camera's frames are not checkpointed");
+  long long probes = 0, energy = 0, crack = -1;
+  VibrothermCallCpp(PETSC_COMM_SELF, probes = probes_.bytes(); energy = energy_.bytes(); crack = crack_state_.bytes());
+  checkpoint.PutShared("recorder/bytes", {static_cast<double>(probes), static_cast<double>(energy),
+                                          static_cast<double>(crack), static_cast<double>(outputs_written_)});
+  checkpoint.PutShared("recorder/energy_maxima", energy_.maxima());
+  std::vector<double> bracket = {bracket_.t0, bracket_.t1, static_cast<double>(bracket_.T1.size())};
+  bracket.insert(bracket.end(), bracket_.T0.begin(), bracket_.T0.end());
+  bracket.insert(bracket.end(), bracket_.T1.begin(), bracket_.T1.end());
+  checkpoint.PutShared("recorder/bracket", bracket);
+  checkpoint.PutShared("recorder/written_times", written_times_);
+  checkpoint.PutShared("recorder/next_output", {static_cast<double>(next_output_)});
+  checkpoint.PutShared("recorder/probe_peaks", Flatten(summary_->probe_max_temperature_rise));
+  std::vector<double> rises;  // per output: t, n, then n (probe, rise) pairs
+  for (const auto& [t, by_probe] : summary_->output_temperature_rise) {
+    const std::vector<double> flat = Flatten(by_probe);
+    rises.insert(rises.end(), {t, static_cast<double>(flat.size())});
+    rises.insert(rises.end(), flat.begin(), flat.end());
+  }
+  checkpoint.PutShared("recorder/output_rises", rises);
+  const io::FieldPeakSummary& p = field_peak_.peak();
+  checkpoint.PutShared("recorder/field_peak", {p.known ? 1.0 : 0.0, p.rise, p.t, p.x, p.y});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Recorder::Restore(const io::Checkpoint& checkpoint, WaveComponent* waves, const HeatComponent* heat) {
+  PetscFunctionBeginUser;
+  std::vector<double> v;
+  PetscCall(checkpoint.GetShared("recorder/energy_maxima", &v, 2));
+  energy_.set_maxima(v);
+  PetscCall(checkpoint.GetShared("recorder/bracket", &v));
+  const std::size_t n = static_cast<std::size_t>(v.at(2));
+  bracket_.t0 = v[0], bracket_.t1 = v[1];
+  bracket_.T0.assign(v.begin() + 3, v.begin() + 3 + n);
+  bracket_.T1.assign(v.begin() + 3 + n, v.begin() + 3 + 2 * n);
+  PetscCall(checkpoint.GetShared("recorder/probe_peaks", &v));
+  summary_->probe_max_temperature_rise = Unflatten(v.data(), v.size());
+  PetscCall(checkpoint.GetShared("recorder/output_rises", &v));
+  summary_->output_temperature_rise.clear();
+  for (std::size_t i = 0; i + 1 < v.size(); i += 2 + static_cast<std::size_t>(v[i + 1]))
+    summary_->output_temperature_rise.push_back({v[i], Unflatten(&v[i + 2], static_cast<std::size_t>(v[i + 1]))});
+  PetscCall(checkpoint.GetShared("recorder/field_peak", &v, 5));
+  field_peak_.set_peak({v[0] != 0.0, v[1], v[2], v[3], v[4]});
+  PetscCall(checkpoint.GetShared("recorder/written_times", &written_times_));
+  if (fields_.open() && checkpoint.same_ranks()) {  // index what the .partial holds already
+    replaying_ = true;
+    fields_.set_index_only(true);
+    for (double t : written_times_) PetscCall(WriteFields(t, waves, heat));
+    fields_.set_index_only(false);
+    replaying_ = false;
+  }
+  outputs_written_ = static_cast<int>(written_times_.size());
+  PetscCall(checkpoint.GetShared("recorder/next_output", &v, 1));
+  next_output_ = static_cast<std::size_t>(v[0]);
+  PetscFunctionReturn(0);
+}
+
+void Recorder::Keep() {
+  probes_.Keep();
+  energy_.Keep();
+  crack_state_.Keep();
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,79 @@
+// Checkpoints of a run: when (checkpoint_schedule.hpp), what (every component,
+// the recorder, the wave-stop rule's memory) and how a restart resumes.
+#include <cmath>
+
+#include "recorder.hpp"
+#include "vibrotherm/coupling/simulation.hpp"
+
+namespace vibrotherm::coupling {
+
+PetscErrorCode Simulation::CanCheckpoint(bool* can) const {
+  PetscFunctionBeginUser;
+  *can = false;
+  if (!waves_) PetscFunctionReturn(0);  // the heat alone is not checkpointed
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
+  const char* why = nullptr;
+  if (waves_->solver().implicit()) why = "the implicit wave TS (alpha2)";
+  if (camera_) why = "-camera (the camera's frames)";
+  if (!why) *can = true;
+  else if (scene_->run.checkpoint_every_s > 0.0 || control_.restart)
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: no checkpoints in this run: %s is not checkpointed; a signal stops "
+                                "the run without one\n", why));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::CheckpointIfDue(Recorder& recorder, bool quiet) {
+  PetscFunctionBeginUser;
+  bool due;
+  int signal;
+  PetscCall(schedule_.Poll(&due, &signal));
+  // Not when the waves have just gone quiet: a restart would not know they had.
+  if (due && checkpoints_ && !quiet) {
+    PetscCall(WriteCheckpoint(recorder));
+    schedule_.Written();
+  }
+  if (!signal) PetscFunctionReturn(0);
+  interrupted_by_ = signal;
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
+  PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: %s\n", SignalName(signal), waves_->solver().time(),
+                        checkpoints_ && !quiet ? "checkpoint written, stopping (continue with -restart <output dir>)"
+                                               : "stopping without a checkpoint"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder) const {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
+  io::Checkpoint checkpoint(comm);
+  checkpoint.PutText("run/fingerprint", control_.fingerprint);
+  PetscCall(waves_->Save(checkpoint, *specimen_));
+  if (heat_) PetscCall(heat_->Save(checkpoint, *specimen_));
+  PetscCall(recorder.Save(checkpoint));
+  std::vector<double> quiet = {peak_mechanical_, mechanical_left_};
+  for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy});
+  checkpoint.PutShared("run/quiet_rule", quiet);
+  PetscCall(checkpoint.Write(dir_ + "/checkpoint.h5"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Resume(const io::Checkpoint& checkpoint, Recorder& recorder) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen_->wave);
+  PetscCheck(waves_ && checkpoints_, comm, PETSC_ERR_USER_INPUT, "-restart: this scene is not checkpointed");
+  PetscCall(waves_->Restore(checkpoint, *specimen_));
+  PetscCheck(heat_ != nullptr || !checkpoint.Has("heat/clock"), comm, PETSC_ERR_USER_INPUT,
+             "-restart: the checkpoint has a heat solver, this scene has none");
+  if (heat_) PetscCall(heat_->Restore(checkpoint, *specimen_));
+  PetscCall(recorder.Restore(checkpoint, waves_.get(), heat_.get()));
+  std::vector<double> quiet;
+  PetscCall(checkpoint.GetShared("run/quiet_rule", &quiet));
+  peak_mechanical_ = quiet.at(0);
+  mechanical_left_ = quiet.at(1);
+  recent_.clear();
+  for (std::size_t i = 2; i + 1 < quiet.size(); i += 2) recent_.push_back({quiet[i], quiet[i + 1]});
+  PetscCall(PetscPrintf(comm, "Restarted from the checkpoint at t = %.6g s (wave step %" PetscInt_FMT ")\n",
+                        waves_->solver().time(), waves_->solver().steps()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

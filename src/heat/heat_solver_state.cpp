@@ -1,0 +1,60 @@
+// The heat solver in checkpoints (taken while the waves run: the coupled TS,
+// fixed steps): θ per owned dof keyed by its origin, time, steps, the accounts,
+// and the shift its Jacobian was factored with, so that a restart solves with
+// the very same factors.
+#include "vibrotherm/heat/heat_solver.hpp"
+
+namespace vibrotherm::heat {
+
+PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
+  PetscFunctionBeginUser;
+  PetscCheck(ts_ == coupled_ts_, PetscObjectComm((PetscObject)dm_), PETSC_ERR_PLIB,
+             "heat checkpoints are taken while the waves run");
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  const PetscScalar* theta;
+  PetscCall(VecGetArrayRead(theta_, &theta));
+  checkpoint.PutKeyed("heat/theta", keys, 1, std::vector<double>(theta, theta + keys.size()));
+  PetscCall(VecRestoreArrayRead(theta_, &theta));
+  PetscInt ts_steps;
+  PetscReal dt;
+  Mat J;
+  PetscCall(TSGetStepNumber(ts_, &ts_steps));
+  PetscCall(TSGetTimeStep(ts_, &dt));
+  PetscCall(TSGetIJacobian(ts_, &J, nullptr, nullptr, nullptr));
+  const auto shift = last_shift_.find(J);
+  checkpoint.PutShared("heat/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps), dt,
+                                      deposited_, boundary_loss_, peak_rise_,
+                                      shift == last_shift_.end() ? 0.0 : shift->second});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+  PetscFunctionBeginUser;
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  std::vector<double> theta, clock;
+  PetscCall(checkpoint.GetKeyed("heat/theta", keys, 1, &theta));
+  PetscCall(checkpoint.GetShared("heat/clock", &clock, 8));
+  PetscScalar* x;
+  PetscCall(VecGetArray(theta_, &x));
+  std::copy(theta.begin(), theta.end(), x);
+  PetscCall(VecRestoreArray(theta_, &x));
+  PetscCall(VecCopy(theta_, theta_prev_));
+  time_ = clock[0];
+  steps_ = static_cast<PetscInt>(clock[1]);
+  deposited_ = clock[4];
+  boundary_loss_ = clock[5];
+  peak_rise_ = clock[6];
+  PetscCall(TSSetTime(ts_, time_));
+  PetscCall(TSSetStepNumber(ts_, static_cast<PetscInt>(clock[2])));
+  PetscCall(TSSetTimeStep(ts_, clock[3]));
+  if (clock[7] != 0.0) {  // the uninterrupted run keeps the Jacobian of its first step
+    Mat J;
+    PetscCall(TSGetIJacobian(ts_, &J, nullptr, nullptr, nullptr));
+    PetscCall(AssembleJacobian(this, clock[7], J));
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::heat

@@ -1,0 +1,76 @@
+// The wave solver in checkpoints: u and v per owned dof (keyed by the dof's
+// origin, so any partition can read them), time, step counts, the step
+// control, the integrator-term offset and each rank's boundary accounts.
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::wave {
+
+PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
+  PetscFunctionBeginUser;
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  const PetscScalar* x;
+  PetscCall(VecGetArrayRead(X_, &x));
+  const std::size_t n = keys.size();
+  checkpoint.PutKeyed("wave/u", keys, 1, std::vector<double>(x, x + n));
+  checkpoint.PutKeyed("wave/v", keys, 1, std::vector<double>(x + n, x + 2 * n));
+  PetscCall(VecRestoreArrayRead(X_, &x));
+  PetscInt ts_steps;
+  PetscCall(TSGetStepNumber(ts_, &ts_steps));
+  checkpoint.PutShared("wave/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps),
+                                      integrator_offset_});
+  checkpoint.PutShared("wave/step_control", step_.state());
+  std::vector<double> accounts = {accounted_.radiated, accounted_.work_source};
+  for (const auto& term : terms_)
+    for (double value : term->SavedAccount()) accounts.push_back(value);
+  checkpoint.PutPerRank("wave/accounts", accounts);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-restart: the implicit wave TS (alpha2) is not checkpointed");
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  std::vector<double> u, v;
+  PetscCall(checkpoint.GetKeyed("wave/u", keys, 1, &u));
+  PetscCall(checkpoint.GetKeyed("wave/v", keys, 1, &v));
+  PetscScalar* x;
+  PetscCall(VecGetArray(X_, &x));
+  std::copy(u.begin(), u.end(), x);
+  std::copy(v.begin(), v.end(), x + keys.size());
+  PetscCall(VecRestoreArray(X_, &x));
+  std::vector<double> clock, control, accounts;
+  PetscCall(checkpoint.GetShared("wave/clock", &clock, 4));
+  PetscCall(checkpoint.GetShared("wave/step_control", &control, 3));
+  PetscCall(checkpoint.GetPerRank("wave/accounts", &accounts));
+  time_ = clock[0];
+  steps_ = static_cast<PetscInt>(clock[1]);
+  integrator_offset_ = clock[3];
+  step_.set_state(control);
+  PetscCall(TSSetTime(ts_, time_));
+  PetscCall(TSSetStepNumber(ts_, static_cast<PetscInt>(clock[2])));
+  PetscCall(TSSetTimeStep(ts_, step_.dt()));
+  accounted_.radiated = accounts.at(0);
+  accounted_.work_source = accounts.at(1);
+  std::size_t at = 2;
+  for (auto& term : terms_) {
+    const std::size_t n = term->SavedAccount().size();
+    term->RestoreAccount(std::vector<double>(accounts.begin() + at, accounts.begin() + at + n));
+    at += n;
+  }
+  // What the terms remember of the last step's end state is the state itself.
+  Vec uv = nullptr, vv = nullptr;
+  PetscCall(GetFields(&uv, &vv));
+  StepState state;
+  PetscCall(VecGetArrayRead(uv, &state.u));
+  PetscCall(VecGetArrayRead(vv, &state.v));
+  for (auto& term : terms_) term->Resume(state);
+  PetscCall(VecRestoreArrayRead(uv, &state.u));
+  PetscCall(VecRestoreArrayRead(vv, &state.v));
+  PetscCall(RestoreFields(&uv, &vv));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::wave
