@@ -26,6 +26,9 @@ PetscErrorCode CheckpointSchedule::Start(MPI_Comm comm, double every_s) {
   PetscFunctionBeginUser;
   comm_ = comm;
   every_s_ = every_s;
+  PetscClassId id;
+  PetscCall(PetscClassIdRegister("vibrotherm run", &id));
+  PetscCall(PetscLogEventRegister("Checkpoint", id, &event_));
   last_ = MPI_Wtime();
   g_signal_received = 0;
   struct sigaction action = {};

@@ -235,6 +235,10 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
     if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));
   }
   heat.on_step = nullptr;
+  if (interrupted_by_)
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
+                                "repeats this phase from the last checkpoint of the waves)\n",
+                          SignalName(interrupted_by_), heat.time()));
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());

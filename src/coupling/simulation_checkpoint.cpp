@@ -29,7 +29,9 @@ PetscErrorCode Simulation::CheckpointIfDue(Recorder& recorder, bool quiet) {
   PetscCall(schedule_.Poll(&due, &signal));
   // Not when the waves have just gone quiet: a restart would not know they had.
   if (due && checkpoints_ && !quiet) {
+    PetscCall(PetscLogEventBegin(schedule_.event(), 0, 0, 0, 0));
     PetscCall(WriteCheckpoint(recorder));
+    PetscCall(PetscLogEventEnd(schedule_.event(), 0, 0, 0, 0));
     schedule_.Written();
   }
   if (!signal) PetscFunctionReturn(0);

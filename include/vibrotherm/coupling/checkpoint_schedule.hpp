@@ -25,11 +25,14 @@ class CheckpointSchedule {
   PetscErrorCode Poll(bool* write, int* signal);
   /// A checkpoint was written: the wall clock starts again.
   void Written() { last_ = MPI_Wtime(); }
+  /// The log event of writing one ("Checkpoint").
+  PetscLogEvent event() const { return event_; }
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   double every_s_ = 0.0, last_ = 0.0;
   bool installed_ = false;
+  PetscLogEvent event_ = 0;
   struct sigaction previous_[3];
 };
 

@@ -30,7 +30,7 @@ std::string FirstDifference(const std::string& a, const std::string& b) {
 std::string OptionFingerprint(const io::RunSummary& summary) {
   std::string text;
   for (const io::OptionRecord& o : summary.option_values)
-    if (!MayChangeOnRestart(o.name)) text += o.name + "=" + o.value + "\n";
+    if (o.source != "default" && !MayChangeOnRestart(o.name)) text += o.name + "=" + o.value + "\n";
   return text;
 }
 

@@ -12,7 +12,8 @@
 namespace vibrotherm::app {
 
 /// The options a restart must share with the run it continues, as "name=value"
-/// lines (not those that only say where and how often to write; rank 0).
+/// lines: those given (defaults may depend on the rank count), except those
+/// that only say where and how often to write (rank 0).
 std::string OptionFingerprint(const io::RunSummary& summary);
 
 /// Reads DIR/checkpoint.h5 and refuses it, naming the first option that

@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""Requirement (issue 16): a run stopped by a signal writes a checkpoint, exits 128 + the
+signal with "complete": false and only .partial outputs; -restart DIR then finishes it
+bit-identical to a run never stopped (same ranks: every byte of probes.csv, energy.csv,
+crack_state.csv, every dataset of fields.h5 and crack_heat.h5, every summary figure), and
+identical to rounding on another rank count. A run killed outright (SIGKILL) restarts from
+its last periodic checkpoint just as exactly (files written after it are cut back). A
+restart with other options, or without a checkpoint, is refused with one line, exit 2.
+
+usage: test_checkpoint_restart.py VIBROTHERM MPIEXEC"""
+import json, os, signal, subprocess, sys, tempfile, time
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks
+
+exe, mpiexec = sys.argv[1:3]
+check = Checks("checkpoint_restart")
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCENE = ["-options_file", os.path.join(ROOT, "options", "paper.opts"), "-final_time", "3e-4",
+         "-output_times", "5e-5,2.5e-4", "-checkpoint_every_s", "0.3"]
+ACTIVE = 4e-5  # s: the shear wave has reached the crack, its faces rub (a restart must carry their memory)
+TEXT = ["probes.csv", "energy.csv", "crack_state.csv"]
+NOT_FIGURES = {"wall_time_s", "stages", "date", "command_line", "restarted_from", "complete", "host", "options", "option_values"}
+
+
+def command(ranks, extra):
+    return [mpiexec, "-n", str(ranks), "--oversubscribe", exe] + SCENE + extra
+
+
+def run(ranks, extra):
+    r = subprocess.run(command(ranks, extra), capture_output=True, text=True)
+    return r.returncode, r.stdout, r.stderr
+
+
+def checkpoint_time(out):
+    """Simulated time of the latest checkpoint (-1: none yet)."""
+    try:
+        with h5py.File(os.path.join(out, "checkpoint.h5"), "r") as f:
+            return float(f["wave.clock"]["values"][0])
+    except (OSError, KeyError):
+        return -1.0
+
+
+def interrupted(out, how):
+    """Starts the run, waits for a checkpoint taken once the crack works, then stops it (SIGUSR1 to mpiexec,
+    which forwards it, or SIGKILL to the ranks); the exit status."""
+    p = subprocess.Popen(command(2, ["-output_dir", out]), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while checkpoint_time(out) < ACTIVE and p.poll() is None and time.time() < deadline:
+        time.sleep(0.05)
+    if how == "usr1":
+        p.send_signal(signal.SIGUSR1)
+    else:  # a crash: the ranks die without a word
+        time.sleep(0.5)
+        subprocess.run(["pkill", "-KILL", "-f", "^" + exe])
+    _, err = p.communicate()
+    return p.returncode, err
+
+
+def datasets(path):
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda n, o: out.__setitem__(n, o[()]) if isinstance(o, h5py.Dataset) else None)
+    return out
+
+
+def compare_exact(ref, out, label):
+    for name in TEXT:
+        same = open(os.path.join(ref, name), "rb").read() == open(os.path.join(out, name), "rb").read()
+        check(same, "%s: %s differs from the uninterrupted run" % (label, name))
+    for name in ["fields.h5", "crack_heat.h5"]:
+        a, b = datasets(os.path.join(ref, name)), datasets(os.path.join(out, name))
+        check(a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a),
+              "%s: %s differs from the uninterrupted run" % (label, name))
+    sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in (ref, out))
+    differ = [k for k in sa if k not in NOT_FIGURES and sa[k] != sb.get(k)]
+    check(not differ, "%s: summary figures differ: %s" % (label, differ))
+    check(sb["complete"] is True and "restarted_from" in sb, "%s: summary says complete, restarted from" % label)
+
+
+def compare_rounding(ref, out, label):
+    """Columns relative to their largest value; the budget error (a small difference of
+    large energies, as a fraction of the work) absolutely."""
+    for name in ["probes.csv", "energy.csv"]:
+        a = np.genfromtxt(os.path.join(ref, name), delimiter=",", names=True)
+        b = np.genfromtxt(os.path.join(out, name), delimiter=",", names=True)
+        for column in a.dtype.names:
+            x, y = a[column], b[column]
+            scale = 1.0 if column == "budget_error" else np.nanmax(np.abs(x)) + 1e-300
+            ok = x.shape == y.shape and (np.all(np.isnan(x)) or np.nanmax(np.abs(x - y)) < 1e-9 * scale)
+            check(ok, "%s: %s column %s not within rounding of the 2-rank run" % (label, name, column))
+    sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in (ref, out))
+    for key in ["dissipated_energy", "heat_deposited"]:
+        check(abs(sa[key] - sb[key]) <= 1e-9 * abs(sa[key]), "%s: %s %g vs %g" % (label, key, sa[key], sb[key]))
+    check(abs(sa["max_budget_error"] - sb["max_budget_error"]) <= 1e-9, "%s: max_budget_error" % label)
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    ref = os.path.join(tmp, "ref")
+    code, _, err = run(2, ["-output_dir", ref])
+    check(code == 0 and not os.path.exists(os.path.join(ref, "checkpoint.h5")),
+          "uninterrupted run: exit 0, no checkpoint left (%s)" % err[-500:])
+
+    out = os.path.join(tmp, "usr1")
+    code, err = interrupted(out, "usr1")
+    check(code == 128 + signal.SIGUSR1, "SIGUSR1: exit %d, expected %d (%s)" % (code, 128 + signal.SIGUSR1, err[-500:]))
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    check(summary["complete"] is False, 'SIGUSR1: summary.json "complete": false')
+    check(all(not os.path.exists(os.path.join(out, n)) and os.path.exists(os.path.join(out, n + ".partial")) for n in TEXT),
+          "SIGUSR1: only .partial outputs, nothing under a final name")
+    code, _, err = run(2, ["-restart", out])
+    check(code == 0, "restart on 2 ranks: exit 0 (%s)" % err[-500:])
+    if code == 0:
+        compare_exact(ref, out, "restart on 2 ranks")
+
+    out = os.path.join(tmp, "kill")
+    code, _ = interrupted(out, "kill")
+    check(code != 0, "SIGKILL: the run did not finish")
+    code, _, err = run(2, ["-restart", out])
+    check(code == 0, "restart after SIGKILL: exit 0 (%s)" % err[-500:])
+    if code == 0:
+        compare_exact(ref, out, "restart after SIGKILL")
+
+    out = os.path.join(tmp, "other_ranks")
+    interrupted(out, "usr1")
+    code, _, err = run(1, ["-restart", out])
+    check(code == 0, "restart on 1 rank: exit 0 (%s)" % err[-500:])
+    if code == 0:
+        compare_rounding(ref, out, "restart on 1 rank")
+
+    # Refused: another option, no checkpoint. One line, exit 2, nothing written.
+    out = os.path.join(tmp, "refused")
+    interrupted(out, "usr1")
+    before = sorted(os.listdir(out))
+    code, _, err = run(2, ["-restart", out, "-contact_mu", "0.5"])
+    lines = [l for l in err.splitlines() if l.startswith("vibrotherm: error")]
+    check(code == 2 and len(lines) == 1 and "-contact_mu" in lines[0], "other options: one line naming -contact_mu, exit 2")
+    check(sorted(os.listdir(out)) == before, "other options: nothing written")
+    code, _, err = run(2, ["-restart", os.path.join(tmp, "nowhere")])
+    check(code == 2 and "checkpoint" in err and not os.path.exists(os.path.join(tmp, "nowhere")),
+          "no checkpoint: exit 2 naming it, nothing written (%s)" % err[-300:])
+
+check.finish()
