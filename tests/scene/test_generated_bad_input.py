@@ -89,6 +89,8 @@ ALLOWED = {
     "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
     # NETD 0: a noise-free camera (the clean frames).
     "-camera_netd": {"0"},
+    # 0: checkpoints only when a signal stops the run.
+    "-checkpoint_every_s": {"0"},
     # A directory name is any name.
     "-output_dir": ANY_NAME,
 }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #include "contact_test_support.hpp"
 #include "input_error_message.hpp"
@@ -34,6 +36,38 @@ TEST(CrackLaws, EveryLawClosesTheEnergyIdentityOnACombinedCycle) {
     if (!law->can_dissipate()) {
       EXPECT_EQ(e.dissipated, 0.0) << entry.name;
     }
+  }
+}
+
+// Checkpoints: a law restored from save_state into a fresh law (another cell's
+// virgin state) continues bit for bit like the one never interrupted.
+TEST(CrackLaws, EveryLawContinuesExactlyFromItsSavedState) {
+  for (const auto& entry : crack_laws()) {
+    ContactParameters p;
+    p.crack_law = entry.name;
+    const double s = 1e-8;
+    const auto path = [&](int k, double& a, double& b) {
+      a = s * (0.3 + 0.8 * std::sin(0.01 * k + 0.3));
+      b = s * 0.6 * std::sin(0.013 * k) * (1.0 + 0.001 * k);
+    };
+    double a, b;
+    path(0, a, b);
+    auto original = testing::one_cell(p, a, b);
+    for (int k = 1; k <= 700; ++k) path(k, a, b), original->commit(0, a, b);
+    const std::vector<double> saved = original->save_state(0);
+    auto restored = testing::one_cell(p, 0.0, 0.0);
+    restored->restore_state(0, saved.data(), saved.size());
+    EXPECT_EQ(restored->save_state(0), saved) << entry.name;
+    for (int k = 701; k <= 1400; ++k) {
+      path(k, a, b);
+      const StepResult x = original->commit(0, a, b), y = restored->commit(0, a, b);
+      ASSERT_EQ(x.N, y.N) << entry.name << " step " << k;
+      ASSERT_EQ(x.T, y.T) << entry.name << " step " << k;
+      ASSERT_EQ(x.dW, y.dW) << entry.name << " step " << k;
+      ASSERT_EQ(x.state, y.state) << entry.name << " step " << k;
+    }
+    EXPECT_EQ(original->stored_energy(0), restored->stored_energy(0)) << entry.name;
+    EXPECT_THROW(restored->restore_state(0, saved.data(), saved.size() + 1), std::runtime_error) << entry.name;
   }
 }
 
