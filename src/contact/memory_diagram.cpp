@@ -28,6 +28,99 @@ namespace detail {
 
 namespace {
 double slope(const Breakpoint& p, const Breakpoint& q) { return (q.f - p.f) / (q.alpha - p.alpha); }
+
+/// Where the old diagram meets the new wedge: its apex (a1, b̃1), m = min(a1, a2),
+/// the last old point j at or below m and the diagram's value g_m at m.
+struct Clip {
+  double tm, inv_theta, a1, bt1, m, eps_alpha, g_m;
+  std::size_t j;
+  bool inside;  ///< m lies strictly inside segment j (not on point j)
+};
+
+Clip clip_at(const Breakpoint* pts, std::size_t n, const MmdConfig& cfg, double a2) {
+  Clip c;
+  c.tm = cfg.theta * cfg.mu;
+  c.inv_theta = 1.0 / cfg.theta;
+  c.a1 = pts[n - 1].alpha, c.bt1 = pts[n - 1].f;
+  c.m = std::min(c.a1, a2);
+  c.eps_alpha = cfg.rel_tol * a2;
+  // j: last old point with α_j <= m (the points above m detach).
+  c.j = n - 1;
+  while (c.j > 0 && pts[c.j].alpha > c.m) --c.j;
+  c.inside = c.j + 1 < n && c.m > pts[c.j].alpha;
+  const double sigma_j = c.inside ? slope(pts[c.j], pts[c.j + 1]) : 0.0;
+  c.g_m = c.inside ? pts[c.j].f + sigma_j * (c.m - pts[c.j].alpha) : pts[c.j].f;
+  return c;
+}
+
+/// Nothing slips: keep the old diagram up to m, then follow the path.
+void stick_tail(const Breakpoint* pts, std::size_t n, const Clip& c, double a2, double bt2, Tail* tail) {
+  tail->state = ContactState::Stick;
+  tail->keep = c.j + 1;
+  tail->q = c.m;
+  double T = pts[c.j].T_before;
+  const double alpha_prev = pts[c.j].alpha, f_prev = pts[c.j].f, N_prev = pts[c.j].law.N;
+  if (a2 > c.a1) {
+    T += c.inv_theta * (bt2 - c.bt1) / (a2 - c.a1) * (tail->N - pts[n - 1].law.N);
+  } else if (a2 > alpha_prev + c.eps_alpha) {
+    T += c.inv_theta * (bt2 - f_prev) / (a2 - alpha_prev) * (tail->N - N_prev);
+  } else {
+    // a2 sits on point j (j >= 1 since a2 > 0): the apex replaces it, snapped onto b̃2.
+    tail->keep = c.j;
+    const Breakpoint& p = pts[c.j - 1];
+    T = p.T_before + c.inv_theta * (bt2 - p.f) / (a2 - p.alpha) * (tail->N - p.law.N);
+  }
+  tail->count = 1;
+  tail->alpha[0] = a2;
+  tail->f[0] = bt2;
+  tail->T = T;
+}
+
+/// Partial slip: the active slip line f = L + s·θμ·α. In h = s f − θμ α (never
+/// increasing along the diagram) the violated points are those with h < s L,
+/// always a run at the right end: pop them, then intersect.
+void partial_tail(const Breakpoint* pts, const NormalLaw& law, const MmdConfig& cfg, const Clip& c, double a2,
+                  double bt2, Tail* tail) {
+  tail->state = ContactState::Partial;
+  const int s = tail->s;
+  const double tm = c.tm;
+  const double L = bt2 - s * tm * a2, sL = s * bt2 - tm * a2;
+  auto h = [&](double alpha, double f) { return s * f - tm * alpha; };
+  double alpha_next = c.m, f_next = c.g_m;
+  std::size_t i = c.j;
+  if (!c.inside) {  // m coincides with point j, which is violated
+    alpha_next = pts[c.j].alpha;
+    f_next = pts[c.j].f;
+    i = c.j - 1;  // j > 0: h_0 = 0 >= sL when not sliding
+  }
+  while (i > 0 && h(pts[i].alpha, pts[i].f) < sL) {
+    alpha_next = pts[i].alpha;
+    f_next = pts[i].f;
+    --i;
+  }
+  const double h_i = h(pts[i].alpha, pts[i].f), h_next = h(alpha_next, f_next);
+  double q = pts[i].alpha;
+  if (h_i > sL && h_i > h_next) q = pts[i].alpha + (h_i - sL) / (h_i - h_next) * (alpha_next - pts[i].alpha);
+  q = std::min(q, a2);
+  tail->keep = i + 1;
+  tail->q = q;
+  const double sigma = (f_next - pts[i].f) / (alpha_next - pts[i].alpha);
+  double T = pts[i].T_before;
+  if (q > pts[i].alpha + c.eps_alpha && q < a2 - c.eps_alpha) {
+    tail->at_q = law.eval(q);
+    tail->has_q_value = true;
+    const NormalLawValue& at_q = tail->at_q;
+    T += c.inv_theta * sigma * (at_q.N - pts[i].law.N) + s * cfg.mu * (tail->N - at_q.N);
+    tail->alpha[tail->count] = q;
+    tail->f[tail->count++] = L + s * tm * q;
+  } else {
+    T += c.inv_theta * (bt2 - pts[i].f) / (a2 - pts[i].alpha) * (tail->N - pts[i].law.N);
+  }
+  tail->alpha[tail->count] = a2;
+  tail->f[tail->count++] = bt2;
+  tail->T = T;
+}
+
 }  // namespace
 
 Tail build_tail(const Breakpoint* pts, std::size_t n, const NormalLaw& law, const MmdConfig& cfg, double a2,
@@ -35,10 +128,8 @@ Tail build_tail(const Breakpoint* pts, std::size_t n, const NormalLaw& law, cons
   Tail tail;
   if (!(a2 > 0.0)) return tail;  // contact loss
   const double tm = cfg.theta * cfg.mu;
-  const double inv_theta = 1.0 / cfg.theta;
   tail.apex = law.eval(a2);
   tail.N = tail.apex.N;
-
   // Total sliding: the trial b̃ lies outside the wedge at α = 0.
   if (std::abs(bt2) >= tm * a2) {
     tail.state = ContactState::Slide;
@@ -51,85 +142,12 @@ Tail build_tail(const Breakpoint* pts, std::size_t n, const NormalLaw& law, cons
     tail.q = 0.0;
     return tail;
   }
-
-  const double a1 = pts[n - 1].alpha, bt1 = pts[n - 1].f;
-  const double m = std::min(a1, a2);
-  const double eps_alpha = cfg.rel_tol * a2;
-  // j: last old point with α_j <= m (the points above m detach).
-  std::size_t j = n - 1;
-  while (j > 0 && pts[j].alpha > m) --j;
-  const bool inside = j + 1 < n && m > pts[j].alpha;
-  const double sigma_j = inside ? slope(pts[j], pts[j + 1]) : 0.0;
-  const double g_m = inside ? pts[j].f + sigma_j * (m - pts[j].alpha) : pts[j].f;
-
+  const Clip c = clip_at(pts, n, cfg, a2);
   const double tol_f = cfg.rel_tol * tm * a2;
-  const double lo_m = bt2 - tm * (a2 - m), hi_m = bt2 + tm * (a2 - m);
-  tail.s = g_m < lo_m - tol_f ? 1 : (g_m > hi_m + tol_f ? -1 : 0);
-
-  if (tail.s == 0) {
-    // Nothing slips: keep the old diagram up to m, then follow the path.
-    tail.state = ContactState::Stick;
-    tail.keep = j + 1;
-    tail.q = m;
-    double T = pts[j].T_before;
-    const double alpha_prev = pts[j].alpha, f_prev = pts[j].f, N_prev = pts[j].law.N;
-    if (a2 > a1) {
-      T += inv_theta * (bt2 - bt1) / (a2 - a1) * (tail.N - pts[n - 1].law.N);
-    } else if (a2 > alpha_prev + eps_alpha) {
-      T += inv_theta * (bt2 - f_prev) / (a2 - alpha_prev) * (tail.N - N_prev);
-    } else {
-      // a2 sits on point j (j >= 1 since a2 > 0): the apex replaces it, snapped onto b̃2.
-      tail.keep = j;
-      const Breakpoint& p = pts[j - 1];
-      T = p.T_before + inv_theta * (bt2 - p.f) / (a2 - p.alpha) * (tail.N - p.law.N);
-    }
-    tail.count = 1;
-    tail.alpha[0] = a2;
-    tail.f[0] = bt2;
-    tail.T = T;
-    return tail;
-  }
-
-  // Partial slip: the active slip line f = L + s·θμ·α. In h = s f − θμ α (never
-  // increasing along the diagram) the violated points are those with h < s L,
-  // always a run at the right end: pop them, then intersect.
-  tail.state = ContactState::Partial;
-  const int s = tail.s;
-  const double L = bt2 - s * tm * a2, sL = s * bt2 - tm * a2;
-  auto h = [&](double alpha, double f) { return s * f - tm * alpha; };
-  double alpha_next = m, f_next = g_m;
-  std::size_t i = j;
-  if (!inside) {  // m coincides with point j, which is violated
-    alpha_next = pts[j].alpha;
-    f_next = pts[j].f;
-    i = j - 1;  // j > 0: h_0 = 0 >= sL when not sliding
-  }
-  while (i > 0 && h(pts[i].alpha, pts[i].f) < sL) {
-    alpha_next = pts[i].alpha;
-    f_next = pts[i].f;
-    --i;
-  }
-  const double h_i = h(pts[i].alpha, pts[i].f), h_next = h(alpha_next, f_next);
-  double q = pts[i].alpha;
-  if (h_i > sL && h_i > h_next) q = pts[i].alpha + (h_i - sL) / (h_i - h_next) * (alpha_next - pts[i].alpha);
-  q = std::min(q, a2);
-  tail.keep = i + 1;
-  tail.q = q;
-  const double sigma = (f_next - pts[i].f) / (alpha_next - pts[i].alpha);
-  double T = pts[i].T_before;
-  if (q > pts[i].alpha + eps_alpha && q < a2 - eps_alpha) {
-    tail.at_q = law.eval(q);
-    tail.has_q_value = true;
-    const NormalLawValue& at_q = tail.at_q;
-    T += inv_theta * sigma * (at_q.N - pts[i].law.N) + s * cfg.mu * (tail.N - at_q.N);
-    tail.alpha[tail.count] = q;
-    tail.f[tail.count++] = L + s * tm * q;
-  } else {
-    T += inv_theta * (bt2 - pts[i].f) / (a2 - pts[i].alpha) * (tail.N - pts[i].law.N);
-  }
-  tail.alpha[tail.count] = a2;
-  tail.f[tail.count++] = bt2;
-  tail.T = T;
+  const double lo_m = bt2 - tm * (a2 - c.m), hi_m = bt2 + tm * (a2 - c.m);
+  tail.s = c.g_m < lo_m - tol_f ? 1 : (c.g_m > hi_m + tol_f ? -1 : 0);
+  if (tail.s == 0) stick_tail(pts, n, c, a2, bt2, &tail);
+  else partial_tail(pts, law, cfg, c, a2, bt2, &tail);
   return tail;
 }
 

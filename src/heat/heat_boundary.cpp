@@ -44,6 +44,35 @@ PetscErrorCode SharedPoints(DM dm, std::vector<bool>* shared) {
   PetscFunctionReturn(0);
 }
 
+/// The owned rows of sink and convective dofs from the per-rank marks (summed over the ranks that share a dof).
+PetscErrorCode CollectEdgeRows(DM dm, Vec sink_local, Vec h_local, HeatBoundary* b) {
+  PetscFunctionBeginUser;
+  Vec sink_global, h_global;
+  PetscCall(DMGetGlobalVector(dm, &sink_global));
+  PetscCall(DMGetGlobalVector(dm, &h_global));
+  PetscCall(VecSet(sink_global, 0.0));
+  PetscCall(VecSet(h_global, 0.0));
+  PetscCall(DMLocalToGlobal(dm, sink_local, ADD_VALUES, sink_global));
+  PetscCall(DMLocalToGlobal(dm, h_local, ADD_VALUES, h_global));
+  PetscInt rstart, n;
+  PetscCall(VecGetOwnershipRange(sink_global, &rstart, nullptr));
+  PetscCall(VecGetLocalSize(sink_global, &n));
+  const PetscScalar *sg, *hg;
+  PetscCall(VecGetArrayRead(sink_global, &sg));
+  PetscCall(VecGetArrayRead(h_global, &hg));
+  for (PetscInt i = 0; i < n; ++i) {
+    if (PetscRealPart(sg[i]) > 0) b->sink_rows.push_back(rstart + i);
+    else if (PetscRealPart(hg[i]) > 0) {  // a corner between a sink and a convective edge is held
+      b->convective_rows.push_back(rstart + i);
+      b->convective_h.push_back(PetscRealPart(hg[i]));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(sink_global, &sg));
+  PetscCall(VecRestoreArrayRead(h_global, &hg));
+  for (Vec* v : {&sink_global, &h_global}) PetscCall(DMRestoreGlobalVector(dm, v));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* o) {
@@ -98,7 +127,7 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
   // Marks go through local vectors and an ADD to the global one: a vertex shared
   // by two ranks gets the contribution of an outer face only one of them holds.
-  Vec sink_local, h_local, sink_global, h_global;
+  Vec sink_local, h_local;
   PetscCall(DMGetLocalVector(dm, &sink_local));
   PetscCall(DMGetLocalVector(dm, &h_local));
   PetscCall(VecSet(sink_local, 0.0));
@@ -132,28 +161,7 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   }
   PetscCall(VecRestoreArray(sink_local, &sink_mark));
   PetscCall(VecRestoreArray(h_local, &hw));
-  PetscCall(DMGetGlobalVector(dm, &sink_global));
-  PetscCall(DMGetGlobalVector(dm, &h_global));
-  PetscCall(VecSet(sink_global, 0.0));
-  PetscCall(VecSet(h_global, 0.0));
-  PetscCall(DMLocalToGlobal(dm, sink_local, ADD_VALUES, sink_global));
-  PetscCall(DMLocalToGlobal(dm, h_local, ADD_VALUES, h_global));
-  PetscInt rstart, n;
-  PetscCall(VecGetOwnershipRange(sink_global, &rstart, nullptr));
-  PetscCall(VecGetLocalSize(sink_global, &n));
-  const PetscScalar *sg, *hg;
-  PetscCall(VecGetArrayRead(sink_global, &sg));
-  PetscCall(VecGetArrayRead(h_global, &hg));
-  for (PetscInt i = 0; i < n; ++i) {
-    if (PetscRealPart(sg[i]) > 0) b->sink_rows.push_back(rstart + i);
-    else if (PetscRealPart(hg[i]) > 0) {  // a corner between a sink and a convective edge is held
-      b->convective_rows.push_back(rstart + i);
-      b->convective_h.push_back(PetscRealPart(hg[i]));
-    }
-  }
-  PetscCall(VecRestoreArrayRead(sink_global, &sg));
-  PetscCall(VecRestoreArrayRead(h_global, &hg));
-  for (Vec* v : {&sink_global, &h_global}) PetscCall(DMRestoreGlobalVector(dm, v));
+  PetscCall(CollectEdgeRows(dm, sink_local, h_local, b));
   for (Vec* v : {&sink_local, &h_local}) PetscCall(DMRestoreLocalVector(dm, v));
   PetscInt global_counts[3];
   PetscCallMPI(MPI_Allreduce(counts, global_counts, 3, MPIU_INT, MPI_SUM, comm));

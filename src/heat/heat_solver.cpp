@@ -61,20 +61,39 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   PetscFunctionBeginUser;
   dm_ = dm;
   material_ = options.material;
-  const HeatMaterial& material = options.material;
-  const bool lumped = options.lumped;
   PetscCall(PetscLogEventRegister("HeatSource", TS_CLASSID, &source_event_));
   PetscCall(space_.Setup(dm, options.degree, 1));
+  PetscCall(AssembleMassAndConductivity(options.lumped));
+  // Edges: the lumped film H on the diagonal of K, G = H (T_ext − T0).
+  PetscCall(BuildHeatBoundary(space_, options.boundary, &boundary_));
+  PetscCall(DMCreateGlobalVector(dm, &theta_));
+  for (Vec* v : {&theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) PetscCall(VecDuplicate(theta_, v));
+  for (Vec v : {theta_, theta_prev_, Q_, G_, H_}) PetscCall(VecSet(v, 0.0));
+  PetscCall(AddConvectiveFilm());
+  PetscCall(VecGetSize(theta_, &global_dofs_));
+  PetscCall(CollectCrackFacets());
+  // Backward Euler while coupled, -heat_substeps fixed steps per coupling interval,
+  // each with its own friction energy. The source jumps at every step and the
+  // layers at the crack are stiff (λΔt ≫ 1): Crank-Nicolson rings there (+27 %
+  // at the crack centre at 0.1 ms with one step per interval, measured), backward
+  // Euler is L-stable and its balance closes exactly (Account). The step is fixed:
+  // the matrix is factored once.
+  PetscCall(CreateTS("heat_", TSBEULER, &coupled_ts_));
+  ts_ = coupled_ts_;
+  PetscFunctionReturn(0);
+}
 
-  // M = ∫ρ c_p φ_a φ_b, K = ∫ k ∇φ_a·∇φ_b.
+PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
+  PetscFunctionBeginUser;
+  // M = ∫ρ c_p φ_a φ_b, K = ∫ k ∇φ_a·∇φ_b (assembled at the end of AddConvectiveFilm).
   PetscSection section;
-  PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(DMCreateMatrix(dm, &M_));
-  PetscCall(DMCreateMatrix(dm, &K_));
+  PetscCall(DMGetLocalSection(dm_, &section));
+  PetscCall(DMCreateMatrix(dm_, &M_));
+  PetscCall(DMCreateMatrix(dm_, &K_));
   const int Nb = space_.nodes_per_cell();
   std::vector<PetscScalar> Me(Nb * Nb), Ke(Nb * Nb);
   fe::CellQuadrature q;
-  const double rc = material.density * material.capacity, k = material.conductivity;
+  const double rc = material_.density * material_.capacity, k = material_.conductivity;
   for (PetscInt c : space_.cells()) {
     PetscCall(space_.Evaluate(c, &q));
     std::fill(Me.begin(), Me.end(), 0.0);
@@ -88,20 +107,20 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
           Ke[a * Nb + b] += q.weight[p] * k * (g[2 * a] * g[2 * b] + g[2 * a + 1] * g[2 * b + 1]);
         }
     }
-    PetscCall(DMPlexMatSetClosure(dm, section, nullptr, M_, c, Me.data(), ADD_VALUES));
-    PetscCall(DMPlexMatSetClosure(dm, section, nullptr, K_, c, Ke.data(), ADD_VALUES));
+    PetscCall(DMPlexMatSetClosure(dm_, section, nullptr, M_, c, Me.data(), ADD_VALUES));
+    PetscCall(DMPlexMatSetClosure(dm_, section, nullptr, K_, c, Ke.data(), ADD_VALUES));
   }
-  // Edges: the lumped film H on the diagonal of K, G = H (T_ext − T0).
-  PetscCall(BuildHeatBoundary(space_, options.boundary, &boundary_));
-  PetscCall(DMCreateGlobalVector(dm, &theta_));
-  for (Vec* v : {&theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) PetscCall(VecDuplicate(theta_, v));
-  for (Vec v : {theta_, theta_prev_, Q_, G_, H_}) PetscCall(VecSet(v, 0.0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::AddConvectiveFilm() {
+  PetscFunctionBeginUser;
   for (std::size_t i = 0; i < boundary_.convective_rows.size(); ++i) {
     const PetscInt row = boundary_.convective_rows[i];
     const double hw = boundary_.convective_h[i];
     PetscCall(MatSetValue(K_, row, row, hw, ADD_VALUES));
     PetscCall(VecSetValue(H_, row, hw, INSERT_VALUES));
-    PetscCall(VecSetValue(G_, row, hw * (boundary_.T_ext - material.T0), INSERT_VALUES));
+    PetscCall(VecSetValue(G_, row, hw * (boundary_.T_ext - material_.T0), INSERT_VALUES));
   }
   for (Mat m : {M_, K_}) {
     PetscCall(MatAssemblyBegin(m, MAT_FINAL_ASSEMBLY));
@@ -114,16 +133,19 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   PetscScalar film;
   PetscCall(VecSum(G_, &film));
   film_total_ = PetscRealPart(film);
-  PetscCall(VecGetSize(theta_, &global_dofs_));
+  PetscFunctionReturn(0);
+}
 
+PetscErrorCode HeatSolver::CollectCrackFacets() {
+  PetscFunctionBeginUser;
   // Crack facets this rank owns (each facet counted once), with their face weights.
   DMLabel cracks;
-  PetscCall(DMGetLabel(dm, mesh::labels::crack, &cracks));
+  PetscCall(DMGetLabel(dm_, mesh::labels::crack, &cracks));
   std::vector<bool> ghost;
-  PetscCall(mesh::GhostPoints(dm, &ghost));
+  PetscCall(mesh::GhostPoints(dm_, &ghost));
   PetscInt chart0, fStart, fEnd;
-  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(DMPlexGetChart(dm_, &chart0, nullptr));
+  PetscCall(DMPlexGetDepthStratum(dm_, 1, &fStart, &fEnd));
   facets_.clear();
   for (PetscInt f = fStart; f < fEnd && cracks; ++f) {
     PetscInt crack;
@@ -134,15 +156,6 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
     PetscCall(space_.FaceNodes(f, &load.local_offsets, &load.weights, &length));
     facets_.push_back(std::move(load));
   }
-
-  // Backward Euler while coupled, -heat_substeps fixed steps per coupling interval,
-  // each with its own friction energy. The source jumps at every step and the
-  // layers at the crack are stiff (λΔt ≫ 1): Crank-Nicolson rings there (+27 %
-  // at the crack centre at 0.1 ms with one step per interval, measured), backward
-  // Euler is L-stable and its balance closes exactly (Account). The step is fixed:
-  // the matrix is factored once.
-  PetscCall(CreateTS("heat_", TSBEULER, &coupled_ts_));
-  ts_ = coupled_ts_;
   PetscFunctionReturn(0);
 }
 

@@ -98,6 +98,25 @@ PetscErrorCode CountCrackTips(DM dm, DMLabel crack, DMLabel tip, const std::vect
   PetscFunctionReturn(0);
 }
 
+/// Per crack: this rank's counts and length summed over the ranks.
+PetscErrorCode SummariseCracks(MPI_Comm comm, const Specimen& specimen, const std::vector<PetscInt>& facets,
+                               const std::vector<PetscInt>& pairs, const std::vector<PetscInt>& tips,
+                               const std::vector<double>& length, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  const std::size_t nc = specimen.cracks.size();
+  s->cracks.assign(nc, CrackSummary{});
+  for (std::size_t i = 0; i < nc; ++i) {
+    CrackSummary& cs = s->cracks[i];
+    cs.name = specimen.cracks[i].name;
+    cs.requested_length = specimen.cracks[i].requested_length;
+    PetscCallMPI(MPI_Allreduce(&facets[i], &cs.facets, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&pairs[i], &cs.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&tips[i], &cs.tips, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&length[i], &cs.length, 1, MPI_DOUBLE, MPI_SUM, comm));
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
@@ -170,16 +189,7 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
   s->cell_type = corners == 4 ? "quad" : "tri";
   PetscCall(CountOwned(dm, 0, &s->vertices));
   PetscCall(SummariseHeatMesh(specimen, s));
-  s->cracks.assign(nc, CrackSummary{});
-  for (std::size_t i = 0; i < nc; ++i) {
-    CrackSummary& cs = s->cracks[i];
-    cs.name = specimen.cracks[i].name;
-    cs.requested_length = specimen.cracks[i].requested_length;
-    PetscCallMPI(MPI_Allreduce(&facets[i], &cs.facets, 1, MPIU_INT, MPI_SUM, comm));
-    PetscCallMPI(MPI_Allreduce(&pairs[i], &cs.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
-    PetscCallMPI(MPI_Allreduce(&tips[i], &cs.tips, 1, MPIU_INT, MPI_SUM, comm));
-    PetscCallMPI(MPI_Allreduce(&length[i], &cs.length, 1, MPI_DOUBLE, MPI_SUM, comm));
-  }
+  PetscCall(SummariseCracks(comm, specimen, facets, pairs, tips, length, s));
   PetscFunctionReturn(0);
 }
 

@@ -117,6 +117,10 @@ class HeatSolver {
   /// J = K + shift M with the sink rows, unless it holds that shift already.
   static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
   PetscErrorCode Account(double h);
+  // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G; the crack facets.
+  PetscErrorCode AssembleMassAndConductivity(bool lumped);
+  PetscErrorCode AddConvectiveFilm();
+  PetscErrorCode CollectCrackFacets();
   PetscErrorCode ScaleTolerance();
 
   DM dm_ = nullptr;
