@@ -40,7 +40,7 @@ PetscErrorCode CrackHeatRecord::Write(MPI_Comm comm, const std::string& path, co
   for (const auto& v : heat.crack_vertices()) vertices.values.insert(vertices.values.end(), v.begin(), v.end());
   vertices.rows = heat.crack_vertices().size();
   vertices.cols = 4;
-  VibrothermCallCpp(PETSC_COMM_SELF, io::WriteH5Tables(path, tables));
+  VibrothermCallIo(PETSC_COMM_SELF, io::WriteH5Tables(path, tables));
   PetscFunctionReturn(0);
 }
 

@@ -27,7 +27,7 @@ PetscErrorCode Recorder::Save(io::Checkpoint& checkpoint) const {
   PetscFunctionBeginUser;
   PetscCheck(!camera_, PETSC_COMM_SELF, PETSC_ERR_SUP, "the IR camera's frames are not checkpointed");
   long long probes = 0, energy = 0, crack = -1;
-  VibrothermCallCpp(PETSC_COMM_SELF, probes = probes_.bytes(); energy = energy_.bytes(); crack = crack_state_.bytes());
+  VibrothermCallIo(PETSC_COMM_SELF, probes = probes_.bytes(); energy = energy_.bytes(); crack = crack_state_.bytes());
   checkpoint.PutShared("recorder/bytes", {static_cast<double>(probes), static_cast<double>(energy),
                                           static_cast<double>(crack), static_cast<double>(outputs_written_)});
   checkpoint.PutShared("recorder/energy_maxima", energy_.maxima());

@@ -47,7 +47,7 @@ void CrackStateLog::Record(double t, const std::vector<interface::CrackCellRecor
 
 PetscErrorCode CrackStateLog::Finish() {
   PetscFunctionBeginUser;
-  if (file_) VibrothermCallCpp(PETSC_COMM_SELF, file_->commit());
+  if (file_) VibrothermCallIo(PETSC_COMM_SELF, file_->commit());
   PetscFunctionReturn(0);
 }
 

@@ -37,7 +37,7 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
 
 PetscErrorCode EnergyLog::Finish() {
   PetscFunctionBeginUser;
-  if (file_) VibrothermCallCpp(PETSC_COMM_SELF, file_->commit());
+  if (file_) VibrothermCallIo(PETSC_COMM_SELF, file_->commit());
   PetscFunctionReturn(0);
 }
 

@@ -241,7 +241,7 @@ PetscErrorCode FieldFile::Finish() {
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  VibrothermCallCpp(PETSC_COMM_SELF, AtomicFile::publish(path_));
+  VibrothermCallIo(PETSC_COMM_SELF, AtomicFile::publish(path_));
   PetscCall(WriteXdmf());
   PetscFunctionReturn(0);
 }

@@ -108,7 +108,7 @@ void PointProbes::WriteTemperature(double t, std::size_t probe, double x, double
 PetscErrorCode PointProbes::Finish() {
   PetscFunctionBeginUser;
   Flush(nullptr);
-  if (file_) VibrothermCallCpp(PETSC_COMM_SELF, file_->commit());
+  if (file_) VibrothermCallIo(PETSC_COMM_SELF, file_->commit());
   PetscCall(VecDestroy(&u_local_));
   PetscCall(VecDestroy(&v_local_));
   PetscFunctionReturn(0);

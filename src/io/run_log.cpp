@@ -61,7 +61,7 @@ PetscErrorCode RunLogClose() {
   PetscFunctionBeginUser;
   Log& log = TheLog();
   if (log.original) PetscVFPrintf = log.original;
-  if (log.file) VibrothermCallCpp(PETSC_COMM_SELF, log.file->commit());
+  if (log.file) VibrothermCallIo(PETSC_COMM_SELF, log.file->commit());
   log.file.reset();
   PetscFunctionReturn(0);
 }

@@ -89,7 +89,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
   char* options = nullptr;
   PetscCall(PetscOptionsGetAll(nullptr, &options));  // collective
   if (rank == 0) {
-    VibrothermCallCpp(PETSC_COMM_SELF, {
+    VibrothermCallIo(PETSC_COMM_SELF, {
       AtomicFile file(path);
       JsonWriter json(file.stream());
       json.begin_object();

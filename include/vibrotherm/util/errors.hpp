@@ -30,3 +30,14 @@ int ExitCode(PetscErrorCode ierr);
       SETERRQ((comm), PETSC_ERR_USER_INPUT, "%s", vibrotherm_exc_.what()); \
     }                                                                      \
   } while (0)
+
+/// The same for a failure while the run writes its results (a rename or write
+/// that fails, a full disk): a runtime failure, exit 1, the whole job ends.
+#define VibrothermCallIo(comm, ...)                                         \
+  do {                                                                      \
+    try {                                                                   \
+      __VA_ARGS__;                                                          \
+    } catch (const std::exception& vibrotherm_exc_) {                       \
+      SETERRQ((comm), PETSC_ERR_FILE_WRITE, "%s", vibrotherm_exc_.what()); \
+    }                                                                       \
+  } while (0)

@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Requirement (issue 16, item 2): a failure during a 2-rank run, found by any rank, ends
+every rank promptly (no rank left waiting in a collective HDF5 call or reduction) with a
+one-line error and exit 1, and leaves no output under a final name that looks complete.
+Failures: the waves blow up (-source_amplitude 1e200: every value overflows); a write
+fails on rank 0 alone at the end (energy.csv cannot be renamed into place: a directory is
+in the way) while rank 1 goes on into the collective close of fields.h5 — before issue 16
+rank 1 waited there forever; the checkpoint cannot be renamed into place.
+
+usage: test_runtime_failure.py VIBROTHERM MPIEXEC"""
+import json, os, subprocess, sys, tempfile, time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks
+
+exe, mpiexec = sys.argv[1:3]
+check = Checks("runtime_failure")
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PAPER = [mpiexec, "-n", "2", "--oversubscribe", exe, "-options_file", os.path.join(ROOT, "options", "paper.opts")]
+PROMPT = 90  # s: far above the seconds these runs need; a hang runs into it
+OUTPUTS = ["probes.csv", "energy.csv", "crack_state.csv", "fields.h5", "crack_heat.h5"]
+
+
+def verdict(label, code, err, out):
+    errors = [l for l in err.splitlines() if l.startswith("vibrotherm: error:")]
+    check(code == 1, "%s: exit %s, expected 1 (%s)" % (label, code, err[-400:]))
+    check(1 <= len(errors) <= 2 and len(set(errors)) == 1, "%s: one error line (one per rank at most): %s" % (label, errors))
+    final = [n for n in OUTPUTS if os.path.exists(os.path.join(out, n))]
+    check(not final, "%s: outputs under final names after a failure: %s" % (label, final))
+    summary = os.path.join(out, "summary.json")
+    check(not os.path.exists(summary) or json.load(open(summary)).get("complete") is not True,
+          "%s: no summary saying complete" % label)
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "blow_up")
+    try:
+        r = subprocess.run(PAPER + ["-final_time", "2e-5", "-source_amplitude", "1e200", "-output_dir", out],
+                           capture_output=True, text=True, timeout=PROMPT)
+        verdict("blow-up", r.returncode, r.stderr, out)
+    except subprocess.TimeoutExpired:
+        check.fail("blow-up: the run hung (no exit within %d s)" % PROMPT)
+
+    for label, blocked, extra in [("energy.csv on rank 0", "energy.csv", ["-output_times", "1e-4"]),
+                                  ("checkpoint", "checkpoint.h5", ["-checkpoint_every_s", "0.2"])]:
+        out = os.path.join(tmp, blocked)
+        p = subprocess.Popen(PAPER + ["-final_time", "2e-4", "-output_dir", out] + extra,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        deadline = time.time() + PROMPT
+        while not os.path.exists(os.path.join(out, "mesh.h5")) and p.poll() is None and time.time() < deadline:
+            time.sleep(0.02)
+        os.makedirs(os.path.join(out, blocked), exist_ok=True)  # the rename onto it fails (on rank 0)
+        try:
+            _, err = p.communicate(timeout=PROMPT)
+            verdict("write failure: " + label, p.returncode, err, out if blocked != "energy.csv" else os.path.join(tmp, "-"))
+            check(blocked in err, "write failure: the error names %s" % blocked)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            check.fail("write failure: %s: the run hung (no exit within %d s)" % (label, PROMPT))
+
+check.finish()
