@@ -116,20 +116,15 @@ with tempfile.TemporaryDirectory() as tmp:
     if code == 0:
         compare_exact(ref, out, "restart on 2 ranks")
 
-    out = os.path.join(tmp, "kill")
-    code, _ = interrupted(out, "kill")
-    check(code != 0, "SIGKILL: the run did not finish")
-    code, _, err = run(2, ["-restart", out])
-    check(code == 0, "restart after SIGKILL: exit 0 (%s)" % err[-500:])
-    if code == 0:
-        compare_exact(ref, out, "restart after SIGKILL")
-
-    out = os.path.join(tmp, "other_ranks")
-    interrupted(out, "usr1")
-    code, _, err = run(1, ["-restart", out])
-    check(code == 0, "restart on 1 rank: exit 0 (%s)" % err[-500:])
-    if code == 0:
-        compare_rounding(ref, out, "restart on 1 rank")
+    for label, how, ranks, compare in [("restart after SIGKILL", "kill", 2, compare_exact),
+                                       ("restart on 1 rank", "usr1", 1, compare_rounding)]:
+        out = os.path.join(tmp, how + str(ranks))
+        code, _ = interrupted(out, how)
+        check(code != 0, "%s: the interrupted run did not finish" % label)
+        code, _, err = run(ranks, ["-restart", out])
+        check(code == 0, "%s: exit 0 (%s)" % (label, err[-500:]))
+        if code == 0:
+            compare(ref, out, label)
 
     # Refused: another option, no checkpoint. One line, exit 2, nothing written.
     out = os.path.join(tmp, "refused")

@@ -20,24 +20,20 @@ int ExitCode(PetscErrorCode ierr);
 
 }  // namespace vibrotherm
 
-/// Runs a statement that may throw std::exception (e.g. contact::InputError)
-/// and turns the exception into a PETSc user-input error on comm.
-#define VibrothermCallCpp(comm, ...)                                       \
-  do {                                                                     \
-    try {                                                                  \
-      __VA_ARGS__;                                                         \
-    } catch (const std::exception& vibrotherm_exc_) {                      \
-      SETERRQ((comm), PETSC_ERR_USER_INPUT, "%s", vibrotherm_exc_.what()); \
-    }                                                                      \
+/// Runs a statement that may throw std::exception and turns the exception into
+/// a PETSc error of class `code` on comm.
+#define VibrothermCallCppAs(comm, code, ...)                \
+  do {                                                      \
+    try {                                                   \
+      __VA_ARGS__;                                          \
+    } catch (const std::exception& vibrotherm_exc_) {       \
+      SETERRQ((comm), (code), "%s", vibrotherm_exc_.what()); \
+    }                                                       \
   } while (0)
 
-/// The same for a failure while the run writes its results (a rename or write
-/// that fails, a full disk): a runtime failure, exit 1, the whole job ends.
-#define VibrothermCallIo(comm, ...)                                         \
-  do {                                                                      \
-    try {                                                                   \
-      __VA_ARGS__;                                                          \
-    } catch (const std::exception& vibrotherm_exc_) {                       \
-      SETERRQ((comm), PETSC_ERR_FILE_WRITE, "%s", vibrotherm_exc_.what()); \
-    }                                                                       \
-  } while (0)
+/// Input that the C++ code refuses (e.g. contact::InputError): a user-input error (exit 2).
+#define VibrothermCallCpp(comm, ...) VibrothermCallCppAs(comm, PETSC_ERR_USER_INPUT, __VA_ARGS__)
+
+/// A failure while the run writes its results (a rename or write that fails, a
+/// full disk): a runtime failure, exit 1, the whole job ends.
+#define VibrothermCallIo(comm, ...) VibrothermCallCppAs(comm, PETSC_ERR_FILE_WRITE, __VA_ARGS__)
