@@ -14,6 +14,7 @@ PetscErrorCode Recorder::Open(const DriverOptions& options, const std::string& d
   PetscFunctionBeginUser;
   options_ = &options;
   summary_ = summary;
+  dir_ = dir;
   crack_ = crack;
   crack_probe_xy_ = crack_probe_xy;
   MPI_Comm comm = PetscObjectComm((PetscObject)probe_space.dm());
@@ -131,12 +132,13 @@ PetscErrorCode Recorder::RecordTemperature(const heat::HeatSolver& heat, bool wa
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Recorder::OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir) {
+PetscErrorCode Recorder::OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir,
+                                       bool resume) {
   PetscFunctionBeginUser;
   PetscCall(field_peak_.Setup(heat.space()));
   heat_views_ = true;
   camera_ = camera;
-  if (camera_) PetscCall(camera_->Open(dir));
+  if (camera_ && !resume) PetscCall(camera_->Open(dir));
   PetscFunctionReturn(0);
 }
 
@@ -192,6 +194,7 @@ PetscErrorCode Recorder::WriteFields(double t, WaveComponent* waves, const HeatC
   }
   ++outputs_written_;
   if (!replaying_) written_times_.push_back(t);
+  if (!replaying_) PetscCall(fields_.Flush());
   while (OutputDue(t)) ++next_output_;
   PetscFunctionReturn(0);
 }

@@ -50,7 +50,9 @@ class Recorder {
   /// the held wave rows with temperatures interpolated from the last call.
   PetscErrorCode RecordTemperature(const heat::HeatSolver& heat, bool waves_running);
   /// The heat field's views: its peak (always) and the IR camera (null: none), which writes into dir. Collective.
-  PetscErrorCode OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir);
+  /// resume: the camera's file is reopened by Restore, not created.
+  PetscErrorCode OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir,
+                               bool resume = false);
   /// After every heat step and at t = 0: the field peak and the camera's pixels. Collective.
   PetscErrorCode OnHeatStep(const heat::HeatSolver& heat);
   /// Where the heat running alone stops next after t: an output time or a camera window boundary (or final).
@@ -90,6 +92,7 @@ class Recorder {
   io::TemperatureBracket bracket_;  ///< probe temperatures at the last two heat times
   io::EnergyRow waves_at_stop_;
   bool replaying_ = false;
+  std::string dir_;
   std::vector<double> written_times_;  ///< time of each field output written  ///< Restore is indexing the outputs written before the checkpoint
   std::size_t next_output_ = 0;
   int outputs_written_ = 0;

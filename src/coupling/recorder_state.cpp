@@ -25,7 +25,6 @@ std::map<int, double> Unflatten(const double* flat, std::size_t n) {
 
 PetscErrorCode Recorder::Save(io::Checkpoint& checkpoint) const {
   PetscFunctionBeginUser;
-  PetscCheck(!camera_, PETSC_COMM_SELF, PETSC_ERR_SUP, "the IR camera's frames are not checkpointed");
   long long probes = 0, energy = 0, crack = -1;
   VibrothermCallIo(PETSC_COMM_SELF, probes = probes_.bytes(); energy = energy_.bytes(); crack = crack_state_.bytes());
   checkpoint.PutShared("recorder/bytes", {static_cast<double>(probes), static_cast<double>(energy),
@@ -47,6 +46,7 @@ PetscErrorCode Recorder::Save(io::Checkpoint& checkpoint) const {
   checkpoint.PutShared("recorder/output_rises", rises);
   const io::FieldPeakSummary& p = field_peak_.peak();
   checkpoint.PutShared("recorder/field_peak", {p.known ? 1.0 : 0.0, p.rise, p.t, p.x, p.y});
+  if (camera_) PetscCall(camera_->Save(checkpoint));
   PetscFunctionReturn(0);
 }
 
@@ -68,6 +68,7 @@ PetscErrorCode Recorder::Restore(const io::Checkpoint& checkpoint, WaveComponent
     summary_->output_temperature_rise.push_back({v[i], Unflatten(&v[i + 2], static_cast<std::size_t>(v[i + 1]))});
   PetscCall(checkpoint.GetShared("recorder/field_peak", &v, 5));
   field_peak_.set_peak({v[0] != 0.0, v[1], v[2], v[3], v[4]});
+  if (camera_) PetscCall(camera_->Restore(checkpoint, dir_));
   PetscCall(checkpoint.GetShared("recorder/written_times", &written_times_));
   if (fields_.open() && checkpoint.same_ranks()) {  // index what the .partial holds already
     replaying_ = true;

@@ -69,7 +69,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   Recorder recorder;
   PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
-  if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir));
+  if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (heat_ && !control.restart) {  // t = 0
     PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));

@@ -59,6 +59,12 @@ void CameraFrames::Open(const std::string& h5_path, const CameraGrid& grid,
   for (std::size_t i = 0; i < grid.rows; ++i) y[i] = grid.y0 + (i + 0.5) * grid.pixel;
   WriteArray("x", x, grid.cols, 1, "m", {});
   WriteArray("y", y, grid.rows, 1, "m", {});
+  Flush();
+}
+
+void CameraFrames::Flush() {
+  // On disk as written: a run killed between two frames leaves a file a restart can reopen.
+  if (file_ >= 0 && H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error(path_ + ": cannot flush the file");
 }
 
 void CameraFrames::WriteArray(const std::string& name, const std::vector<double>& values, std::size_t rows,
@@ -81,6 +87,25 @@ void CameraFrames::WriteArray(const std::string& name, const std::vector<double>
   H5Dclose(dataset);
 }
 
+void CameraFrames::Reopen(const std::string& h5_path, const CameraGrid& grid, int kept,
+                          const std::vector<double>& times) {
+  path_ = h5_path;
+  grid_ = grid;
+  times_ = times;
+  H5E_BEGIN_TRY { file_ = H5Fopen(AtomicFile::partial_name(h5_path).c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }
+  H5E_END_TRY;
+  if (file_ < 0) throw std::runtime_error("-restart: cannot resume '" + AtomicFile::partial_name(h5_path) + "'");
+  group_ = H5Gopen2(file_, "camera", H5P_DEFAULT);
+  if (group_ < 0) throw std::runtime_error(h5_path + ": no group /camera");
+  // Frames the interrupted run wrote after its checkpoint are written again.
+  for (int k = kept;; ++k) {
+    bool found = false;
+    for (const std::string& name : {"frame_" + std::to_string(k), "clean_" + std::to_string(k)})
+      if (H5Lexists(group_, name.c_str(), H5P_DEFAULT) > 0) found = H5Ldelete(group_, name.c_str(), H5P_DEFAULT) >= 0;
+    if (!found) break;
+  }
+}
+
 void CameraFrames::Write(int k, double start, double end, const std::vector<double>& clean,
                          const std::vector<double>& noisy) {
   const double centre = 0.5 * (start + end);
@@ -88,6 +113,7 @@ void CameraFrames::Write(int k, double start, double end, const std::vector<doub
   WriteArray("frame_" + std::to_string(k), noisy, grid_.rows, grid_.cols, "K", when);
   WriteArray("clean_" + std::to_string(k), clean, grid_.rows, grid_.cols, "K", when);
   times_.insert(times_.end(), {centre, start, end});
+  Flush();
 }
 
 void CameraFrames::Finish() {

@@ -155,6 +155,16 @@ PetscErrorCode FieldFile::Index(Grid& g, const Dataset& d, const std::string& na
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FieldFile::Flush() {
+  PetscFunctionBeginUser;
+  if (!viewer_) PetscFunctionReturn(0);
+  hid_t file;
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  PetscCheck(H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0, comm_, PETSC_ERR_FILE_WRITE, "%s: cannot flush the file",
+             path_.c_str());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FieldFile::WriteField(const std::string& grid, const std::string& field, const char* units, Vec global,
                                      int k, double t) {
   PetscFunctionBeginUser;

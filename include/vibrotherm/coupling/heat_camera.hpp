@@ -19,6 +19,7 @@
 #include "vibrotherm/coupling/camera_options.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/io/camera_frames.hpp"
+#include "vibrotherm/io/checkpoint.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 
 namespace vibrotherm::coupling {
@@ -39,6 +40,10 @@ class HeatCamera {
   PetscErrorCode Sample(const heat::HeatSolver& heat);
   /// The next frame-window boundary after t (+inf when none): the free heat TS stops there.
   double NextBoundary(double t) const;
+  /// Checkpoints: the open window's integral, the frames so far, the noise
+  /// generator; and back, reopening dir/camera.h5 where it was (instead of Open). Collective.
+  PetscErrorCode Save(io::Checkpoint& checkpoint) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const std::string& dir);
   /// Closes camera.h5, writes camera.xmf; camera_* of the summary. Collective.
   PetscErrorCode Finish(io::RunSummary* summary);
 

@@ -33,8 +33,15 @@ class CameraFrames {
   ~CameraFrames();
   /// Creates "<path>.partial" with the grid and the group attributes. Throws std::runtime_error naming the path.
   void Open(const std::string& h5_path, const CameraGrid& grid, const std::map<std::string, double>& attributes);
+  /// Restart: reopens the "<path>.partial" an interrupted run left, keeping its
+  /// first `kept` frames (later ones are dropped) and their time rows. Throws naming the path.
+  void Reopen(const std::string& h5_path, const CameraGrid& grid, int kept, const std::vector<double>& times);
+  /// Centre, start and end of every frame written (checkpoints).
+  const std::vector<double>& times() const { return times_; }
   /// Frame k integrated over [start, end]: clean and noisy values, rows × cols row-major.
   void Write(int k, double start, double end, const std::vector<double>& clean, const std::vector<double>& noisy);
+  /// Flushes everything written to disk (after each frame).
+  void Flush();
   /// Writes the time table, closes and renames the .h5, then writes the .xmf.
   void Finish();
   bool open() const { return file_ >= 0; }

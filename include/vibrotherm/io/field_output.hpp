@@ -67,6 +67,8 @@ class FieldFile {
   /// A scalar cell field: one value per owned cell, in the order the grid was added.
   PetscErrorCode WriteCellValues(const std::string& grid, const std::string& field, const char* units,
                                  const std::vector<double>& values, int k, double t);
+  /// Flushes everything written to disk: a run killed later leaves a file a restart can reopen. Collective.
+  PetscErrorCode Flush();
   /// Closes the .h5 and writes the .xmf files. Collective.
   PetscErrorCode Finish();
   bool open() const { return viewer_ != nullptr; }

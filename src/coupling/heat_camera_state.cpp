@@ -1,0 +1,80 @@
+// The IR camera in checkpoints: where it is in its frames, the open window's
+// running integral and the last sample (per pixel, keyed by the pixel index),
+// the noise generator and the peaks so far (rank 0), and camera.h5 reopened
+// where the checkpoint left it.
+#include <sstream>
+
+#include "vibrotherm/coupling/heat_camera.hpp"
+#include "vibrotherm/util/root_task.hpp"
+
+namespace vibrotherm::coupling {
+namespace {
+
+std::vector<long long> OwnedPixels(Vec v) {
+  PetscInt start = 0, end = 0;
+  VecGetOwnershipRange(v, &start, &end);
+  std::vector<long long> keys;
+  for (PetscInt i = start; i < end; ++i) keys.push_back(i);
+  return keys;
+}
+
+std::vector<double> Values(Vec v) {
+  const PetscScalar* a;
+  PetscInt n;
+  VecGetLocalSize(v, &n);
+  VecGetArrayRead(v, &a);
+  std::vector<double> values(a, a + n);
+  VecRestoreArrayRead(v, &a);
+  return values;
+}
+
+PetscErrorCode SetValues(Vec v, const std::vector<double>& values) {
+  PetscFunctionBeginUser;
+  PetscScalar* a;
+  PetscCall(VecGetArray(v, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(v, &a));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode HeatCamera::Save(io::Checkpoint& checkpoint) const {
+  PetscFunctionBeginUser;
+  checkpoint.PutShared("camera/clock", {static_cast<double>(frame_), t_prev_});
+  const std::vector<long long> keys = OwnedPixels(previous_);
+  checkpoint.PutKeyed("camera/previous", keys, 1, Values(previous_));
+  checkpoint.PutKeyed("camera/integral", keys, 1, Values(integral_));
+  // Rank 0 holds these: the checkpoint keeps rank 0's copy of shared items.
+  std::ostringstream noise;
+  noise << random_;
+  checkpoint.PutText("camera/noise", noise.str());
+  checkpoint.PutShared("camera/peak_clean", peak_clean_);
+  checkpoint.PutShared("camera/peak_noisy", peak_noisy_);
+  checkpoint.PutShared("camera/times", file_.times());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatCamera::Restore(const io::Checkpoint& checkpoint, const std::string& dir) {
+  PetscFunctionBeginUser;
+  std::vector<double> clock, values, times;
+  PetscCall(checkpoint.GetShared("camera/clock", &clock, 2));
+  frame_ = static_cast<PetscInt>(clock[0]);
+  t_prev_ = clock[1];
+  const std::vector<long long> keys = OwnedPixels(previous_);
+  PetscCall(checkpoint.GetKeyed("camera/previous", keys, 1, &values));
+  PetscCall(SetValues(previous_, values));
+  PetscCall(checkpoint.GetKeyed("camera/integral", keys, 1, &values));
+  PetscCall(SetValues(integral_, values));
+  std::string noise;
+  PetscCall(checkpoint.GetText("camera/noise", &noise));
+  std::istringstream(noise) >> random_;
+  PetscCall(checkpoint.GetShared("camera/peak_clean", &peak_clean_));
+  PetscCall(checkpoint.GetShared("camera/peak_noisy", &peak_noisy_));
+  PetscCall(checkpoint.GetShared("camera/times", &times));
+  if (frames_ > 0)
+    PetscCall(RunOnRoot(comm_, [&] { file_.Reopen(dir + "/camera.h5", grid_, static_cast<int>(frame_), times); }));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling
