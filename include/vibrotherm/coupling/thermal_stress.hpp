@@ -31,7 +31,7 @@ class ThermalStress final : public wave::BodyForce {
   ThermalStress& operator=(const ThermalStress&) = delete;
   ~ThermalStress() override;
 
-  /// Builds S and attaches itself to the waves (their step includes S). transfer: B
+  /// Attaches itself to the waves (their step includes S). transfer: B
   /// (referenced); capacity_inverse: C⁻¹ (heat vector, referenced); theta: the rise now. Collective.
   PetscErrorCode Setup(wave::WaveSolver* waves, Mat transfer, Vec capacity_inverse, Vec theta, double T0);
   /// After a heat step to t with the rise theta. Collective.
@@ -47,8 +47,9 @@ class ThermalStress final : public wave::BodyForce {
   /// phi = θ − C⁻¹B u, u the waves' displacement now.
   PetscErrorCode Phi(Vec theta, Vec phi) const;
   wave::WaveSolver* waves_ = nullptr;
-  Mat B_ = nullptr, minus_S_ = nullptr;
-  Vec c_inv_ = nullptr, phi_ = nullptr, phi_new_ = nullptr;  ///< heat dofs
+  Mat B_ = nullptr;
+  Vec c_inv_ = nullptr, weight_ = nullptr;          ///< C⁻¹ and −C⁻¹/T0 (heat dofs)
+  Vec heat_work_ = nullptr, phi_ = nullptr, phi_new_ = nullptr;  ///< heat dofs
   Vec g_ = nullptr, g_rate_ = nullptr;                       ///< wave dofs
   double T0_ = 0.0, t_n_ = 0.0;
   PetscLogEvent force_event_ = 0;
