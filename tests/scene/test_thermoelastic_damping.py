@@ -29,13 +29,13 @@ at the adiabatic frequency, sqrt(1 + Delta) = 1.051 x the isothermal one; 2 rank
 Breaking the sign of the thermal force makes the waves grow and the fit fail (checked by hand).
 
 usage: test_thermoelastic_damping.py VIBROTHERM MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import csv, json, os, sys, tempfile
 
 import numpy as np
 from scipy.optimize import curve_fit
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, run_scene
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("thermoelastic_damping")
@@ -64,10 +64,7 @@ def exact_root(conductivity, expansion=alpha_L):
 
 def run(tmp, name, extra, ranks=1):
     out = os.path.join(tmp, name)
-    cmd = ([mpiexec, "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []) + [exe] + scene + extra + ["-output_dir", out]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    check(r.returncode == 0, "%s: %s" % (name, r.stderr[-1500:]))
-    if r.returncode:
+    if not run_scene(check, exe, scene + extra, out, mpiexec, ranks):
         return None
     probes = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
     t = np.array([float(p["t"]) for p in probes])
