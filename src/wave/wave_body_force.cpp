@@ -15,9 +15,10 @@ PetscErrorCode WaveSolver::SetBodyForce(BodyForce* force) {
   PetscCheck(steps_ == 0, comm, PETSC_ERR_ORDER, "%s: a body force is attached before the first wave step",
              force->name());
   if (!body_f_)
-    for (Vec* v : {&body_f_, &body_u_, &body_a_}) PetscCall(VecDuplicate(M_, v));
+    for (Vec* v : {&body_f_, &body_u_, &body_a_, &body_f_end_}) PetscCall(VecDuplicate(M_, v));
   PetscCall(VecSet(body_f_, 0.0));
   PetscCall(VecCopy(u_, body_u_));
+  PetscCall(force->Force(time_, u_, body_f_end_));
   double omega2;
   PetscCall(force->MaxFrequencySquared(M_, &omega2));
   PetscCall(step_.IncludeBulkStiffness(omega2, force->name()));
@@ -33,22 +34,39 @@ PetscErrorCode WaveSolver::AddBodyForce(double t, Vec u, Vec a) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::AccountBodyWork(Vec u) {
+/// Σ f_i (u_i − before_i) over this rank's dofs (f: weight × a + (1 − weight) × b).
+static PetscErrorCode LocalWork(Vec a, Vec b, double weight, Vec u, Vec before, double* work) {
   PetscFunctionBeginUser;
-  // The last force evaluated (velocity Verlet: the kick's, at the midpoint) times
-  // the step's displacement: the work the kick did, to rounding. Local sums only.
-  const PetscScalar *f, *now, *before;
+  const PetscScalar *fa, *fb, *now, *was;
   PetscInt n;
   PetscCall(VecGetLocalSize(u, &n));
-  PetscCall(VecGetArrayRead(body_f_, &f));
+  PetscCall(VecGetArrayRead(a, &fa));
+  PetscCall(VecGetArrayRead(b, &fb));
   PetscCall(VecGetArrayRead(u, &now));
-  PetscCall(VecGetArrayRead(body_u_, &before));
-  double work = 0.0;
-  for (PetscInt i = 0; i < n; ++i) work += PetscRealPart(f[i] * (now[i] - before[i]));
-  PetscCall(VecRestoreArrayRead(body_u_, &before));
+  PetscCall(VecGetArrayRead(before, &was));
+  *work = 0.0;
+  for (PetscInt i = 0; i < n; ++i) *work += PetscRealPart((weight * fa[i] + (1.0 - weight) * fb[i]) * (now[i] - was[i]));
+  PetscCall(VecRestoreArrayRead(before, &was));
   PetscCall(VecRestoreArrayRead(u, &now));
-  PetscCall(VecRestoreArrayRead(body_f_, &f));
-  body_work_ += work;
+  PetscCall(VecRestoreArrayRead(b, &fb));
+  PetscCall(VecRestoreArrayRead(a, &fa));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::AccountBodyWork(double t, Vec u) {
+  PetscFunctionBeginUser;
+  // Velocity Verlet: the kick's force (the last evaluated, at the midpoint) times the
+  // step's displacement is the work the kick did, to rounding. Other types: the
+  // trapezoidal rule between the forces at the step's ends (to their order).
+  double work;
+  if (velocity_verlet_) {
+    PetscCall(LocalWork(body_f_, body_f_, 1.0, u, body_u_, &work));
+  } else {
+    PetscCall(body_->Force(t, u, body_a_));
+    PetscCall(LocalWork(body_a_, body_f_end_, 0.5, u, body_u_, &work));
+    PetscCall(VecCopy(body_a_, body_f_end_));
+  }
+  body_work_ += work;  // local sums only: Energy() reduces
   PetscCall(VecCopy(u, body_u_));
   PetscFunctionReturn(0);
 }

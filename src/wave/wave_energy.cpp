@@ -14,7 +14,7 @@ PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   // (Energy() sums the ranks' accounts).
   Vec u = nullptr, v = nullptr;
   PetscCall(GetFields(&u, &v));
-  if (body_) PetscCall(AccountBodyWork(u));  // before any end-state evaluation replaces the kick's force
+  if (body_) PetscCall(AccountBodyWork(t, u));  // before any end-state evaluation replaces the kick's force
   const bool end_state_forces =
       !reaction_from_kick_ && std::any_of(terms_.begin(), terms_.end(),
                                           [](const auto& term) { return term->needs_end_state_forces(); });

@@ -4,7 +4,8 @@
 // solver adds M⁻¹ f to every acceleration (before the boundary terms, so the
 // supports' reactions include it), includes a bound of M⁻¹S in its stable step,
 // and accounts the force's work f·Δu per step: exact for velocity Verlet, whose
-// kick applies f at the step's midpoint and whose drift moves u by h v̄.
+// kick applies f at the step's midpoint and whose drift moves u by h v̄ (other
+// explicit types: the trapezoidal rule, to their order).
 #pragma once
 
 #include <petscvec.h>

@@ -141,7 +141,7 @@ class WaveSolver {
   PetscErrorCode Forces(double t, Vec u, Vec v, Vec f) const;
   // Body force (wave_body_force.cpp): a += M⁻¹ f(t, u); its work f·Δu per step.
   PetscErrorCode AddBodyForce(double t, Vec u, Vec a);
-  PetscErrorCode AccountBodyWork(Vec u);
+  PetscErrorCode AccountBodyWork(double t, Vec u);
   // Energy accounting (wave_energy.cpp).
   PetscErrorCode AccountStep(double t, double h);
   /// −(dt²/8) vᵀKv: velocity Verlet's integrator term at the current step.
@@ -169,6 +169,7 @@ class WaveSolver {
   WaveInterface* interface_ = nullptr;
   BodyForce* body_ = nullptr;
   Vec body_f_ = nullptr, body_u_ = nullptr, body_a_ = nullptr;  ///< last force (the kick's), u after the last step, work
+  Vec body_f_end_ = nullptr;  ///< the force at the last step's end (types other than velocity Verlet)
   double body_work_ = 0.0;  ///< this rank's share of the body force's work so far
   PetscInt steps_ = 0, global_dofs_ = 0;
   BoundaryEnergy accounted_;         ///< this rank's radiated energy and source work so far
