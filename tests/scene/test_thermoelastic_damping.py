@@ -96,9 +96,9 @@ def energy_decay(result, omega):
     t = np.array([float(e["t"]) for e in rows])
     mech = np.array([float(e["kinetic"]) + float(e["strain"]) for e in rows])
     half = np.pi / omega
-    span = np.floor((t[-1] - t_free) / half) * half
-    sel = (t >= t_free) & (t <= t_free + span + 1e-12)
-    return -np.polyfit(t[sel], np.log(mech[sel]), 1)[0] / 2
+    span = np.floor((t[-1] - t_free) / half) * half if np.isfinite(omega) else 0.0
+    sel = (t >= t_free) & (t <= t_free + span + 1e-12) & (mech > 0)
+    return -np.polyfit(t[sel], np.log(mech[sel]), 1)[0] / 2 if sel.sum() > 2 else np.nan  # nan fails
 
 
 s = exact_root(kappa)
