@@ -14,7 +14,7 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscFunctionBeginUser;
   PetscBool final_set = PETSC_FALSE, couple_set = PETSC_FALSE;
   PetscInt physics = static_cast<PetscInt>(o->physics), heat = static_cast<PetscInt>(o->heat);
-  PetscInt thermoelastic = o->thermoelastic ? 1 : 0;
+  PetscInt thermoelastic = static_cast<PetscInt>(o->thermoelastic);
   PetscOptionsBegin(comm, nullptr, "Run control and recording", nullptr);
   PetscCall(OptionsChoice(PetscOptionsObject, "-physics",
                           "Physics to run: all (waves, contact, heat as the scene needs), wave, heat",
@@ -22,8 +22,9 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscCall(OptionsChoice(PetscOptionsObject, "-heat", "Heat solver: auto (when friction can dissipate), on, off",
                           {"auto", "on", "off"}, &heat, nullptr));
   PetscCall(OptionsChoice(PetscOptionsObject, "-thermoelastic",
-                          "Thermoelastic heating of the waves, -T0 beta tr(eps_dot) (one_way: waves -> heat)",
-                          {"off", "one_way"}, &thermoelastic, nullptr));
+                          "Thermoelastic coupling: heating of the waves -T0 beta tr(eps_dot) (one_way: waves -> heat); "
+                          "two_way: also the thermal stress -beta theta I on the waves (thermoelastic damping)",
+                          {"off", "one_way", "two_way"}, &thermoelastic, nullptr));
   PetscCall(PetscOptionsReal("-heat_crack_power", "-physics heat: power per unit crack area on every crack [W/m^2]",
                              nullptr, o->heat_crack_power, &o->heat_crack_power, nullptr));
   PetscCall(PetscOptionsReal("-final_time", "Simulated time [s] (default: the source duration)", nullptr,
@@ -61,7 +62,7 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscOptionsEnd();
   o->physics = static_cast<PhysicsChoice>(physics);
   o->heat = static_cast<HeatChoice>(heat);
-  o->thermoelastic = thermoelastic == 1;
+  o->thermoelastic = static_cast<ThermoelasticChoice>(thermoelastic);
   // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
   PetscCheck(o->probe_points.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "-probe_points needs x,y pairs, got %zu numbers", o->probe_points.size());

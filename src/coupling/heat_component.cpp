@@ -1,11 +1,14 @@
 #include "vibrotherm/coupling/heat_component.hpp"
 
+#include "vibrotherm/coupling/thermal_stress.hpp"
 #include "vibrotherm/coupling/thermoelastic_source.hpp"
+#include "vibrotherm/coupling/thermoelastic_transfer.hpp"
 #include "vibrotherm/mesh/crack_line.hpp"
 #include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
 
+HeatComponent::HeatComponent() = default;
 HeatComponent::~HeatComponent() { (void)VecDestroy(&load_); }
 
 PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
@@ -26,12 +29,11 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), ncracks));
     sources_.push_back(std::move(friction));
   }
-  if (waves && scene.run.thermoelastic) {
-    const heat::HeatMaterial& m = scene.heat.material;
-    const double beta = (3.0 * scene.material.lambda() + 2.0 * scene.material.shear_modulus()) * m.expansion;
-    auto thermoelastic = std::make_unique<ThermoelasticSource>();
-    PetscCall(thermoelastic->Setup(waves->solver(), solver_.space(), m.T0 * beta));
-    sources_.push_back(std::move(thermoelastic));
+  if (waves && scene.run.thermoelastic != ThermoelasticChoice::Off) {
+    PetscCall(SetupThermoelastic(scene, waves));
+    // two_way: the thermal stress's stiffness may have shortened the wave step set up before.
+    summary->derived["wave_dt"] = waves->solver().dt();
+    summary->derived["wave_stable_dt"] = waves->solver().stable_dt();
   }
   PetscCall(DMCreateGlobalVector(specimen.heat, &load_));
   for (double s : scene.run.crack_probes) {
@@ -47,6 +49,26 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode HeatComponent::SetupThermoelastic(const Scene& scene, WaveComponent* waves) {
+  PetscFunctionBeginUser;
+  const heat::HeatMaterial& m = scene.heat.material;
+  const double beta = (3.0 * scene.material.lambda() + 2.0 * scene.material.shear_modulus()) * m.expansion;
+  Mat B;
+  PetscCall(AssembleThermoelasticTransfer(waves->solver().space(), solver_.space(), m.T0 * beta, &B));
+  auto heating = std::make_unique<ThermoelasticSource>();
+  PetscCall(heating->Setup(waves->solver(), B));
+  sources_.push_back(std::move(heating));
+  if (scene.run.thermoelastic == ThermoelasticChoice::TwoWay) {
+    Vec c_inv;
+    PetscCall(solver_.LumpedCapacityInverse(&c_inv));
+    thermal_stress_ = std::make_unique<ThermalStress>();
+    PetscCall(thermal_stress_->Setup(&waves->solver(), B, c_inv, solver_.rise(), m.T0));
+    PetscCall(VecDestroy(&c_inv));
+  }
+  PetscCall(MatDestroy(&B));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode HeatComponent::StepTo(double t) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
@@ -59,12 +81,15 @@ PetscErrorCode HeatComponent::StepTo(double t) {
     PetscCall(solver_.SetSourceLoad(load_));
   }
   PetscCall(solver_.AdvanceInSteps(t, 1));
+  if (thermal_stress_) PetscCall(thermal_stress_->Update(solver_.rise(), t));
   seconds_ += MPI_Wtime() - t0;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode HeatComponent::StopSources(const std::string& dir) {
   PetscFunctionBeginUser;
+  if (thermal_stress_) PetscCall(thermal_stress_->Detach());
+  thermal_stress_.reset();
   if (sources_.empty()) PetscFunctionReturn(0);
   for (auto& source : sources_) PetscCall(source->Finish(dir));
   sources_.clear();

@@ -29,7 +29,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
     waves_ = std::make_unique<WaveComponent>();
     PetscCall(waves_->Setup(specimen, scene, summary));
   }
-  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) || run.thermoelastic);
+  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) || run.thermoelastic != ThermoelasticChoice::Off);
   const bool heat_needed = run.physics == PhysicsChoice::Heat ||
                            (run.physics == PhysicsChoice::All &&
                             (run.heat == HeatChoice::On || (run.heat == HeatChoice::Auto && can_heat)));
@@ -196,6 +196,7 @@ PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& la
   recorder.FlushProbes();
   recorder.StopWaves(last);
   summary->wave_energy_left = mechanical_left_;
+  summary->work_thermal = last.work_thermal;
   if (solver.time() < scene_->final_time * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "Waves quiet at t = %.6g s: wave solver stopped%s\n", solver.time(),
                           heat_ ? ", heat continues alone" : ""));

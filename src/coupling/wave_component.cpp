@@ -112,6 +112,7 @@ PetscErrorCode WaveEnergyRow(const wave::WaveSolver& solver, io::EnergyRow* row)
   row->integrator_correction = e.integrator;
   row->interface_stored = e.interface_stored;
   row->dissipated = e.dissipated;
+  row->work_thermal = e.work_body;  // the only body force: the two-way thermal stress
   PetscFunctionReturn(0);
 }
 

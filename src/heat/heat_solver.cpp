@@ -445,6 +445,20 @@ PetscErrorCode HeatSolver::HeatContent(double* content) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode HeatSolver::LumpedCapacityInverse(Vec* inverse) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(theta_, inverse));
+  PetscCall(MatGetRowSum(M_, *inverse));
+  PetscCall(VecReciprocal(*inverse));
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(*inverse, &rstart, nullptr));
+  PetscScalar* c;
+  PetscCall(VecGetArray(*inverse, &c));
+  for (PetscInt row : boundary_.sink_rows) c[row - rstart] = 0.0;
+  PetscCall(VecRestoreArray(*inverse, &c));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode HeatSolver::Temperature(Vec* T) const {
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(theta_, T));

@@ -69,6 +69,7 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
   static const std::pair<const char*, const char*> units[] = {
       {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", "J/m"},
       {"heat_deposited", "J/m"}, {"heat_content", "J/m"}, {"heat_boundary_loss", "J/m"}, {"wave_energy_left", "J/m"},
+      {"work_thermal", "J/m"},
       {"probe_max_temperature_rise", "K"}, {"output_temperature_rise", "K (t in s)"}, {"max_budget_error", "1"},
       {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
       {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},
@@ -105,7 +106,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("steps_heat_free", s.steps_heat_free);
       json.value("wall_time_s", s.wall_time_s).value("max_budget_error", s.max_budget_error);
       json.value("wave_dt_reductions", s.wave_dt_reductions);
-      json.value("wave_energy_left", s.wave_energy_left);
+      json.value("wave_energy_left", s.wave_energy_left).value("work_thermal", s.work_thermal);
       json.value("dissipated_energy", s.dissipated_energy).value("max_friction_excess", s.max_friction_excess);
       json.begin_object("physics_time");
       for (const auto& [name, span] : s.physics_time) {

@@ -37,8 +37,21 @@ PetscErrorCode StepControl::Setup(MPI_Comm comm, double omega_max, double omega_
 }
 
 void StepControl::IncludeContact(double omega2) {
+  contact_omega2_ = omega2;
   if (implicit() || fixed_dt_ > 0.0) return;
   dt_ = std::min(dt_, RoundDown(cfl_ * Limit(omega2)));
+}
+
+PetscErrorCode StepControl::IncludeBulkStiffness(double omega2, const char* what) {
+  PetscFunctionBeginUser;
+  omega_max_ = std::sqrt(omega_max_ * omega_max_ + omega2);
+  if (implicit()) PetscFunctionReturn(0);
+  stable_dt_ = Limit(contact_omega2_);
+  PetscCheck(fixed_dt_ <= 0.0 || fixed_dt_ <= stable_dt_, comm_, PETSC_ERR_USER_INPUT,
+             "-wave_dt %g s exceeds the stability limit %g s with %s; use -wave_dt <= %g or -wave_cfl", fixed_dt_,
+             stable_dt_, what, stable_dt_);
+  if (fixed_dt_ <= 0.0) dt_ = std::min(dt_, RoundDown(cfl_ * stable_dt_));
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode StepControl::Check(double omega2, double time, PetscInt steps, bool* changed) {

@@ -1,6 +1,7 @@
 // The wave solver's energy accounting: per step, what the boundary terms
 // exchange (radiated by dashpots, worked by the source); on request, the
-// kinetic and strain energy and velocity Verlet's integrator term.
+// kinetic and strain energy and velocity Verlet's integrator term; the work
+// of a body force (wave_body_force.cpp).
 #include <algorithm>
 
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -13,6 +14,7 @@ PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   // (Energy() sums the ranks' accounts).
   Vec u = nullptr, v = nullptr;
   PetscCall(GetFields(&u, &v));
+  if (body_) PetscCall(AccountBodyWork(t, u));  // before any end-state evaluation replaces the kick's force
   const bool end_state_forces =
       !reaction_from_kick_ && std::any_of(terms_.begin(), terms_.end(),
                                           [](const auto& term) { return term->needs_end_state_forces(); });
@@ -67,10 +69,11 @@ PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscCall(VecDestroy(&Au));
   PetscCall(VecDestroy(&Mu));
   PetscCall(RestoreFields(&u, &v));
-  double local[2] = {accounted_.radiated, accounted_.work_source}, global[2];
-  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  double local[3] = {accounted_.radiated, accounted_.work_source, body_work_}, global[3];
+  PetscCallMPI(MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
   e->radiated = global[0];
   e->work_source = global[1];
+  e->work_body = global[2];
   e->kinetic = 0.5 * PetscRealPart(kinetic);
   e->strain = -0.5 * PetscRealPart(strain);
   PetscCall(IntegratorTerm(step_.dt(), &e->integrator));

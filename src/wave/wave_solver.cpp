@@ -39,7 +39,7 @@ WaveSolver::~WaveSolver() {
   if (u_view_) (void)VecRestoreSubVector(X_, is_u_, &u_view_);
   if (v_view_) (void)VecRestoreSubVector(X_, is_v_, &v_view_);
   (void)MatDestroy(&J_);
-  for (Vec* v : {&u_, &v_, &X_, &force_, &M_, &Minv_}) (void)VecDestroy(v);
+  for (Vec* v : {&u_, &v_, &X_, &force_, &M_, &Minv_, &body_f_, &body_u_, &body_a_, &body_f_end_}) (void)VecDestroy(v);
   (void)ISDestroy(&is_u_);
   (void)ISDestroy(&is_v_);
   (void)MatDestroy(&K_);
@@ -159,6 +159,7 @@ PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double ki
   PetscFunctionBeginUser;
   PetscCall(MatMult(A_, u, a));  // −M⁻¹K u
   if (interface_) PetscCall(interface_->AddAcceleration(u, a));
+  if (body_) PetscCall(AddBodyForce(t, u, a));
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);
   state.kick_dt = kick_dt;

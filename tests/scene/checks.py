@@ -1,4 +1,5 @@
-"""Shared by the scene tests: count checks, report failures, print the closing line."""
+"""Shared by the scene tests: count checks, report failures, print the closing line; run a scene."""
+import subprocess
 import sys
 
 
@@ -18,3 +19,12 @@ class Checks:
     def finish(self):
         print("%s: %d passed, %d failed" % (self.name, self.count - len(self.failures), len(self.failures)))
         sys.exit(1 if self.failures else 0)
+
+
+def run_scene(check, exe, args, out, mpiexec=None, ranks=1):
+    """Runs vibrotherm with args into out (through mpiexec on `ranks` ranks when > 1); a
+    failed run is a failed check naming out. True when it ran."""
+    cmd = ([mpiexec, "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []) + [exe] + args + ["-output_dir", out]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    check(r.returncode == 0, "%s: %s" % (out, r.stderr[-1500:]))
+    return r.returncode == 0

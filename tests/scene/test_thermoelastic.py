@@ -8,10 +8,10 @@ temperatures); a plane S wave (tr ε = 0) heats by less than 0.5 % of the P swin
 equal serial; the heat balance closes and energy.csv splits the heat by source.
 
 usage: test_thermoelastic.py VIBROTHERM MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import csv, json, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, run_scene
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("thermoelastic")
@@ -27,10 +27,7 @@ s_wave = ["-source_component", "tangential", "-edge_left", "antisymmetric", "-ed
 
 def run(tmp, name, extra, ranks=1):
     out = os.path.join(tmp, name)
-    cmd = ([mpiexec, "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []) + [exe] + box + extra + ["-output_dir", out]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    check(r.returncode == 0, "%s: %s" % (name, r.stderr[-1500:]))
-    if r.returncode:
+    if not run_scene(check, exe, box + extra, out, mpiexec, ranks):
         return None
     by_time = {}
     for row in csv.DictReader(open(os.path.join(out, "probes.csv"))):

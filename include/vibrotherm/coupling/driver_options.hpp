@@ -10,11 +10,14 @@ namespace vibrotherm::coupling {
 
 enum class PhysicsChoice { All, Wave, Heat };  ///< -physics all|wave|heat
 enum class HeatChoice { Auto, On, Off };       ///< -heat auto|on|off
+/// -thermoelastic off|one_way|two_way: one_way heats from tr(ε̇) of the waves; two_way also
+/// puts the thermal stress −βθI back into the wave equation (thermoelastic damping).
+enum class ThermoelasticChoice { Off, OneWay, TwoWay };
 
 struct DriverOptions {
   PhysicsChoice physics = PhysicsChoice::All;
   HeatChoice heat = HeatChoice::Auto;  ///< auto: only when the crack can dissipate
-  bool thermoelastic = false;          ///< -thermoelastic off|one_way: heat from tr(ε̇) of the waves
+  ThermoelasticChoice thermoelastic = ThermoelasticChoice::Off;  ///< -thermoelastic off|one_way|two_way
   double heat_crack_power = 0.0;      ///< -heat_crack_power [W/m²] (-physics heat)
   double final_time = -1.0;           ///< -final_time [s] (default: the source duration)
   double couple_dt = -1.0;            ///< -couple_dt [s] (default: 1/8 of the source period)

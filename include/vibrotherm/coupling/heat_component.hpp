@@ -19,9 +19,11 @@
 
 namespace vibrotherm::coupling {
 
+class ThermalStress;
+
 class HeatComponent {
  public:
-  HeatComponent() = default;
+  HeatComponent();
   HeatComponent(const HeatComponent&) = delete;
   HeatComponent& operator=(const HeatComponent&) = delete;
   ~HeatComponent();
@@ -33,9 +35,11 @@ class HeatComponent {
                        io::RunSummary* summary);
   heat::HeatSolver& solver() { return solver_; }
   const heat::HeatSolver& solver() const { return solver_; }
-  /// One heat step to t, loaded with what every source deposited since the last step.
+  /// One heat step to t, loaded with what every source deposited since the last step
+  /// (two_way: then the thermal stress on the waves follows the new temperatures).
   PetscErrorCode StepTo(double t);
-  /// The sources' physics stopped: they write their records into dir and go.
+  /// The sources' physics stopped: they write their records into dir and go (and
+  /// the thermal stress leaves the waves).
   PetscErrorCode StopSources(const std::string& dir);
   /// Points of the crack probes (on the heat mesh's crack lines).
   const std::vector<double>& crack_probe_xy() const { return crack_probe_xy_; }
@@ -51,8 +55,11 @@ class HeatComponent {
   void add_seconds(double s) { seconds_ += s; }
 
  private:
+  /// -thermoelastic: the heating (one_way, two_way) and the thermal stress on the waves (two_way).
+  PetscErrorCode SetupThermoelastic(const Scene& scene, WaveComponent* waves);
   heat::HeatSolver solver_;
   std::vector<std::unique_ptr<HeatSource>> sources_;
+  std::unique_ptr<ThermalStress> thermal_stress_;  ///< -thermoelastic two_way: θ back on the waves
   Vec load_ = nullptr;
   std::vector<double> crack_probe_xy_;
   std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go

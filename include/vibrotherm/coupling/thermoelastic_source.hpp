@@ -4,9 +4,8 @@
 // strain trace over the step (it telescopes: the heat deposited by time t is
 // −T0 β (tr ε(t) − tr ε(0)) however the steps fall). In space, the load
 //   Q_h = ∫ ψ_h (−T0 β ∇·Δu) dx / Δt
-// is integrated over the heat mesh's cells (its quadrature points located in
-// the wave mesh): a matrix B (heat dofs × wave dofs) built once, then
-// Q = B Δu / Δt, one MatMult per heat step.
+// is integrated over the heat mesh's cells: the matrix B of
+// thermoelastic_transfer.hpp, built once, then Q = B Δu / Δt, one MatMult per heat step.
 #pragma once
 
 #include <petscmat.h>
@@ -14,7 +13,6 @@
 #include <string>
 
 #include "vibrotherm/coupling/heat_sources.hpp"
-#include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::coupling {
@@ -26,8 +24,8 @@ class ThermoelasticSource final : public HeatSource {
   ThermoelasticSource& operator=(const ThermoelasticSource&) = delete;
   ~ThermoelasticSource() override;
 
-  /// beta_T0 = T0 β [Pa]. Collective over both meshes.
-  PetscErrorCode Setup(const wave::WaveSolver& waves, const fe::LagrangeSpace& heat_space, double beta_T0);
+  /// transfer: B (thermoelastic_transfer.hpp; referenced). Collective.
+  PetscErrorCode Setup(const wave::WaveSolver& waves, Mat transfer);
   PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
   PetscErrorCode Finish(const std::string& dir) override;
   double deposited() const override { return deposited_; }
@@ -36,7 +34,6 @@ class ThermoelasticSource final : public HeatSource {
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
 
  private:
-  PetscErrorCode Assemble(const fe::LagrangeSpace& wave_space, const fe::LagrangeSpace& heat_space, double beta_T0);
   const wave::WaveSolver* waves_ = nullptr;
   Mat B_ = nullptr;
   Vec u_prev_ = nullptr, work_ = nullptr;

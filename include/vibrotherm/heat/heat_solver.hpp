@@ -96,6 +96,9 @@ class HeatSolver {
   double boundary_loss() const { return boundary_loss_; }
   /// The rise θ = T − T0: the solver's own global vector of the heat DM (read only).
   Vec rise() const { return theta_; }
+  /// 1 / (row sums of M) [K m/J per dof], 0 on sink rows (held at T0): the
+  /// adiabatic rise of a load deposited at once is its load times this. New global vector.
+  PetscErrorCode LumpedCapacityInverse(Vec* inverse) const;
   /// Temperature (not the rise) as a new global vector of the heat DM.
   PetscErrorCode Temperature(Vec* T) const;
   double time() const { return time_; }

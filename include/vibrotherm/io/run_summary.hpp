@@ -49,6 +49,7 @@ struct RunSummary {
   long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
   double dissipated_energy = 0.0;     ///< [J/m]
   double wave_energy_left = 0.0;      ///< mechanical energy when the waves stopped [J/m]
+  double work_thermal = 0.0;          ///< work of the two-way thermal stress on the waves when they stopped [J/m]
   double max_friction_excess = -1.0;  ///< max (|T| − μN)/(μN) over cells and steps (≤ 0 when Coulomb held)
   std::map<std::string, double> stages;   ///< phase → wall seconds
   /// Simulated interval [start, end] of each physics that ran (s).

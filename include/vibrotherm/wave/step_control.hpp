@@ -1,6 +1,7 @@
 // The explicit wave step: dt < (ω dt)_max / ω_max, with ω_max² ≤ ω_bulk² +
 // ω_contact² (Weyl: the crack adds a positive semidefinite stiffness).
-//   bulk     ω_bulk from SLEPc, once;
+//   bulk     ω_bulk from SLEPc, once (plus a bound of any body force's stiffness:
+//            the two-way thermal stress);
 //   contact  ω_contact² from the crack interface's current tangent stiffness.
 // Rule -wave_contact_step:
 //   current     (default) the step starts from the contact as it is (the
@@ -31,6 +32,9 @@ class StepControl {
                        const char* ts_type);
   /// The initial step with the contact stiffness omega2 (rule's state) included.
   void IncludeContact(double omega2);
+  /// A stiffness added to the bulk (a body force's, bounded by omega2): ω_bulk² += omega2,
+  /// the step shrinks if it must (refused when -wave_dt is given and no longer stable).
+  PetscErrorCode IncludeBulkStiffness(double omega2, const char* what);
   /// After a step, with the contact's current omega2: *changed when the step shrank.
   PetscErrorCode Check(double omega2, double time, PetscInt steps, bool* changed);
   double dt() const { return dt_; }
@@ -51,6 +55,7 @@ class StepControl {
   MPI_Comm comm_ = MPI_COMM_NULL;
   double omega_max_ = 0.0, omega_dt_max_ = 0.0, cfl_ = 0.9, fixed_dt_ = 0.0;
   double dt_ = 0.0, stable_dt_ = 0.0;
+  double contact_omega2_ = 0.0;  ///< the contact's in the initial step (IncludeContact)
   PetscInt reductions_ = 0;
 };
 

@@ -9,7 +9,8 @@
 // Boundary terms (boundary_terms.hpp: dashpots, prescribed components, traction
 // load) act in order on the acceleration; prescribed components are reset
 // exactly after each step. The step: step_control.hpp. History-dependent forces
-// (the crack interface) plug in through WaveInterface.
+// (the crack interface) plug in through WaveInterface; a bulk force affine in u
+// (the two-way thermal stress) through BodyForce (body_force.hpp, wave_body_force.cpp).
 // Files: wave_solver.cpp (setup, TS, explicit stepping), wave_alpha2.cpp
 // (implicit alpha2), wave_energy.cpp (energy accounting).
 #pragma once
@@ -24,6 +25,7 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/io/checkpoint.hpp"
 #include "vibrotherm/mesh/point_origin.hpp"
+#include "vibrotherm/wave/body_force.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
@@ -65,6 +67,7 @@ class WaveInterface {
 struct WaveEnergy {
   double kinetic = 0, strain = 0, radiated = 0, work_source = 0, integrator = 0;
   double interface_stored = 0, dissipated = 0;  ///< from the WaveInterface, if any
+  double work_body = 0;  ///< work of the BodyForce on the waves, if any (two-way thermal stress)
 };
 
 class WaveSolver {
@@ -93,6 +96,8 @@ class WaveSolver {
   PetscErrorCode SetInterface(WaveInterface* interface, double worst_approach);
   /// The lumped mass (global vector).
   Vec mass() const { return M_; }
+  /// Attaches a body force (not owned; null detaches); its stiffness bound enters the step.
+  PetscErrorCode SetBodyForce(BodyForce* force);
 
   /// Called after every accepted step (probes, outputs, coupling).
   std::function<PetscErrorCode(const WaveSolver&)> on_step;
@@ -142,6 +147,9 @@ class WaveSolver {
                                    Mat J, Mat P, void* ctx);
   /// f = −K u − C v + g(t) f_source (no mass scaling, no constraints).
   PetscErrorCode Forces(double t, Vec u, Vec v, Vec f) const;
+  // Body force (wave_body_force.cpp): a += M⁻¹ f(t, u); its work f·Δu per step.
+  PetscErrorCode AddBodyForce(double t, Vec u, Vec a);
+  PetscErrorCode AccountBodyWork(double t, Vec u);
   // Energy accounting (wave_energy.cpp).
   PetscErrorCode AccountStep(double t, double h);
   /// −(dt²/8) vᵀKv: velocity Verlet's integrator term at the current step.
@@ -167,6 +175,10 @@ class WaveSolver {
   bool symplectic_ = false, trapezoidal_kick_ = false, velocity_verlet_ = false, second_order_ = false;
   double omega_max_ = 0, time_ = 0;
   WaveInterface* interface_ = nullptr;
+  BodyForce* body_ = nullptr;
+  Vec body_f_ = nullptr, body_u_ = nullptr, body_a_ = nullptr;  ///< last force (the kick's), u after the last step, work
+  Vec body_f_end_ = nullptr;  ///< the force at the last step's end (types other than velocity Verlet)
+  double body_work_ = 0.0;  ///< this rank's share of the body force's work so far
   PetscInt steps_ = 0, global_dofs_ = 0;
   BoundaryEnergy accounted_;         ///< this rank's radiated energy and source work so far
   double integrator_offset_ = 0.0;   ///< integrator-term jumps of earlier step changes (global)
