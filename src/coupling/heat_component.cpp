@@ -129,6 +129,7 @@ PetscErrorCode HeatComponent::Summarise(io::RunSummary* summary) const {
 PetscErrorCode HeatComponent::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
   PetscCall(solver_.Save(checkpoint, specimen.heat_origin));
+  if (thermal_stress_) PetscCall(thermal_stress_->Save(checkpoint, specimen));
   for (const auto& source : sources_) PetscCall(source->Save(checkpoint, specimen));
   PetscFunctionReturn(0);
 }
@@ -136,6 +137,7 @@ PetscErrorCode HeatComponent::Save(io::Checkpoint& checkpoint, const mesh::Speci
 PetscErrorCode HeatComponent::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
   PetscFunctionBeginUser;
   PetscCall(solver_.Restore(checkpoint, specimen.heat_origin));
+  if (thermal_stress_) PetscCall(thermal_stress_->Restore(checkpoint, specimen));
   for (auto& source : sources_) {
     PetscCall(source->Restore(checkpoint, specimen));
     if (solver_.steps() > 0) deposited_by_source_[source->name()] = source->deposited();

@@ -14,7 +14,6 @@ PetscErrorCode Simulation::CanCheckpoint(bool* can) const {
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   const char* why = nullptr;
   if (waves_->solver().implicit()) why = "the implicit wave TS (alpha2)";
-  if (scene_->run.thermoelastic == ThermoelasticChoice::TwoWay) why = "-thermoelastic two_way (the thermal stress's exchange)";
   if (!why) *can = true;
   else if (scene_->run.checkpoint_every_s > 0.0 || control_.restart)
     PetscCall(PetscPrintf(comm, "vibrotherm: warning: no checkpoints in this run: %s is not checkpointed; a signal stops "

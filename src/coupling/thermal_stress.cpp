@@ -123,4 +123,45 @@ PetscErrorCode ThermalStress::MaxFrequencySquared(Vec mass, double* omega2) cons
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+PetscErrorCode PutVector(io::Checkpoint& checkpoint, const char* name, Vec v, DM dm, const mesh::PointOrigin& origin) {
+  PetscFunctionBeginUser;
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm, origin, &keys));
+  PetscCall(io::PutOwnedValues(checkpoint, name, keys, v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GetVector(const io::Checkpoint& checkpoint, const char* name, Vec v, DM dm,
+                         const mesh::PointOrigin& origin) {
+  PetscFunctionBeginUser;
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm, origin, &keys));
+  PetscCall(io::GetOwnedValues(checkpoint, name, keys, v));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ThermalStress::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
+  PetscFunctionBeginUser;
+  PetscCall(PutVector(checkpoint, "thermal_stress/phi", phi_, specimen.heat, specimen.heat_origin));
+  PetscCall(PutVector(checkpoint, "thermal_stress/g", g_, specimen.wave, specimen.wave_origin));
+  PetscCall(PutVector(checkpoint, "thermal_stress/g_rate", g_rate_, specimen.wave, specimen.wave_origin));
+  checkpoint.PutShared("thermal_stress/t_n", {t_n_});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ThermalStress::Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  PetscCall(GetVector(checkpoint, "thermal_stress/phi", phi_, specimen.heat, specimen.heat_origin));
+  PetscCall(GetVector(checkpoint, "thermal_stress/g", g_, specimen.wave, specimen.wave_origin));
+  PetscCall(GetVector(checkpoint, "thermal_stress/g_rate", g_rate_, specimen.wave, specimen.wave_origin));
+  std::vector<double> t_n;
+  PetscCall(checkpoint.GetShared("thermal_stress/t_n", &t_n, 1));
+  t_n_ = t_n[0];
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

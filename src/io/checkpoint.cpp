@@ -371,6 +371,28 @@ PetscErrorCode Checkpoint::GetKeyed(const std::string& name, const std::vector<l
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PutOwnedValues(Checkpoint& checkpoint, const std::string& name, const std::vector<long long>& keys,
+                              Vec v) {
+  PetscFunctionBeginUser;
+  const PetscScalar* a;
+  PetscCall(VecGetArrayRead(v, &a));
+  checkpoint.PutKeyed(name, keys, 1, std::vector<double>(a, a + keys.size()));
+  PetscCall(VecRestoreArrayRead(v, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GetOwnedValues(const Checkpoint& checkpoint, const std::string& name, const std::vector<long long>& keys,
+                              Vec v) {
+  PetscFunctionBeginUser;
+  std::vector<double> values;
+  PetscCall(checkpoint.GetKeyed(name, keys, 1, &values));
+  PetscScalar* a;
+  PetscCall(VecGetArray(v, &a));
+  std::copy(values.begin(), values.end(), a);
+  PetscCall(VecRestoreArray(v, &a));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Checkpoint::GetText(const std::string& name, std::string* text) const {
   PetscFunctionBeginUser;
   const Table* t;

@@ -17,10 +17,12 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   PetscCall(VecRestoreArrayRead(X_, &x));
   PetscInt ts_steps;
   PetscCall(TSGetStepNumber(ts_, &ts_steps));
+  // The body force's end-of-step value (types other than Verlet): it was taken before the heat step changed the force.
+  if (body_) PetscCall(io::PutOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
   checkpoint.PutShared("wave/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps),
                                       integrator_offset_});
   checkpoint.PutShared("wave/step_control", step_.state());
-  std::vector<double> accounts = {accounted_.radiated, accounted_.work_source};
+  std::vector<double> accounts = {accounted_.radiated, accounted_.work_source, body_work_};
   for (const auto& term : terms_)
     for (double value : term->SavedAccount()) accounts.push_back(value);
   checkpoint.PutPerRank("wave/accounts", accounts);
@@ -54,11 +56,16 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   accounted_.radiated = accounts.at(0);
   accounted_.work_source = accounts.at(1);
-  std::size_t at = 2;
+  body_work_ = accounts.at(2);
+  std::size_t at = 3;
   for (auto& term : terms_) {
     const std::size_t n = term->SavedAccount().size();
     term->RestoreAccount(std::vector<double>(accounts.begin() + at, accounts.begin() + at + n));
     at += n;
+  }
+  if (body_) {  // what the solver remembers of the body force's last step
+    PetscCall(io::GetOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
+    PetscCall(VecCopy(u_, body_u_));
   }
   // What the terms remember of the last step's end state is the state itself.
   Vec uv = nullptr, vv = nullptr;

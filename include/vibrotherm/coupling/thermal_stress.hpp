@@ -19,6 +19,8 @@
 
 #include <petscmat.h>
 
+#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/body_force.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
@@ -39,6 +41,9 @@ class ThermalStress final : public wave::BodyForce {
   /// The waves stop: no more force. Collective.
   PetscErrorCode Detach();
 
+  /// Checkpoints (after a heat step): φ_n and the force's g_n, ġ_n, t_n; and back.
+  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
+  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
   PetscErrorCode Force(double t, Vec u, Vec f) override;
   PetscErrorCode MaxFrequencySquared(Vec mass, double* omega2) const override;
   const char* name() const override { return "-thermoelastic two_way"; }

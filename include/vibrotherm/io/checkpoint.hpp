@@ -13,7 +13,7 @@
 // (states are small next to the meshes: 15k dofs in the paper scene).
 #pragma once
 
-#include <petscsys.h>
+#include <petscvec.h>
 
 #include <map>
 #include <string>
@@ -73,5 +73,10 @@ class Checkpoint {
   int writer_ranks_ = 0;
   std::string path_;  ///< the file read (for messages)
 };
+
+/// A vector's owned entries as keyed items (one value each, keys in the vector's local order), and back.
+PetscErrorCode PutOwnedValues(Checkpoint& checkpoint, const std::string& name, const std::vector<long long>& keys, Vec v);
+PetscErrorCode GetOwnedValues(const Checkpoint& checkpoint, const std::string& name, const std::vector<long long>& keys,
+                              Vec v);
 
 }  // namespace vibrotherm::io
