@@ -26,6 +26,12 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
                           "worst_case (every cell pressed twice the source amplitude)",
                           {"current", "worst_case"}, &rule, nullptr));
   o->contact_step = static_cast<ContactStepRule>(rule);
+  PetscInt kernel = static_cast<PetscInt>(o->kernel);
+  PetscCall(OptionsChoice(PetscOptionsObject, "-wave_kernel",
+                          "Product with the stiffness in the explicit step: petsc (MatMult) or blocked (2x2-block "
+                          "loop, same result to rounding)",
+                          {"petsc", "blocked"}, &kernel, nullptr));
+  o->kernel = static_cast<StiffnessKernel>(kernel);
   PetscOptionsEnd();
   PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
              o->degree);
@@ -144,6 +150,7 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
   PetscCall(VecScale(Minv_, -1.0));
   PetscCall(MatDiagonalScale(A_, Minv_, nullptr));
   PetscCall(VecScale(Minv_, -1.0));
+  if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Setup(A_));
   TSType type;
   PetscCall(TSGetType(ts_, &type));
   PetscCall(OscillatorStabilityLimit("wave_", &omega_dt_max, &implicit));
@@ -155,9 +162,16 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode WaveSolver::ApplyStepping(Vec u, Vec a) {
+  PetscFunctionBeginUser;
+  if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Apply(u, a));
+  else PetscCall(MatMult(A_, u, a));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt) {
   PetscFunctionBeginUser;
-  PetscCall(MatMult(A_, u, a));  // −M⁻¹K u
+  PetscCall(ApplyStepping(u, a));  // −M⁻¹K u
   if (interface_) PetscCall(interface_->AddAcceleration(u, a));
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);
