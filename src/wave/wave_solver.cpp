@@ -125,6 +125,7 @@ PetscErrorCode WaveSolver::CreateTS(MPI_Comm comm) {
     PetscCall(TSSetRHSFunction(ts_, nullptr, RHSFull, this));
     PetscCall(TSRHSSplitSetRHSFunction(ts_, "position", nullptr, RHSPosition, this));
     PetscCall(TSRHSSplitSetRHSFunction(ts_, "momentum", nullptr, RHSMomentum, this));
+    PetscCall(VelocityVerletSetPositionRateIsMomentum(ts_, PETSC_TRUE));  // RHSPosition is u̇ = v
   }
   // Types 1 and 2 kick once per step with coefficient 1: the trapezoidal dashpot is exact there.
   char scheme[16] = TSBASICSYMPLECTICVELVERLET;
