@@ -61,6 +61,7 @@ __attribute__((target("avx2"))) void ApplyWide(const BlockCsr& part, const Quad*
   const std::int32_t* __restrict start = part.row_start.data();
   const std::int32_t* __restrict offset = part.x_offset.data();
   const Quad* __restrict value = part.value.data();
+  // (No helper function: a lambda would not inherit the AVX2 target.)
   for (std::int32_t r = 0; r < rows; ++r) {
     Wide s[4] = {};
     std::int32_t k = start[r];
@@ -68,7 +69,8 @@ __attribute__((target("avx2"))) void ApplyWide(const BlockCsr& part, const Quad*
     for (; k + 3 < end; k += 4)
       for (int c = 0; c < 4; ++c)
         s[c] += *reinterpret_cast<const Wide*>(value[k + c].v) * *reinterpret_cast<const Wide*>(At(x, offset[k + c]));
-    for (; k < end; ++k) s[0] += *reinterpret_cast<const Wide*>(value[k].v) * *reinterpret_cast<const Wide*>(At(x, offset[k]));
+    for (; k < end; ++k)
+      s[0] += *reinterpret_cast<const Wide*>(value[k].v) * *reinterpret_cast<const Wide*>(At(x, offset[k]));
     const Wide t = (s[0] + s[1]) + (s[2] + s[3]);
     Store(y + 2 * (part.rows.empty() ? r : part.rows[r]), Pair{t[0], t[1]}, Pair{t[2], t[3]}, add);
   }

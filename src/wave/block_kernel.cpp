@@ -19,13 +19,15 @@ PetscErrorCode CopyPart(Mat seq, bool compress, BlockCsr* part) {
   PetscInt columns;
   PetscCall(MatGetSize(seq, nullptr, &columns));
   PetscCheck(columns / 2 < kMaxBlockColumns, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "block kernel: %" PetscInt_FMT " block columns on one rank, more than its 32-bit offsets reach", columns / 2);
-  static_assert(sizeof(PetscInt) == sizeof(std::int32_t), "block kernel: PETSc with 32-bit indices (Debian's petsc-dev)");
+             "block kernel: %" PetscInt_FMT " block columns on one rank, more than its 32-bit offsets reach",
+             columns / 2);
+  static_assert(sizeof(PetscInt) == sizeof(std::int32_t), "block kernel: PETSc with 32-bit indices (petsc-dev)");
   *part = BlockCsr();
-  for (PetscInt r = 0; r < rows; ++r)
-    if (!compress || ia[r + 1] > ia[r])
-      AppendBlockRow(static_cast<std::int32_t>(r), ja + ia[r], a + 4 * ia[r], static_cast<std::int32_t>(ia[r + 1] - ia[r]),
-                     compress, part);
+  for (PetscInt r = 0; r < rows; ++r) {
+    const auto blocks = static_cast<std::int32_t>(ia[r + 1] - ia[r]);
+    if (!compress || blocks > 0)
+      AppendBlockRow(static_cast<std::int32_t>(r), ja + ia[r], a + 4 * ia[r], blocks, compress, part);
+  }
   PetscCall(MatSeqBAIJRestoreArray(seq, &a));
   PetscCall(MatRestoreRowIJ(seq, 0, PETSC_FALSE, PETSC_TRUE, &rows, &ia, &ja, &done));
   PetscFunctionReturn(0);
@@ -46,8 +48,8 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide) {
   PetscCall(MatGetBlockSize(A, &bs));
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATMPIBAIJ, &mpi));
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQBAIJ, &seq));
-  PetscCheck((mpi || seq) && bs == 2, comm, PETSC_ERR_SUP, "block kernel: needs a BAIJ matrix of block size 2, got block size %" PetscInt_FMT,
-             bs);
+  PetscCheck((mpi || seq) && bs == 2, comm, PETSC_ERR_SUP,
+             "block kernel: needs a BAIJ matrix of block size 2, got block size %" PetscInt_FMT, bs);
   PetscCall(PetscLogEventGetId("WaveBlockMult", &event_));
   if (event_ < 0) PetscCall(PetscLogEventRegister("WaveBlockMult", MAT_CLASSID, &event_));
   A_ = A;
@@ -77,7 +79,7 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BlockKernel::CopyArrays() {
+PetscErrorCode BlockKernel::CopyArrays() const {
   PetscFunctionBeginUser;
   PetscBool mpi;
   PetscCall(PetscObjectTypeCompare((PetscObject)A_, MATMPIBAIJ, &mpi));
@@ -93,7 +95,7 @@ PetscErrorCode BlockKernel::CopyArrays() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BlockKernel::Apply(Vec x, Vec y) {
+PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscFunctionBeginUser;
   PetscCheck(A_, PetscObjectComm((PetscObject)x), PETSC_ERR_ORDER, "block kernel: Apply before Setup");
   PetscObjectState state;

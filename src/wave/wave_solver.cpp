@@ -28,8 +28,8 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   o->contact_step = static_cast<ContactStepRule>(rule);
   PetscInt kernel = static_cast<PetscInt>(o->kernel);
   PetscCall(OptionsChoice(PetscOptionsObject, "-wave_kernel",
-                          "Product with the stiffness in the explicit step: petsc (MatMult) or blocked (2x2-block "
-                          "loop, same result to rounding)",
+                          "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or "
+                          "blocked (2x2-block loop, same result to rounding)",
                           {"petsc", "blocked"}, &kernel, nullptr));
   o->kernel = static_cast<StiffnessKernel>(kernel);
   PetscOptionsEnd();
@@ -163,7 +163,7 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::ApplyStepping(Vec u, Vec a) {
+PetscErrorCode WaveSolver::ApplyStepping(Vec u, Vec a) const {
   PetscFunctionBeginUser;
   if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Apply(u, a));
   else PetscCall(MatMult(A_, u, a));

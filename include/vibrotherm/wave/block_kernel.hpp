@@ -41,18 +41,19 @@ class BlockKernel {
   PetscErrorCode Setup(Mat A, bool allow_wide = true);
   /// Whether Apply runs the AVX2 path.
   bool wide() const { return wide_; }
-  /// y = A x; x and y have A's layout and must not alias (collective).
-  PetscErrorCode Apply(Vec x, Vec y);
+  /// y = A x; x and y have A's layout and must not alias (collective). Const
+  /// as a product is: the copy of A it may renew and its scratch are caches.
+  PetscErrorCode Apply(Vec x, Vec y) const;
 
  private:
-  PetscErrorCode CopyArrays();
+  PetscErrorCode CopyArrays() const;
 
   Mat A_ = nullptr;  ///< referenced
-  PetscObjectState state_ = -1;
-  BlockCsr diagonal_, off_process_;
+  mutable PetscObjectState state_ = -1;
+  mutable BlockCsr diagonal_, off_process_;
   VecScatter scatter_ = nullptr;  ///< x → ghosts (null on one rank)
   Vec ghosts_ = nullptr;
-  std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
+  mutable std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
   PetscLogEvent event_ = -1;
   bool wide_ = false;
 };

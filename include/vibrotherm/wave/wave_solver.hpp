@@ -128,8 +128,8 @@ class WaveSolver {
   PetscErrorCode CreateTS(MPI_Comm comm);
   PetscErrorCode SetupStepControl(MPI_Comm comm);
   PetscErrorCode CheckFinite(double t, double h) const;
-  /// a = A u by the -wave_kernel of the options.
-  PetscErrorCode ApplyStepping(Vec u, Vec a);
+  /// a = A u by the -wave_kernel of the options (the steps and the energies).
+  PetscErrorCode ApplyStepping(Vec u, Vec a) const;
   /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
   PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
   /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
