@@ -20,18 +20,14 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
                              &o->cfl, nullptr));
   PetscCall(PetscOptionsReal("-wave_dt", "Time step [s] (default: cfl x stability limit)", nullptr, o->dt, &o->dt,
                              nullptr));
-  PetscInt rule = static_cast<PetscInt>(o->contact_step);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-wave_contact_step",
-                          "Contact stiffness in the step: current (the contact as it is, shrunk when it stiffens) or "
-                          "worst_case (every cell pressed twice the source amplitude)",
-                          {"current", "worst_case"}, &rule, nullptr));
-  o->contact_step = static_cast<ContactStepRule>(rule);
-  PetscInt kernel = static_cast<PetscInt>(o->kernel);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-wave_kernel",
-                          "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or "
-                          "blocked (2x2-block loop, same result to rounding)",
-                          {"petsc", "blocked"}, &kernel, nullptr));
-  o->kernel = static_cast<StiffnessKernel>(kernel);
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_contact_step",
+                              "Contact stiffness in the step: current (the contact as it is, shrunk when it stiffens) "
+                              "or worst_case (every cell pressed twice the source amplitude)",
+                              {"current", "worst_case"}, &o->contact_step));
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_kernel",
+                              "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or "
+                              "blocked (2x2-block loop, same result to rounding)",
+                              {"petsc", "blocked"}, &o->kernel));
   PetscOptionsEnd();
   PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
              o->degree);

@@ -1,9 +1,10 @@
 // Wave stepping speed: DOF-updates per second (dofs × steps / wall time of the
 // stepping loop, with the -wave_kernel of the options) next to bare products
-// with the same A = −M⁻¹K in the same run: PETSc's MatMult and the 2×2-block kernel.
+// with the same A = −M⁻¹K in the same run: PETSc's MatMult and the 2×2-block kernel
+// (AVX2 where the machine has it, and its portable path).
 //   mpiexec -n R bench_wave -mesh_h H -dm_refine K -wave_degree D [-bench_steps N] [-wave_kernel K]
 // Prints one line: ranks degree dofs steps_per_s dof_updates_per_s matmult_rate ratio blocked_rate
-// blocked_over_matmult (rates in dof-updates per second, ratio = stepping / MatMult).
+// blocked_over_matmult portable_over_matmult (rates in dof-updates per second, ratio = stepping / MatMult).
 #include <slepcsys.h>
 
 #include <algorithm>
@@ -38,11 +39,13 @@ static PetscErrorCode Run() {
   PetscCall(MatCreateVecs(solver.stepping_operator(), &x, &y));
   PetscCall(VecSet(x, 1.0));
   PetscCall(MatMult(solver.stepping_operator(), x, y));
-  wave::BlockKernel kernel;
+  wave::BlockKernel kernel, portable;
   PetscCall(kernel.Setup(solver.stepping_operator()));
+  PetscCall(portable.Setup(solver.stepping_operator(), false));
   PetscCall(kernel.Apply(x, y));
+  PetscCall(portable.Apply(x, y));
   // Alternate the measurements and keep the best of five: the machine is shared.
-  double wave_time = INFINITY, matmult_time = INFINITY, blocked_time = INFINITY;
+  double wave_time = INFINITY, matmult_time = INFINITY, blocked_time = INFINITY, portable_time = INFINITY;
   for (int rep = 0; rep < 5; ++rep) {
     PetscCallMPI(MPI_Barrier(comm));
     double t0 = MPI_Wtime();
@@ -57,14 +60,18 @@ static PetscErrorCode Run() {
     for (PetscInt k = 0; k < steps; ++k) PetscCall(kernel.Apply(x, y));
     PetscCallMPI(MPI_Barrier(comm));
     blocked_time = std::min(blocked_time, MPI_Wtime() - t0);
+    t0 = MPI_Wtime();
+    for (PetscInt k = 0; k < steps; ++k) PetscCall(portable.Apply(x, y));
+    PetscCallMPI(MPI_Barrier(comm));
+    portable_time = std::min(portable_time, MPI_Wtime() - t0);
   }
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   const double dofs = solver.dofs(), wave_rate = dofs * steps / wave_time, mm_rate = dofs * steps / matmult_time;
   const double blocked_rate = dofs * steps / blocked_time;
-  PetscCall(PetscPrintf(comm, "%d %" PetscInt_FMT " %.0f %.4g %.4g %.4g %.3f %.4g %.3f\n", size, options.degree, dofs,
-                        steps / wave_time, wave_rate, mm_rate, wave_rate / mm_rate, blocked_rate,
-                        blocked_rate / mm_rate));
+  PetscCall(PetscPrintf(comm, "%d %" PetscInt_FMT " %.0f %.4g %.4g %.4g %.3f %.4g %.3f %.3f\n", size, options.degree,
+                        dofs, steps / wave_time, wave_rate, mm_rate, wave_rate / mm_rate, blocked_rate,
+                        blocked_rate / mm_rate, matmult_time / portable_time));
   PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&y));
   PetscCall(mesh::SpecimenDestroy(&specimen));
