@@ -1,7 +1,10 @@
 #include "vibrotherm/wave/block_csr.hpp"
 
+#include <cstring>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define VIBROTHERM_WIDE_KERNEL 1
+#include <immintrin.h>
 #endif
 
 namespace vibrotherm::wave {
@@ -20,15 +23,20 @@ inline Pair Half(const double* p) {
   return *static_cast<const Pair*>(__builtin_assume_aligned(p, 16));  // vector types alias their elements
 }
 
-/// y_r (+)= the row's (Σ a00 x0 + Σ a01 x1, Σ a10 x0 + Σ a11 x1), lo = (Σ a00 x0, Σ a10 x0), hi the x1 half.
-inline void Store(double* yr, Pair lo, Pair hi, bool add) {
-  const Pair sum = lo + hi;
-  yr[0] = (add ? yr[0] : 0.0) + sum[0];
-  yr[1] = (add ? yr[1] : 0.0) + sum[1];
+/// y_r = sum, or y_r += sum (kAdd): sum = the row's (Σ a00 x0 + Σ a01 x1, Σ a10 x0 + Σ a11 x1).
+template <bool kAdd>
+inline void Store(double* yr, Pair sum) {
+  if (kAdd) {
+    Pair y;
+    std::memcpy(&y, yr, sizeof y);
+    sum = y + sum;
+  }
+  std::memcpy(yr, &sum, sizeof sum);
 }
 
 /// The 2-wide path: each 4-wide chain as a lo and a hi pair.
-void ApplyPairs(const BlockCsr& part, const Quad* __restrict x, double* __restrict y, bool add) {
+template <bool kAdd>
+void ApplyPairs(const BlockCsr& part, const Quad* __restrict x, double* __restrict y) {
   const auto rows = static_cast<std::int32_t>(part.row_start.size()) - 1;
   const std::int32_t* __restrict start = part.row_start.data();
   const std::int32_t* __restrict offset = part.x_offset.data();
@@ -47,15 +55,15 @@ void ApplyPairs(const BlockCsr& part, const Quad* __restrict x, double* __restri
       lo[0] += Half(value[k].v) * Half(At(x, offset[k]));
       hi[0] += Half(value[k].v + 2) * Half(At(x, offset[k]) + 2);
     }
-    Store(y + 2 * (part.rows.empty() ? r : part.rows[r]), (lo[0] + lo[1]) + (lo[2] + lo[3]),
-          (hi[0] + hi[1]) + (hi[2] + hi[3]), add);
+    const Pair sum = ((lo[0] + lo[1]) + (lo[2] + lo[3])) + ((hi[0] + hi[1]) + (hi[2] + hi[3]));
+    Store<kAdd>(y + 2 * (part.rows.empty() ? r : part.rows[r]), sum);
   }
 }
 
 #ifdef VIBROTHERM_WIDE_KERNEL
 /// The 4-wide path: the same additions as ApplyPairs, lo and hi in one register.
-__attribute__((target("avx2"))) void ApplyWide(const BlockCsr& part, const Quad* __restrict x, double* __restrict y,
-                                               bool add) {
+template <bool kAdd>
+__attribute__((target("avx2"))) void ApplyWide(const BlockCsr& part, const Quad* __restrict x, double* __restrict y) {
   typedef double Wide __attribute__((vector_size(32)));
   const auto rows = static_cast<std::int32_t>(part.row_start.size()) - 1;
   const std::int32_t* __restrict start = part.row_start.data();
@@ -71,8 +79,11 @@ __attribute__((target("avx2"))) void ApplyWide(const BlockCsr& part, const Quad*
         s[c] += *reinterpret_cast<const Wide*>(value[k + c].v) * *reinterpret_cast<const Wide*>(At(x, offset[k + c]));
     for (; k < end; ++k)
       s[0] += *reinterpret_cast<const Wide*>(value[k].v) * *reinterpret_cast<const Wide*>(At(x, offset[k]));
-    const Wide t = (s[0] + s[1]) + (s[2] + s[3]);
-    Store(y + 2 * (part.rows.empty() ? r : part.rows[r]), Pair{t[0], t[1]}, Pair{t[2], t[3]}, add);
+    const __m256d t = (s[0] + s[1]) + (s[2] + s[3]);
+    __m128d sum = _mm_add_pd(_mm256_castpd256_pd128(t), _mm256_extractf128_pd(t, 1));  // lo + hi
+    double* yr = y + 2 * (part.rows.empty() ? r : part.rows[r]);
+    if (kAdd) sum = _mm_add_pd(_mm_loadu_pd(yr), sum);
+    _mm_storeu_pd(yr, sum);
   }
 }
 #endif
@@ -96,10 +107,10 @@ void SpreadPairs(const double* x, std::int32_t pairs, Quad* spread) {
 
 void BlockCsrApply(const BlockCsr& part, const Quad* x, double* y, bool add, bool wide) {
 #ifdef VIBROTHERM_WIDE_KERNEL
-  if (wide) return ApplyWide(part, x, y, add);
+  if (wide) return add ? ApplyWide<true>(part, x, y) : ApplyWide<false>(part, x, y);
 #endif
   (void)wide;
-  ApplyPairs(part, x, y, add);
+  add ? ApplyPairs<true>(part, x, y) : ApplyPairs<false>(part, x, y);
 }
 
 bool WideKernelAvailable() {
