@@ -85,7 +85,11 @@ PetscErrorCode BlockKernel::CopyArrays() const {
   PetscCall(PetscObjectTypeCompare((PetscObject)A_, MATMPIBAIJ, &mpi));
   if (mpi) {
     Mat diagonal, off_process;
+    PetscInt ghost_columns;
     PetscCall(MatMPIBAIJGetSeqBAIJ(A_, &diagonal, &off_process, nullptr));
+    PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
+    PetscCheck(!scatter_ || ghost_columns == 2 * static_cast<PetscInt>(spread_ghosts_.size()), PETSC_COMM_SELF,
+               PETSC_ERR_ARG_WRONGSTATE, "block kernel: the matrix has new ghost columns since Setup: call Setup again");
     PetscCall(CopyPart(diagonal, false, &diagonal_));
     PetscCall(CopyPart(off_process, true, &off_process_));
   } else {
@@ -98,6 +102,7 @@ PetscErrorCode BlockKernel::CopyArrays() const {
 PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscFunctionBeginUser;
   PetscCheck(A_, PetscObjectComm((PetscObject)x), PETSC_ERR_ORDER, "block kernel: Apply before Setup");
+  PetscCheck(x != y, PetscObjectComm((PetscObject)x), PETSC_ERR_ARG_IDN, "block kernel: x and y must differ");
   PetscObjectState state;
   PetscCall(PetscObjectStateGet((PetscObject)A_, &state));
   if (state != state_) PetscCall(CopyArrays());  // A was rescaled or reassembled since

@@ -17,7 +17,8 @@
 // MatMult to rounding (not bit for bit).
 //
 // The arrays are copied from A when it is set, and copied again by Apply when
-// A's object state has changed since (values rescaled or reassembled).
+// A's object state has changed since (values rescaled or reassembled; a new
+// nonzero pattern with other ghost columns needs Setup again, and is refused).
 #pragma once
 
 #include <petscmat.h>
