@@ -12,6 +12,7 @@ struct VerletData {
   const PetscScalar* base = nullptr;      ///< the state array the views were made on
   Vec q = nullptr, p = nullptr;           ///< views of the state
   Vec q_update = nullptr, p_update = nullptr;
+  PetscBool position_rate_is_momentum = PETSC_FALSE;  ///< q̇ = p: drifts skip the RHS call
 };
 
 /// Local offset and size of a contiguous split inside the state vector.
@@ -53,19 +54,29 @@ PetscErrorCode UpdateViews(TS ts, VerletData* d) {
   PetscFunctionReturn(0);
 }
 
+/// Half a step of position: q += h/2 q̇(p, t).
+PetscErrorCode Drift(TS ts, VerletData* d, PetscReal h) {
+  PetscFunctionBeginUser;
+  if (d->position_rate_is_momentum) {
+    PetscCall(VecAXPY(d->q, 0.5 * h, d->p));
+  } else {
+    PetscCall(TSComputeRHSFunction(d->sub_q, ts->ptime, d->p, d->q_update));
+    PetscCall(VecAXPY(d->q, 0.5 * h, d->q_update));
+  }
+  PetscFunctionReturn(0);
+}
+
 /// Drift–kick–drift: u += h/2 v; v += h a(u, t + h/2); u += h/2 v.
 PetscErrorCode Step(TS ts) {
   PetscFunctionBeginUser;
   auto* d = static_cast<VerletData*>(ts->data);
   PetscCall(UpdateViews(ts, d));
   const PetscReal h = ts->time_step;
-  PetscCall(TSComputeRHSFunction(d->sub_q, ts->ptime, d->p, d->q_update));
-  PetscCall(VecAXPY(d->q, 0.5 * h, d->q_update));
+  PetscCall(Drift(ts, d, h));
   ts->ptime = ts->ptime + 0.5 * h;
   PetscCall(TSComputeRHSFunction(d->sub_p, ts->ptime, d->q, d->p_update));
   PetscCall(VecAXPY(d->p, h, d->p_update));
-  PetscCall(TSComputeRHSFunction(d->sub_q, ts->ptime, d->p, d->q_update));
-  PetscCall(VecAXPY(d->q, 0.5 * h, d->q_update));
+  PetscCall(Drift(ts, d, h));
   ts->ptime = ts->ptime + 0.5 * h;
   PetscScalar* x;  // the state changed through the views
   PetscCall(VecGetArray(ts->vec_sol, &x));
@@ -115,6 +126,14 @@ PetscErrorCode Create(TS ts) {
 }
 
 }  // namespace
+
+PetscErrorCode VelocityVerletSetPositionRateIsMomentum(TS ts, PetscBool identity) {
+  PetscFunctionBeginUser;
+  PetscBool ours;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, kVelocityVerletTS, &ours));
+  if (ours) static_cast<VerletData*>(ts->data)->position_rate_is_momentum = identity;
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode RegisterVelocityVerletTS() {
   PetscFunctionBeginUser;

@@ -24,7 +24,7 @@ PetscErrorCode WaveSolver::SetupAlpha2(MPI_Comm comm) {
 
 PetscErrorCode WaveSolver::Forces(double t, Vec u, Vec v, Vec f) const {
   PetscFunctionBeginUser;
-  PetscCall(MatMult(A_, u, f));
+  PetscCall(ApplyStepping(u, f));
   PetscCall(VecPointwiseMult(f, f, M_));  // −K u
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);

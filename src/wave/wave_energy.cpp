@@ -44,7 +44,7 @@ PetscErrorCode WaveSolver::IntegratorTerm(double dt, double* term) const {
   PetscCall(VecDuplicate(v, &Av));
   PetscCall(VecDuplicate(v, &Mv));
   PetscCall(VecPointwiseMult(Mv, v, M_));
-  PetscCall(MatMult(A_, v, Av));
+  PetscCall(ApplyStepping(v, Av));
   PetscScalar vKv;
   PetscCall(VecDot(Mv, Av, &vKv));
   PetscCall(VecDestroy(&Av));
@@ -64,7 +64,7 @@ PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscScalar kinetic, strain;
   PetscCall(VecDot(Mu, v, &kinetic));
   PetscCall(VecPointwiseMult(Mu, u, M_));
-  PetscCall(MatMult(A_, u, Au));
+  PetscCall(ApplyStepping(u, Au));
   PetscCall(VecDot(Mu, Au, &strain));  // −uᵀKu
   PetscCall(VecDestroy(&Au));
   PetscCall(VecDestroy(&Mu));

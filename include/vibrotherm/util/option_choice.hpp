@@ -15,6 +15,16 @@ namespace vibrotherm {
 PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
                              const std::vector<std::string>& names, PetscInt* index, PetscBool* set);
 
+/// OptionsChoice for an enum whose values are the indices of `names`.
+template <class Enum>
+PetscErrorCode OptionsChoiceEnum(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
+                                 const std::vector<std::string>& names, Enum* value) {
+  PetscInt index = static_cast<PetscInt>(*value);
+  PetscErrorCode ierr = OptionsChoice(PetscOptionsObject, option, help, names, &index, nullptr);
+  if (!ierr) *value = static_cast<Enum>(index);
+  return ierr;
+}
+
 /// "a|b|c".
 std::string JoinChoices(const std::vector<std::string>& names);
 

@@ -15,5 +15,10 @@ inline constexpr const char* kVelocityVerletTS = "velocityverlet";
 
 /// Registers the type with TSRegister (once; later calls do nothing).
 PetscErrorCode RegisterVelocityVerletTS();
+/// Declares the position split's RHS to be the momentum itself (u̇ = v): the
+/// drifts then add h/2 v directly instead of calling the RHS function, which
+/// would copy v (same operations on the same values: the same bits). Does
+/// nothing on a TS of another type.
+PetscErrorCode VelocityVerletSetPositionRateIsMomentum(TS ts, PetscBool identity);
 
 }  // namespace vibrotherm::wave

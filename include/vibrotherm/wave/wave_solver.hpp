@@ -27,6 +27,7 @@
 #include "vibrotherm/mesh/point_origin.hpp"
 #include "vibrotherm/wave/body_force.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
@@ -35,11 +36,15 @@
 
 namespace vibrotherm::wave {
 
+/// How the explicit step applies A = −M⁻¹K: PETSc's MatMult, or the 2×2-block kernel (block_kernel.hpp).
+enum class StiffnessKernel { kPetsc, kBlocked };
+
 struct WaveOptions {
   PetscInt degree = 1;   ///< -wave_degree 1|2
   double cfl = 0.9;      ///< -wave_cfl: fraction of the stability limit
   double dt = 0.0;       ///< -wave_dt: explicit step (0: cfl × limit)
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
+  StiffnessKernel kernel = StiffnessKernel::kBlocked;        ///< -wave_kernel petsc|blocked
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
@@ -116,7 +121,7 @@ class WaveSolver {
   /// memory, valid until RestoreFields; writes through them change the state).
   PetscErrorCode GetFields(Vec* u, Vec* v) const;
   PetscErrorCode RestoreFields(Vec* u, Vec* v) const;
-  /// The stepping operator A = −M⁻¹K (one MatMult per force evaluation).
+  /// The stepping operator A = −M⁻¹K (one product per force evaluation, by -wave_kernel).
   Mat stepping_operator() const { return A_; }
   Vec lumped_mass() const { return M_; }
   TS ts() const { return ts_; }
@@ -136,6 +141,8 @@ class WaveSolver {
   PetscErrorCode CreateTS(MPI_Comm comm);
   PetscErrorCode SetupStepControl(MPI_Comm comm);
   PetscErrorCode CheckFinite(double t, double h) const;
+  /// a = A u by the -wave_kernel of the options (the steps and the energies).
+  PetscErrorCode ApplyStepping(Vec u, Vec a) const;
   /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
   PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
   /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
@@ -165,6 +172,7 @@ class WaveSolver {
   StepControl step_;
   Mat A_ = nullptr;  ///< −M⁻¹K: the explicit step needs no separate mass scaling
   Mat K_ = nullptr;  ///< the stiffness itself, kept for alpha2's Jacobian only
+  BlockKernel kernel_;  ///< A_ by 2×2 blocks (-wave_kernel blocked, explicit types)
   Vec M_ = nullptr, Minv_ = nullptr;
   Vec X_ = nullptr, force_ = nullptr;
   Vec u_ = nullptr, v_ = nullptr;  ///< u and v: vectors on X_'s memory (GetFields)

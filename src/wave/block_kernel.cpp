@@ -1,0 +1,133 @@
+#include "vibrotherm/wave/block_kernel.hpp"
+
+#include <petsc/private/petscimpl.h>  // PetscObjectStateGet: has A changed since the copy?
+
+namespace vibrotherm::wave {
+namespace {
+
+/// One part's arrays from a SeqBAIJ matrix of block size 2. compress: keep only
+/// the block rows with entries (the off-process part touches few rows).
+PetscErrorCode CopyPart(Mat seq, bool compress, BlockCsr* part) {
+  PetscFunctionBeginUser;
+  PetscInt rows;
+  const PetscInt *ia, *ja;
+  PetscBool done;
+  PetscCall(MatGetRowIJ(seq, 0, PETSC_FALSE, PETSC_TRUE, &rows, &ia, &ja, &done));  // block rows
+  PetscCheck(done, PetscObjectComm((PetscObject)seq), PETSC_ERR_SUP, "block kernel: no row structure of the matrix");
+  PetscScalar* a;
+  PetscCall(MatSeqBAIJGetArray(seq, &a));
+  PetscInt columns;
+  PetscCall(MatGetSize(seq, nullptr, &columns));
+  PetscCheck(columns / 2 < kMaxBlockColumns, PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "block kernel: %" PetscInt_FMT " block columns on one rank, more than its 32-bit offsets reach",
+             columns / 2);
+  static_assert(sizeof(PetscInt) == sizeof(std::int32_t), "block kernel: PETSc with 32-bit indices (petsc-dev)");
+  *part = BlockCsr();
+  for (PetscInt r = 0; r < rows; ++r) {
+    const auto blocks = static_cast<std::int32_t>(ia[r + 1] - ia[r]);
+    if (!compress || blocks > 0)
+      AppendBlockRow(static_cast<std::int32_t>(r), ja + ia[r], a + 4 * ia[r], blocks, compress, part);
+  }
+  PetscCall(MatSeqBAIJRestoreArray(seq, &a));
+  PetscCall(MatRestoreRowIJ(seq, 0, PETSC_FALSE, PETSC_TRUE, &rows, &ia, &ja, &done));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+BlockKernel::~BlockKernel() {
+  (void)VecScatterDestroy(&scatter_);
+  (void)VecDestroy(&ghosts_);
+}
+
+PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)A);
+  PetscInt bs;
+  PetscBool mpi, seq;
+  PetscCall(MatGetBlockSize(A, &bs));
+  PetscCall(PetscObjectTypeCompare((PetscObject)A, MATMPIBAIJ, &mpi));
+  PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQBAIJ, &seq));
+  PetscCheck((mpi || seq) && bs == 2, comm, PETSC_ERR_SUP,
+             "block kernel: needs a BAIJ matrix of block size 2, got block size %" PetscInt_FMT, bs);
+  PetscCall(PetscLogEventGetId("WaveBlockMult", &event_));
+  if (event_ < 0) PetscCall(PetscLogEventRegister("WaveBlockMult", MAT_CLASSID, &event_));
+  A_ = A;
+  wide_ = allow_wide && WideKernelAvailable();
+  PetscCall(VecScatterDestroy(&scatter_));
+  PetscCall(VecDestroy(&ghosts_));
+  PetscCall(CopyArrays());
+  PetscInt local_columns;
+  PetscCall(MatGetLocalSize(A, nullptr, &local_columns));
+  spread_.resize(local_columns / 2);
+  if (!mpi) PetscFunctionReturn(0);
+  // The ghosts: every block column of the off-process part, in its compressed order.
+  Mat diagonal, off_process;
+  const PetscInt* ghost_blocks;
+  PetscInt ghost_columns;
+  PetscCall(MatMPIBAIJGetSeqBAIJ(A, &diagonal, &off_process, &ghost_blocks));
+  PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
+  IS from;
+  Vec x;
+  PetscCall(ISCreateBlock(PETSC_COMM_SELF, 2, ghost_columns / 2, ghost_blocks, PETSC_COPY_VALUES, &from));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, ghost_columns, &ghosts_));
+  spread_ghosts_.resize(ghost_columns / 2);
+  PetscCall(MatCreateVecs(A, &x, nullptr));
+  PetscCall(VecScatterCreate(x, from, ghosts_, nullptr, &scatter_));
+  PetscCall(VecDestroy(&x));
+  PetscCall(ISDestroy(&from));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BlockKernel::CopyArrays() const {
+  PetscFunctionBeginUser;
+  PetscBool mpi;
+  PetscCall(PetscObjectTypeCompare((PetscObject)A_, MATMPIBAIJ, &mpi));
+  if (mpi) {
+    Mat diagonal, off_process;
+    PetscInt ghost_columns;
+    PetscCall(MatMPIBAIJGetSeqBAIJ(A_, &diagonal, &off_process, nullptr));
+    PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
+    PetscCheck(!scatter_ || ghost_columns == 2 * static_cast<PetscInt>(spread_ghosts_.size()), PETSC_COMM_SELF,
+               PETSC_ERR_ARG_WRONGSTATE, "block kernel: the matrix has new ghost columns since Setup: call Setup again");
+    PetscCall(CopyPart(diagonal, false, &diagonal_));
+    PetscCall(CopyPart(off_process, true, &off_process_));
+  } else {
+    PetscCall(CopyPart(A_, false, &diagonal_));
+  }
+  PetscCall(PetscObjectStateGet((PetscObject)A_, &state_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
+  PetscFunctionBeginUser;
+  PetscCheck(A_, PetscObjectComm((PetscObject)x), PETSC_ERR_ORDER, "block kernel: Apply before Setup");
+  PetscCheck(x != y, PetscObjectComm((PetscObject)x), PETSC_ERR_ARG_IDN, "block kernel: x and y must differ");
+  PetscObjectState state;
+  PetscCall(PetscObjectStateGet((PetscObject)A_, &state));
+  if (state != state_) PetscCall(CopyArrays());  // A was rescaled or reassembled since
+  PetscCall(PetscLogEventBegin(event_, A_, x, y, 0));
+  // Ghosts travel while the diagonal part is summed.
+  if (scatter_) PetscCall(VecScatterBegin(scatter_, x, ghosts_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar* xa;
+  PetscScalar* ya;
+  PetscCall(VecGetArrayRead(x, &xa));
+  PetscCall(VecGetArrayWrite(y, &ya));
+  SpreadPairs(xa, static_cast<std::int32_t>(spread_.size()), spread_.data());
+  BlockCsrApply(diagonal_, spread_.data(), ya, false, wide_);
+  if (scatter_) {
+    const PetscScalar* ghost;
+    PetscCall(VecScatterEnd(scatter_, x, ghosts_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(ghosts_, &ghost));
+    SpreadPairs(ghost, static_cast<std::int32_t>(spread_ghosts_.size()), spread_ghosts_.data());
+    BlockCsrApply(off_process_, spread_ghosts_.data(), ya, true, wide_);
+    PetscCall(VecRestoreArrayRead(ghosts_, &ghost));
+  }
+  PetscCall(VecRestoreArrayWrite(y, &ya));
+  PetscCall(VecRestoreArrayRead(x, &xa));
+  PetscCall(PetscLogFlops(8.0 * (diagonal_.value.size() + off_process_.value.size())));
+  PetscCall(PetscLogEventEnd(event_, A_, x, y, 0));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::wave
