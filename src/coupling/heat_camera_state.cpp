@@ -18,33 +18,14 @@ std::vector<long long> OwnedPixels(Vec v) {
   return keys;
 }
 
-std::vector<double> Values(Vec v) {
-  const PetscScalar* a;
-  PetscInt n;
-  VecGetLocalSize(v, &n);
-  VecGetArrayRead(v, &a);
-  std::vector<double> values(a, a + n);
-  VecRestoreArrayRead(v, &a);
-  return values;
-}
-
-PetscErrorCode SetValues(Vec v, const std::vector<double>& values) {
-  PetscFunctionBeginUser;
-  PetscScalar* a;
-  PetscCall(VecGetArray(v, &a));
-  std::copy(values.begin(), values.end(), a);
-  PetscCall(VecRestoreArray(v, &a));
-  PetscFunctionReturn(0);
-}
-
 }  // namespace
 
 PetscErrorCode HeatCamera::Save(io::Checkpoint& checkpoint) const {
   PetscFunctionBeginUser;
   checkpoint.PutShared("camera/clock", {static_cast<double>(frame_), t_prev_});
   const std::vector<long long> keys = OwnedPixels(previous_);
-  checkpoint.PutKeyed("camera/previous", keys, 1, Values(previous_));
-  checkpoint.PutKeyed("camera/integral", keys, 1, Values(integral_));
+  PetscCall(io::PutOwnedValues(checkpoint, "camera/previous", keys, previous_));
+  PetscCall(io::PutOwnedValues(checkpoint, "camera/integral", keys, integral_));
   // Rank 0 holds these: the checkpoint keeps rank 0's copy of shared items.
   std::ostringstream noise;
   noise << random_;
@@ -57,15 +38,13 @@ PetscErrorCode HeatCamera::Save(io::Checkpoint& checkpoint) const {
 
 PetscErrorCode HeatCamera::Restore(const io::Checkpoint& checkpoint, const std::string& dir) {
   PetscFunctionBeginUser;
-  std::vector<double> clock, values, times;
+  std::vector<double> clock, times;
   PetscCall(checkpoint.GetShared("camera/clock", &clock, 2));
   frame_ = static_cast<PetscInt>(clock[0]);
   t_prev_ = clock[1];
   const std::vector<long long> keys = OwnedPixels(previous_);
-  PetscCall(checkpoint.GetKeyed("camera/previous", keys, 1, &values));
-  PetscCall(SetValues(previous_, values));
-  PetscCall(checkpoint.GetKeyed("camera/integral", keys, 1, &values));
-  PetscCall(SetValues(integral_, values));
+  PetscCall(io::GetOwnedValues(checkpoint, "camera/previous", keys, previous_));
+  PetscCall(io::GetOwnedValues(checkpoint, "camera/integral", keys, integral_));
   std::string noise;
   PetscCall(checkpoint.GetText("camera/noise", &noise));
   std::istringstream(noise) >> random_;
