@@ -10,6 +10,48 @@
 
 namespace vibrotherm::coupling {
 
+namespace {
+
+/// Every value given must be usable: refused naming the option, never silently replaced by the default.
+PetscErrorCode CheckDriverOptions(MPI_Comm comm, PetscBool final_set, PetscBool couple_set, DriverOptions* o) {
+  PetscFunctionBeginUser;
+  // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
+  PetscCheck(o->probe_points.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "-probe_points needs x,y pairs, got %zu numbers", o->probe_points.size());
+  for (double s : o->crack_probes)
+    PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);
+  std::sort(o->output_times.begin(), o->output_times.end());
+  for (double t : o->output_times)
+    PetscCheck(t >= 0.0, comm, PETSC_ERR_USER_INPUT, "-output_times: times must be >= 0, got %g", t);
+  PetscCheck(o->crack_state_every >= 0, comm, PETSC_ERR_USER_INPUT, "-crack_state_every must be >= 0");
+  PetscCheck(o->crack_probe_crack >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-crack_probe_crack must be >= 1 (cracks are numbered from 1), got %" PetscInt_FMT, o->crack_probe_crack);
+  // Given values must be usable: never silently replaced by the default.
+  PetscCheck(!final_set || (o->final_time > 0.0 && std::isfinite(o->final_time)), comm, PETSC_ERR_USER_INPUT,
+             "-final_time must be > 0 and finite, got %g", o->final_time);
+  PetscCheck(!couple_set || (o->couple_dt > 0.0 && std::isfinite(o->couple_dt)), comm, PETSC_ERR_USER_INPUT,
+             "-couple_dt must be > 0 and finite, got %g", o->couple_dt);
+  PetscCheck(o->checkpoint_every_s >= 0.0 && std::isfinite(o->checkpoint_every_s), comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every_s must be >= 0 and finite, got %g", o->checkpoint_every_s);
+  PetscCheck(o->max_steps >= 1.0 && std::isfinite(o->max_steps), comm, PETSC_ERR_USER_INPUT,
+             "-max_steps must be >= 1 and finite, got %g", o->max_steps);
+  // PETSc counts steps in a PetscInt: a larger count would wrap around (a run "done in 1 step").
+  PetscCheck(o->max_steps <= static_cast<double>(PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT,
+             "-max_steps must be <= %g (PETSc's step counter), got %g", static_cast<double>(PETSC_MAX_INT),
+             o->max_steps);
+  PetscCheck(o->heat_substeps >= 1, comm, PETSC_ERR_USER_INPUT, "-heat_substeps must be >= 1, got %" PetscInt_FMT,
+             o->heat_substeps);
+  PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");
+  PetscCheck(o->probe_every >= 1, comm, PETSC_ERR_USER_INPUT, "-probe_every must be >= 1");
+  PetscCheck(o->quiet_fraction >= 0.0 && o->quiet_fraction < 1.0, comm, PETSC_ERR_USER_INPUT,
+             "-wave_quiet_fraction must be in [0, 1), got %g", o->quiet_fraction);
+  PetscCheck(o->heat_crack_power >= 0.0, comm, PETSC_ERR_USER_INPUT, "-heat_crack_power must be >= 0, got %g",
+             o->heat_crack_power);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   PetscFunctionBeginUser;
   PetscBool final_set = PETSC_FALSE, couple_set = PETSC_FALSE;
@@ -63,38 +105,7 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
   o->physics = static_cast<PhysicsChoice>(physics);
   o->heat = static_cast<HeatChoice>(heat);
   o->thermoelastic = static_cast<ThermoelasticChoice>(thermoelastic);
-  // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
-  PetscCheck(o->probe_points.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-             "-probe_points needs x,y pairs, got %zu numbers", o->probe_points.size());
-  for (double s : o->crack_probes)
-    PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);
-  std::sort(o->output_times.begin(), o->output_times.end());
-  for (double t : o->output_times)
-    PetscCheck(t >= 0.0, comm, PETSC_ERR_USER_INPUT, "-output_times: times must be >= 0, got %g", t);
-  PetscCheck(o->crack_state_every >= 0, comm, PETSC_ERR_USER_INPUT, "-crack_state_every must be >= 0");
-  PetscCheck(o->crack_probe_crack >= 1, comm, PETSC_ERR_USER_INPUT,
-             "-crack_probe_crack must be >= 1 (cracks are numbered from 1), got %" PetscInt_FMT, o->crack_probe_crack);
-  // Given values must be usable: never silently replaced by the default.
-  PetscCheck(!final_set || (o->final_time > 0.0 && std::isfinite(o->final_time)), comm, PETSC_ERR_USER_INPUT,
-             "-final_time must be > 0 and finite, got %g", o->final_time);
-  PetscCheck(!couple_set || (o->couple_dt > 0.0 && std::isfinite(o->couple_dt)), comm, PETSC_ERR_USER_INPUT,
-             "-couple_dt must be > 0 and finite, got %g", o->couple_dt);
-  PetscCheck(o->checkpoint_every_s >= 0.0 && std::isfinite(o->checkpoint_every_s), comm, PETSC_ERR_USER_INPUT,
-             "-checkpoint_every_s must be >= 0 and finite, got %g", o->checkpoint_every_s);
-  PetscCheck(o->max_steps >= 1.0 && std::isfinite(o->max_steps), comm, PETSC_ERR_USER_INPUT,
-             "-max_steps must be >= 1 and finite, got %g", o->max_steps);
-  // PETSc counts steps in a PetscInt: a larger count would wrap around (a run "done in 1 step").
-  PetscCheck(o->max_steps <= static_cast<double>(PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT,
-             "-max_steps must be <= %g (PETSc's step counter), got %g", static_cast<double>(PETSC_MAX_INT),
-             o->max_steps);
-  PetscCheck(o->heat_substeps >= 1, comm, PETSC_ERR_USER_INPUT, "-heat_substeps must be >= 1, got %" PetscInt_FMT,
-             o->heat_substeps);
-  PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");
-  PetscCheck(o->probe_every >= 1, comm, PETSC_ERR_USER_INPUT, "-probe_every must be >= 1");
-  PetscCheck(o->quiet_fraction >= 0.0 && o->quiet_fraction < 1.0, comm, PETSC_ERR_USER_INPUT,
-             "-wave_quiet_fraction must be in [0, 1), got %g", o->quiet_fraction);
-  PetscCheck(o->heat_crack_power >= 0.0, comm, PETSC_ERR_USER_INPUT, "-heat_crack_power must be >= 0, got %g",
-             o->heat_crack_power);
+  PetscCall(CheckDriverOptions(comm, final_set, couple_set, o));
   PetscFunctionReturn(0);
 }
 
