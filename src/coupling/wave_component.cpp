@@ -56,6 +56,22 @@ PetscErrorCode WarnAboutTheSource(DM dm, const Scene& scene, double dt) {
   PetscFunctionReturn(0);
 }
 
+/// Levels of local time stepping in summary.json: steps, cells and dofs per level, the contact's, the bound.
+void ReportLevels(const wave::LtsStepper& lts, io::RunSummary* summary) {
+  summary->derived["wave_lts_levels"] = static_cast<double>(lts.levels());
+  summary->derived["wave_lts_speedup_bound"] = lts.speedup_bound();
+  summary->derived["wave_lts_contact_level"] = static_cast<double>(lts.contact_level());
+  for (PetscInt l = 0; l < lts.levels(); ++l) {
+    const std::string key = "wave_lts_level" + std::to_string(l);
+    summary->derived[key + "_dt"] = std::ldexp(lts.macro_step(), -static_cast<int>(l));
+    summary->derived[key + "_cells"] = static_cast<double>(lts.info()[l].cells);
+    summary->derived[key + "_dofs"] = static_cast<double>(lts.info()[l].dofs);
+  }
+  summary->derived_rules["wave_lts"] =
+      "on: level l steps H/2^l (wave_lts_level<l>_dt, _cells, _dofs: cells of the level, dofs moving at its rate); "
+      "speed-up bound: cell updates at the finest element step over those of the levels";
+}
+
 }  // namespace
 
 PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
@@ -74,6 +90,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     summary->contact_cells = crack_->global_cells();
   }
   PetscCall(stage.End(&summary->stages["wave_setup"]));
+  PetscCall(solver_->ViewLts());
   summary->derived["wave_dt"] = solver_->dt();
   summary->derived["wave_stable_dt"] = solver_->stable_dt();
   const char* rule = scene.wave.contact_step == wave::ContactStepRule::kWorstCase
@@ -82,6 +99,14 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
                          : "-wave_cfl x the stability limit (bulk, and the contact at its initial approach), rounded down "
                            "to 4 digits; shrunk when the contact stiffens (wave_dt_reductions, wave_dt_final)";
   summary->derived_rules["wave_dt"] = scene.wave.dt > 0 ? "-wave_dt" : rule;
+  if (solver_->lts_active()) {
+    summary->derived_rules["wave_dt"] =
+        "local time stepping: the macro step H, the largest 2^l x -wave_lts_cfl x level l's own stability limit, "
+        "rounded down to 4 digits (levels: wave_lts_*)";
+    ReportLevels(solver_->lts(), summary);
+  } else if (scene.wave.lts.on) {
+    summary->derived_rules["wave_lts"] = solver_->lts_note();
+  }
   PetscCall(WarnAboutTheSource(specimen.wave, scene, solver_->dt()));
   // Refused now, not after hours: the step count the run would need (the waves may stop earlier when quiet).
   const double steps = std::ceil(scene.final_time / solver_->dt());
@@ -132,6 +157,7 @@ PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
   }
   summary->wave_dt_reductions = solver_->dt_reductions();
   summary->derived["wave_dt_final"] = solver_->dt();
+  if (solver_->lts_active()) ReportLevels(solver_->lts(), summary);
   summary->dofs_wave = solver_->dofs();
   summary->steps_wave = solver_->steps();
   solver_->on_step = nullptr;

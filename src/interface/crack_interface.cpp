@@ -279,6 +279,20 @@ PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CrackInterface::MarkDofs(Vec marker) {
+  PetscFunctionBeginUser;
+  PetscScalar* F;
+  PetscCall(VecGetArray(direct_ ? marker : f_local_, &F));
+  for (std::size_t i = 0; i < cells_.size(); ++i)
+    for (int k = 0; k < 4; ++k) F[direct_ ? Slot(i, k) : 4 * i + k] = 1.0;
+  PetscCall(VecRestoreArray(direct_ ? marker : f_local_, &F));
+  if (!direct_) {
+    PetscCall(VecScatterBegin(scatter_, f_local_, marker, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(scatter_, f_local_, marker, ADD_VALUES, SCATTER_REVERSE));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();

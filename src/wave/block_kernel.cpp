@@ -40,7 +40,7 @@ BlockKernel::~BlockKernel() {
   (void)VecDestroy(&ghosts_);
 }
 
-PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide) {
+PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide, bool compress_rows) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)A);
   PetscInt bs;
@@ -54,6 +54,7 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide) {
   if (event_ < 0) PetscCall(PetscLogEventRegister("WaveBlockMult", MAT_CLASSID, &event_));
   A_ = A;
   wide_ = allow_wide && WideKernelAvailable();
+  compress_rows_ = compress_rows;
   PetscCall(VecScatterDestroy(&scatter_));
   PetscCall(VecDestroy(&ghosts_));
   PetscCall(CopyArrays());
@@ -90,10 +91,10 @@ PetscErrorCode BlockKernel::CopyArrays() const {
     PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
     PetscCheck(!scatter_ || ghost_columns == 2 * static_cast<PetscInt>(spread_ghosts_.size()), PETSC_COMM_SELF,
                PETSC_ERR_ARG_WRONGSTATE, "block kernel: the matrix has new ghost columns since Setup: call Setup again");
-    PetscCall(CopyPart(diagonal, false, &diagonal_));
+    PetscCall(CopyPart(diagonal, compress_rows_, &diagonal_));
     PetscCall(CopyPart(off_process, true, &off_process_));
   } else {
-    PetscCall(CopyPart(A_, false, &diagonal_));
+    PetscCall(CopyPart(A_, compress_rows_, &diagonal_));
   }
   PetscCall(PetscObjectStateGet((PetscObject)A_, &state_));
   PetscFunctionReturn(0);

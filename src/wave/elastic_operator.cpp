@@ -1,6 +1,7 @@
 #include "vibrotherm/wave/elastic_operator.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 namespace vibrotherm::wave {
@@ -22,43 +23,80 @@ void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, doub
   }
 }
 
-PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
-                                        Vec* lumped_mass) {
+void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double* me) {
+  const int Nb = q.nodes;
+  std::vector<double> row_sum(Nb, 0.0), diag(Nb, 0.0);
+  double cell_mass = 0.0;
+  for (int p = 0; p < q.points; ++p) {
+    const double w = q.weight[p];
+    const double* phi = q.value + p * Nb;
+    cell_mass += w * rho;
+    for (int a = 0; a < Nb; ++a) {
+      row_sum[a] += w * rho * phi[a];
+      diag[a] += w * rho * phi[a] * phi[a];
+    }
+  }
+  double diag_sum = 0.0;
+  for (double d : diag) diag_sum += d;
+  for (int a = 0; a < Nb; ++a) me[2 * a] = me[2 * a + 1] = hrz ? diag[a] * cell_mass / diag_sum : row_sum[a];
+}
+
+namespace {
+
+/// K += the element stiffness of the cells `include` accepts (by index in
+/// space.cells()); mass_local (if given) += their lumped masses.
+PetscErrorCode AddCells(const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                        const std::function<bool(std::size_t)>& include, Mat K, Vec mass_local) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
   PetscSection section;
   PetscCall(DMGetLocalSection(dm, &section));
+  const double lambda = material.lambda(), G = material.shear_modulus();
+  const int n = 2 * space.nodes_per_cell();
+  const bool hrz = space.simplex() && space.degree() == 2;
+  std::vector<PetscScalar> Ke(n * n), me(n);
+  fe::CellQuadrature q;
+  for (std::size_t k = 0; k < space.cells().size(); ++k) {
+    if (include && !include(k)) continue;
+    const PetscInt c = space.cells()[k];
+    PetscCall(space.Evaluate(c, &q));
+    ElementStiffness(q, lambda, G, Ke.data());
+    PetscCall(DMPlexMatSetClosure(dm, section, nullptr, K, c, Ke.data(), ADD_VALUES));
+    if (!mass_local) continue;
+    ElementLumpedMass(q, material.density, hrz, me.data());
+    PetscCall(DMPlexVecSetClosure(dm, section, mass_local, c, me.data(), ADD_VALUES));
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode AssembleElasticStiffness(const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                                        const std::function<bool(std::size_t)>& include, Mat* K) {
+  PetscFunctionBeginUser;
+  // Only the entries of these cells: DMPlex would otherwise store the whole
+  // mesh's pattern as explicit zeros (and every product would pay for them).
+  // (vibrotherm never sets preallocate-only elsewhere: back to PETSc's default after.)
+  PetscCall(DMSetMatrixPreallocateOnly(space.dm(), PETSC_TRUE));
+  PetscCall(DMCreateMatrix(space.dm(), K));
+  PetscCall(DMSetMatrixPreallocateOnly(space.dm(), PETSC_FALSE));
+  PetscCall(MatSetOption(*K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(AddCells(space, material, include, *K, nullptr));
+  PetscCall(MatAssemblyBegin(*K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*K, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
+                                        Vec* lumped_mass) {
+  PetscFunctionBeginUser;
+  DM dm = space.dm();
   PetscCall(DMCreateMatrix(dm, K));
   PetscCall(MatSetOption(*K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   Vec mass_local;
   PetscCall(DMGetLocalVector(dm, &mass_local));
   PetscCall(VecSet(mass_local, 0.0));
-
-  const double lambda = material.lambda(), G = material.shear_modulus(), rho = material.density;
-  const int Nb = space.nodes_per_cell(), n = 2 * Nb;
-  const bool hrz = space.simplex() && space.degree() == 2;
-  std::vector<PetscScalar> Ke(n * n), me(n);
-  fe::CellQuadrature q;
-  for (PetscInt c : space.cells()) {
-    PetscCall(space.Evaluate(c, &q));
-    std::vector<double> row_sum(Nb, 0.0), diag(Nb, 0.0);
-    double cell_mass = 0.0;
-    for (int p = 0; p < q.points; ++p) {
-      const double w = q.weight[p];
-      const double* phi = q.value + p * Nb;
-      cell_mass += w * rho;
-      for (int a = 0; a < Nb; ++a) {
-        row_sum[a] += w * rho * phi[a];
-        diag[a] += w * rho * phi[a] * phi[a];
-      }
-    }
-    ElementStiffness(q, lambda, G, Ke.data());
-    double diag_sum = 0.0;
-    for (double d : diag) diag_sum += d;
-    for (int a = 0; a < Nb; ++a) me[2 * a] = me[2 * a + 1] = hrz ? diag[a] * cell_mass / diag_sum : row_sum[a];
-    PetscCall(DMPlexMatSetClosure(dm, section, nullptr, *K, c, Ke.data(), ADD_VALUES));
-    PetscCall(DMPlexVecSetClosure(dm, section, mass_local, c, me.data(), ADD_VALUES));
-  }
+  PetscCall(AddCells(space, material, nullptr, *K, mass_local));
   PetscCall(MatAssemblyBegin(*K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*K, MAT_FINAL_ASSEMBLY));
   PetscCall(DMCreateGlobalVector(dm, lumped_mass));

@@ -13,6 +13,8 @@ struct VerletData {
   Vec q = nullptr, p = nullptr;           ///< views of the state
   Vec q_update = nullptr, p_update = nullptr;
   PetscBool position_rate_is_momentum = PETSC_FALSE;  ///< q̇ = p: drifts skip the RHS call
+  VelocityVerletMacroStep macro = nullptr;             ///< the caller's multi-rate step, if any
+  void* macro_ctx = nullptr;
 };
 
 /// Local offset and size of a contiguous split inside the state vector.
@@ -72,12 +74,17 @@ PetscErrorCode Step(TS ts) {
   auto* d = static_cast<VerletData*>(ts->data);
   PetscCall(UpdateViews(ts, d));
   const PetscReal h = ts->time_step;
-  PetscCall(Drift(ts, d, h));
-  ts->ptime = ts->ptime + 0.5 * h;
-  PetscCall(TSComputeRHSFunction(d->sub_p, ts->ptime, d->q, d->p_update));
-  PetscCall(VecAXPY(d->p, h, d->p_update));
-  PetscCall(Drift(ts, d, h));
-  ts->ptime = ts->ptime + 0.5 * h;
+  if (d->macro) {
+    PetscCall(d->macro(d->macro_ctx, ts->ptime, h, d->q, d->p));
+    ts->ptime = ts->ptime + h;
+  } else {
+    PetscCall(Drift(ts, d, h));
+    ts->ptime = ts->ptime + 0.5 * h;
+    PetscCall(TSComputeRHSFunction(d->sub_p, ts->ptime, d->q, d->p_update));
+    PetscCall(VecAXPY(d->p, h, d->p_update));
+    PetscCall(Drift(ts, d, h));
+    ts->ptime = ts->ptime + 0.5 * h;
+  }
   PetscScalar* x;  // the state changed through the views
   PetscCall(VecGetArray(ts->vec_sol, &x));
   PetscCall(VecRestoreArray(ts->vec_sol, &x));
@@ -132,6 +139,18 @@ PetscErrorCode VelocityVerletSetPositionRateIsMomentum(TS ts, PetscBool identity
   PetscBool ours;
   PetscCall(PetscObjectTypeCompare((PetscObject)ts, kVelocityVerletTS, &ours));
   if (ours) static_cast<VerletData*>(ts->data)->position_rate_is_momentum = identity;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode VelocityVerletSetMacroStep(TS ts, VelocityVerletMacroStep macro, void* ctx) {
+  PetscFunctionBeginUser;
+  PetscBool ours;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, kVelocityVerletTS, &ours));
+  PetscCheck(ours, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
+             "local time stepping needs -wave_ts_type velocityverlet");
+  auto* d = static_cast<VerletData*>(ts->data);
+  d->macro = macro;
+  d->macro_ctx = ctx;
   PetscFunctionReturn(0);
 }
 

@@ -11,6 +11,8 @@ PetscErrorCode WaveSolver::SetBodyForce(BodyForce* force) {
   if (!force) PetscFunctionReturn(0);
   PetscCheck(!second_order_, comm, PETSC_ERR_SUP,
              "%s with -wave_ts_type alpha2 is not supported yet: use an explicit type", force->name());
+  PetscCheck(!lts_active_, comm, PETSC_ERR_SUP,
+             "%s with local time stepping is not supported yet: add -wave_lts off", force->name());
   // The step is fixed before the first step: velocity Verlet's conserved energy depends on it.
   PetscCheck(steps_ == 0, comm, PETSC_ERR_ORDER, "%s: a body force is attached before the first wave step",
              force->name());

@@ -18,7 +18,12 @@ PetscErrorCode WaveSolver::AccountStep(double t, double h) {
   const bool end_state_forces =
       !reaction_from_kick_ && std::any_of(terms_.begin(), terms_.end(),
                                           [](const auto& term) { return term->needs_end_state_forces(); });
-  if (end_state_forces) PetscCall(Acceleration(t, u, v, force_, 0.0));  // the supports' forces at the end state
+  if (end_state_forces && lts_active_) {  // the level forces of the end state, no new product
+    PetscCall(lts_.InteriorAcceleration(force_));
+    PetscCall(ApplyTerms(t, v, force_, 0.0));
+  } else if (end_state_forces) {
+    PetscCall(Acceleration(t, u, v, force_, 0.0));  // the supports' forces at the end state
+  }
   StepState state;
   state.start = SignalValues::At(excitation_.signal, t - h);
   state.middle = SignalValues::At(excitation_.signal, t - 0.5 * h);
@@ -38,6 +43,13 @@ PetscErrorCode WaveSolver::IntegratorTerm(double dt, double* term) const {
   PetscFunctionBeginUser;
   *term = 0.0;
   if (!velocity_verlet_) PetscFunctionReturn(0);
+  if (lts_active_) {
+    Vec u, v;
+    PetscCall(GetFields(&u, &v));
+    PetscCall(lts_.IntegratorTerm(u, term));
+    PetscCall(RestoreFields(&u, &v));
+    PetscFunctionReturn(0);
+  }
   // With A = −M⁻¹K: vᵀKv = −(M∘v)·(A v).
   Vec u, v, Av, Mv;
   PetscCall(GetFields(&u, &v));

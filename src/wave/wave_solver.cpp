@@ -28,7 +28,26 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
                               "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or "
                               "blocked (2x2-block loop, same result to rounding)",
                               {"petsc", "blocked"}, &o->kernel));
+  enum class Switch { kOff, kOn };
+  Switch lts = o->lts.on ? Switch::kOn : Switch::kOff;
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_lts",
+                              "Clustered local time stepping: cells step at rates 2^-l of the macro step by their own "
+                              "stability limit (on) or all at the smallest cell's step (off)",
+                              {"off", "on"}, &lts));
+  o->lts.on = lts == Switch::kOn;
+  PetscCall(PetscOptionsInt("-wave_lts_max_levels", "Most levels of local time stepping (rate 2 each)", nullptr,
+                            o->lts.max_levels, &o->lts.max_levels, nullptr));
+  PetscCall(PetscOptionsReal("-wave_lts_cfl", "Each LTS level's step as a fraction of its own stability limit", nullptr,
+                             o->lts.cfl, &o->lts.cfl, nullptr));
+  PetscCall(PetscOptionsReal("-wave_lts_wiggle", "LTS cluster boundaries: the finest step times this factor in (0.5, 1]",
+                             nullptr, o->lts.wiggle, &o->lts.wiggle, nullptr));
   PetscOptionsEnd();
+  PetscCheck(o->lts.max_levels >= 1 && o->lts.max_levels <= 12, comm, PETSC_ERR_USER_INPUT,
+             "-wave_lts_max_levels must be in [1, 12], got %" PetscInt_FMT, o->lts.max_levels);
+  PetscCheck(o->lts.cfl > 0.0 && o->lts.cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_lts_cfl must be in (0, 1], got %g",
+             o->lts.cfl);
+  PetscCheck(o->lts.wiggle > 0.5 && o->lts.wiggle <= 1.0, comm, PETSC_ERR_USER_INPUT,
+             "-wave_lts_wiggle must be in (0.5, 1], got %g", o->lts.wiggle);
   PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
              o->degree);
   PetscCheck(o->cfl > 0.0 && o->cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_cfl must be in (0, 1], got %g", o->cfl);
@@ -76,6 +95,7 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(VecDuplicate(M_, &force_));
   PetscCall(CreateTS(comm));
   PetscCall(SetupStepControl(comm));
+  PetscCall(SetupLts(comm));
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscCall(TSSetTime(ts_, 0.0));
   PetscFunctionReturn(0);
@@ -171,6 +191,12 @@ PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double ki
   PetscCall(ApplyStepping(u, a));  // −M⁻¹K u
   if (interface_) PetscCall(interface_->AddAcceleration(u, a));
   if (body_) PetscCall(AddBodyForce(t, u, a));
+  PetscCall(ApplyTerms(t, v, a, kick_dt));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::ApplyTerms(double t, Vec v, Vec a, double kick_dt) {
+  PetscFunctionBeginUser;
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);
   state.kick_dt = kick_dt;
@@ -225,6 +251,11 @@ PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface, double worst_a
   double omega2;
   if (options_.contact_step == ContactStepRule::kWorstCase) PetscCall(interface_->MaxFrequencySquared(&omega2, worst_approach));
   else PetscCall(interface_->MaxFrequencySquared(&omega2));
+  if (lts_active_) {  // the contact in a level of its own stiffness: H stays
+    PetscCall(lts_.SetContact(interface_, omega2));
+    lts_started_ = false;
+    PetscFunctionReturn(0);
+  }
   step_.IncludeContact(omega2);
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscCall(CheckStableStep());
@@ -233,7 +264,7 @@ PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface, double worst_a
 
 PetscErrorCode WaveSolver::CheckStableStep() {
   PetscFunctionBeginUser;
-  if (!interface_ || step_.implicit()) PetscFunctionReturn(0);
+  if (!interface_ || step_.implicit() || lts_active_) PetscFunctionReturn(0);
   double omega2, before = step_.dt(), term_before = 0.0, term_after = 0.0;
   bool changed;
   PetscCall(interface_->MaxFrequencySquared(&omega2));
@@ -263,7 +294,7 @@ PetscErrorCode WaveSolver::PostStep(TS ts) {
   for (const auto& term : self->terms_) term->Impose(signal, U, V);
   PetscCall(VecRestoreArray(v, &V));
   PetscCall(VecRestoreArray(u, &U));
-  if (self->interface_) PetscCall(self->interface_->Commit(u, h));
+  if (self->interface_ && !self->lts_active_) PetscCall(self->interface_->Commit(u, h));  // LTS: in its substeps
   PetscCall(self->RestoreFields(&u, &v));
   PetscCall(self->AccountStep(t, h));
   self->reaction_from_kick_ = false;

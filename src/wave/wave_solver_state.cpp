@@ -22,6 +22,9 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   checkpoint.PutShared("wave/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps),
                                       integrator_offset_});
   checkpoint.PutShared("wave/step_control", step_.state());
+  if (lts_active_)
+    checkpoint.PutShared("wave/lts", {static_cast<double>(lts_.contact_level()),
+                                      static_cast<double>(lts_.contact_refinements())});
   std::vector<double> accounts = {accounted_.radiated, accounted_.work_source, body_work_};
   for (const auto& term : terms_)
     for (double value : term->SavedAccount()) accounts.push_back(value);
@@ -51,6 +54,12 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   steps_ = static_cast<PetscInt>(clock[1]);
   integrator_offset_ = clock[3];
   step_.set_state(control);
+  if (lts_active_) {  // the contact's level; the level forces are recomputed from the state
+    std::vector<double> lts;
+    PetscCall(checkpoint.GetShared("wave/lts", &lts, 2));
+    PetscCall(lts_.set_contact_state(static_cast<PetscInt>(lts[0]), static_cast<PetscInt>(lts[1])));
+    lts_started_ = false;
+  }
   PetscCall(TSSetTime(ts_, time_));
   PetscCall(TSSetStepNumber(ts_, static_cast<PetscInt>(clock[2])));
   PetscCall(TSSetTimeStep(ts_, step_.dt()));

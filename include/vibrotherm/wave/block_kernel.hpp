@@ -39,7 +39,9 @@ class BlockKernel {
   /// Takes A's pattern and values and builds the ghost scatter (collective).
   /// A: SEQBAIJ or MPIBAIJ with block size 2, square, assembled. allow_wide:
   /// the AVX2 path where the machine has it (false: the portable path, for tests).
-  PetscErrorCode Setup(Mat A, bool allow_wide = true);
+  /// compress_rows: only the block rows with entries are written by Apply (the
+  /// others keep their values): a level of local time stepping.
+  PetscErrorCode Setup(Mat A, bool allow_wide = true, bool compress_rows = false);
   /// Whether Apply runs the AVX2 path.
   bool wide() const { return wide_; }
   /// y = A x; x and y have A's layout and must not alias (collective). Const
@@ -56,7 +58,7 @@ class BlockKernel {
   Vec ghosts_ = nullptr;
   mutable std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
   PetscLogEvent event_ = -1;
-  bool wide_ = false;
+  bool wide_ = false, compress_rows_ = false;
 };
 
 }  // namespace vibrotherm::wave

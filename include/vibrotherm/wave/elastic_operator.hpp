@@ -11,6 +11,8 @@
 
 #include <petscmat.h>
 
+#include <functional>
+
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/wave/material.hpp"
 
@@ -19,6 +21,13 @@ namespace vibrotherm::wave {
 /// The element stiffness of one cell (2·nodes square, node-major, components
 /// interleaved as the cell closure), from its quadrature data.
 void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, double* Ke);
+/// The lumped mass of one cell (2·nodes entries, both components of a node
+/// share its mass): row sums, or HRZ (hrz: P2 triangles).
+void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double* me);
+/// Creates and assembles the stiffness of the cells `include` accepts (by index
+/// in space.cells(); null: all) on the DM's full pattern (unused entries dropped at assembly).
+PetscErrorCode AssembleElasticStiffness(const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                                        const std::function<bool(std::size_t)>& include, Mat* K);
 /// Creates and assembles K (global, from DMCreateMatrix) and the lumped mass (global vector).
 PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
                                         Vec* lumped_mass);

@@ -47,6 +47,8 @@ class StepControl {
   void set_state(const std::vector<double>& s) {
     dt_ = s.at(0), stable_dt_ = s.at(1), reductions_ = static_cast<PetscInt>(s.at(2));
   }
+  /// Local time stepping: the step is the macro step H, fixed (the contact's level changes instead).
+  void UseMacroStep(double H) { dt_ = H; }
   /// Rounded down to 4 significant digits.
   static double RoundDown(double raw);
 

@@ -15,6 +15,11 @@ inline constexpr const char* kVelocityVerletTS = "velocityverlet";
 
 /// Registers the type with TSRegister (once; later calls do nothing).
 PetscErrorCode RegisterVelocityVerletTS();
+
+/// A multi-rate step of the caller's (local time stepping): each step calls
+/// macro(ctx, t, h, position, momentum) instead of drift–kick–drift. Null: the plain step.
+using VelocityVerletMacroStep = PetscErrorCode (*)(void* ctx, PetscReal t, PetscReal h, Vec q, Vec p);
+PetscErrorCode VelocityVerletSetMacroStep(TS ts, VelocityVerletMacroStep macro, void* ctx);
 /// Declares the position split's RHS to be the momentum itself (u̇ = v): the
 /// drifts then add h/2 v directly instead of calling the RHS function, which
 /// would copy v (same operations on the same values: the same bits). Does

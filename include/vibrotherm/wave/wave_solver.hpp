@@ -30,6 +30,7 @@
 #include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
+#include "vibrotherm/wave/lts_stepper.hpp"
 #include "vibrotherm/wave/material.hpp"
 #include "vibrotherm/wave/step_control.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
@@ -45,6 +46,7 @@ struct WaveOptions {
   double dt = 0.0;       ///< -wave_dt: explicit step (0: cfl × limit)
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
   StiffnessKernel kernel = StiffnessKernel::kBlocked;        ///< -wave_kernel petsc|blocked
+  LtsOptions lts;  ///< -wave_lts on|off, -wave_lts_max_levels, -wave_lts_cfl, -wave_lts_wiggle
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
@@ -60,6 +62,8 @@ class WaveInterface {
   /// Largest ω² the interface adds to M⁻¹K at its current state, or with every
   /// cell pressed `extra_approach` beyond its initial approach (for the initial step).
   virtual PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) = 0;
+  /// marker[i] = 1 on the owned dofs its forces act on (local time stepping moves them at the contact's rate).
+  virtual PetscErrorCode MarkDofs(Vec marker) = 0;
   /// Energy stored in the interface and dissipated so far [J/m] (global).
   virtual PetscErrorCode Energies(double* stored, double* dissipated) = 0;
 };
@@ -114,7 +118,13 @@ class WaveSolver {
   double stable_dt() const { return step_.stable_dt(); }
   bool implicit() const { return step_.implicit(); }
   double omega_max() const { return omega_max_; }
-  PetscInt dt_reductions() const { return step_.reductions(); }
+  PetscInt dt_reductions() const { return lts_active_ ? lts_.contact_refinements() : step_.reductions(); }
+  /// Local time stepping: whether it runs, its levels, and why not when asked for but off.
+  bool lts_active() const { return lts_active_; }
+  const LtsStepper& lts() const { return lts_; }
+  const std::string& lts_note() const { return lts_note_; }
+  /// Prints the levels (steps, cells, dofs, the contact's) to stdout of rank 0.
+  PetscErrorCode ViewLts() const;
   PetscInt dofs() const { return global_dofs_; }
   const fe::LagrangeSpace& space() const { return space_; }
   /// Displacement and velocity (global vectors of the DM; views on the state's
@@ -147,6 +157,11 @@ class WaveSolver {
   PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
   /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
   PetscErrorCode CheckStableStep();
+  // Local time stepping (wave_lts.cpp).
+  PetscErrorCode SetupLts(MPI_Comm comm);
+  static PetscErrorCode MacroStep(void* ctx, PetscReal t, PetscReal h, Vec u, Vec v);
+  /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
+  PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
   PetscErrorCode SetupAlpha2(MPI_Comm comm);
   static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
@@ -191,6 +206,9 @@ class WaveSolver {
   BoundaryEnergy accounted_;         ///< this rank's radiated energy and source work so far
   double integrator_offset_ = 0.0;   ///< integrator-term jumps of earlier step changes (global)
   bool reaction_from_kick_ = false;  ///< the constraints' support forces are the last kick's
+  LtsStepper lts_;
+  bool lts_active_ = false, lts_started_ = false;  ///< started: the level forces are those of the state
+  std::string lts_note_;
 };
 
 }  // namespace vibrotherm::wave

@@ -1,0 +1,341 @@
+#include "vibrotherm/wave/lts_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vibrotherm/wave/elastic_operator.hpp"
+#include "vibrotherm/wave/stability.hpp"
+#include "vibrotherm/wave/step_control.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::wave {
+
+struct LtsStepper::Level {
+  Mat A = nullptr;  ///< −M⁻¹K_l; null for a level of the contact alone
+  BlockKernel kernel;
+  std::vector<PetscInt> element_rows;  ///< owned dofs of its cells
+  std::vector<PetscInt> kick_rows;     ///< element rows, and the contact's dofs at the contact level
+  std::vector<PetscInt> contact_only;  ///< contact dofs that are not element rows (their force is the contact's alone)
+  std::vector<PetscInt> drift;         ///< dofs moving at its rate
+  Vec a = nullptr;                     ///< its acceleration at the current state
+  std::unique_ptr<WaveBoundary> boundary;               ///< boundary nodes moving at its rate
+  std::vector<std::unique_ptr<BoundaryTerm>> terms;     ///< acting in its kicks
+  ~Level() {
+    (void)MatDestroy(&A);
+    (void)VecDestroy(&a);
+  }
+};
+
+LtsStepper::LtsStepper() = default;
+LtsStepper::~LtsStepper() { (void)VecDestroy(&scratch_); }
+
+PetscErrorCode LtsStepper::AddLevel() {
+  PetscFunctionBeginUser;
+  PetscCheck(level_.size() < 40, comm_, PETSC_ERR_NOT_CONVERGED,
+             "local time stepping: the crack contact needs more than 40 levels (a step below H/2^40): the contact law is "
+             "too stiff for an explicit step");
+  level_.push_back(std::make_unique<Level>());
+  PetscCall(VecDuplicate(mass_, &level_.back()->a));
+  PetscCall(VecSet(level_.back()->a, 0.0));
+  info_.emplace_back();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::SetupLevel(PetscInt l, const fe::LagrangeSpace& space, const ElasticMaterial& material,
+                                      const LtsLevels& levels, const std::vector<char>& touched) {
+  PetscFunctionBeginUser;
+  Level& L = *level_[l];
+  PetscCall(AssembleElasticStiffness(space, material,
+                                     [&](std::size_t k) { return levels.cell_level[k] == l; }, &L.A));
+  PetscCall(LargestAngularFrequency(L.A, mass_, &info_[l].omega));
+  Vec minus_inverse;
+  PetscCall(VecDuplicate(mass_, &minus_inverse));
+  PetscCall(VecCopy(mass_, minus_inverse));
+  PetscCall(VecReciprocal(minus_inverse));
+  PetscCall(VecScale(minus_inverse, -1.0));
+  PetscCall(MatDiagonalScale(L.A, minus_inverse, nullptr));
+  PetscCall(VecDestroy(&minus_inverse));
+  PetscCall(L.kernel.Setup(L.A, true, true));
+  for (std::size_t i = 0; i < touched.size(); ++i)
+    if (touched[i]) L.element_rows.push_back(static_cast<PetscInt>(i));
+  PetscInt cells = std::count(levels.cell_level.begin(), levels.cell_level.end(), l);
+  PetscCallMPI(MPI_Allreduce(&cells, &info_[l].cells, 1, MPIU_INT, MPI_SUM, comm_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMaterial& material, Vec mass,
+                                 const LtsLevels& levels, const WaveBoundary& boundary, const Excitation& excitation,
+                                 double omega_dt_max, const LtsOptions& options) {
+  PetscFunctionBeginUser;
+  comm_ = PetscObjectComm((PetscObject)space.dm());
+  mass_ = mass;
+  excitation_ = excitation;
+  omega_dt_max_ = omega_dt_max;
+  cfl_ = options.cfl;
+  element_levels_ = levels.levels;
+  PetscCall(VecDuplicate(mass, &scratch_));
+  std::vector<std::vector<char>> touched;
+  PetscCall(DofLevels(space, levels, &element_finest_, &touched));
+  H_ = INFINITY;
+  for (PetscInt l = 0; l < levels.levels; ++l) {
+    PetscCall(AddLevel());
+    PetscCall(SetupLevel(l, space, material, levels, touched[l]));
+    if (info_[l].omega > 0.0) H_ = std::min(H_, std::ldexp(Limit() / info_[l].omega, static_cast<int>(l)));
+  }
+  H_ = StepControl::RoundDown(H_);
+  PetscCall(AssignContactDofs());
+  PetscCall(SetupBoundary(boundary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
+  PetscFunctionBeginUser;
+  // Boundary nodes never hold contact dofs: their level is their cells' finest.
+  for (std::size_t l = 0; l < level_.size(); ++l) {
+    Level& L = *level_[l];
+    L.boundary = std::make_unique<WaveBoundary>();
+    const auto here = [&](PetscInt node) { return element_finest_[2 * node] == static_cast<PetscInt>(l); };
+    for (const Constraint& c : boundary.constraints)
+      if (here(c.node)) L.boundary->constraints.push_back(c);
+    for (const Dashpot& d : boundary.dashpots)
+      if (here(d.node)) L.boundary->dashpots.push_back(d);
+    if (boundary.traction_shape) {
+      PetscCall(VecDuplicate(boundary.traction_shape, &L.boundary->traction_shape));
+      PetscCall(VecCopy(boundary.traction_shape, L.boundary->traction_shape));
+      PetscScalar* s;
+      PetscInt n;
+      PetscCall(VecGetLocalSize(L.boundary->traction_shape, &n));
+      PetscCall(VecGetArray(L.boundary->traction_shape, &s));
+      for (PetscInt i = 0; i < n; ++i)
+        if (element_finest_[i] != static_cast<PetscInt>(l)) s[i] = 0.0;
+      PetscCall(VecRestoreArray(L.boundary->traction_shape, &s));
+    }
+    const bool displacement_source = excitation_.type == SourceType::Displacement;
+    PetscCall(CreateBoundaryTerms(*L.boundary, mass_, displacement_source, &L.terms));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::AssignContactDofs() {
+  PetscFunctionBeginUser;
+  // Each dof drifts at the finest rate acting on it: its cells', or the contact's.
+  std::vector<PetscInt> rate(element_finest_);
+  for (PetscInt i : contact_dofs_) rate[i] = std::max(rate[i], contact_level_);
+  for (std::size_t l = 0; l < level_.size(); ++l) {
+    Level& L = *level_[l];
+    L.drift.clear();
+    L.contact_only.clear();
+    L.kick_rows = L.element_rows;
+    if (static_cast<PetscInt>(l) == contact_level_) {
+      for (PetscInt i : contact_dofs_)
+        if (!std::binary_search(L.element_rows.begin(), L.element_rows.end(), i)) L.contact_only.push_back(i);
+      L.kick_rows.insert(L.kick_rows.end(), L.contact_only.begin(), L.contact_only.end());
+      std::sort(L.kick_rows.begin(), L.kick_rows.end());
+    }
+  }
+  for (std::size_t i = 0; i < rate.size(); ++i) level_[rate[i]]->drift.push_back(static_cast<PetscInt>(i));
+  for (std::size_t l = 0; l < level_.size(); ++l) {
+    PetscInt dofs = static_cast<PetscInt>(level_[l]->drift.size());
+    PetscCallMPI(MPI_Allreduce(&dofs, &info_[l].dofs, 1, MPIU_INT, MPI_SUM, comm_));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::SetContact(WaveInterface* contact, double omega2) {
+  PetscFunctionBeginUser;
+  contact_ = contact;
+  PetscCall(VecSet(scratch_, 0.0));
+  PetscCall(contact->MarkDofs(scratch_));
+  const PetscScalar* m;
+  PetscInt n, local_level = 0;
+  PetscCall(VecGetLocalSize(scratch_, &n));
+  PetscCall(VecGetArrayRead(scratch_, &m));
+  contact_dofs_.clear();
+  for (PetscInt i = 0; i < n; ++i)
+    if (PetscRealPart(m[i]) != 0.0) contact_dofs_.push_back(i), local_level = std::max(local_level, element_finest_[i]);
+  PetscCall(VecRestoreArrayRead(scratch_, &m));
+  PetscCallMPI(MPI_Allreduce(&local_level, &contact_level_, 1, MPIU_INT, MPI_MAX, comm_));
+  // The coarsest level at least as fine as the crack's cells that holds the contact's stiffness.
+  for (;; ++contact_level_) {
+    if (contact_level_ >= levels()) PetscCall(AddLevel());
+    const double h = std::ldexp(H_, -static_cast<int>(contact_level_)), w = info_[contact_level_].omega;
+    if (h * std::sqrt(w * w + omega2) <= Limit()) break;
+  }
+  PetscCall(AssignContactDofs());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinements) {
+  PetscFunctionBeginUser;
+  while (contact_ && levels() <= level) PetscCall(AddLevel());
+  contact_level_ = level;
+  refinements_ = refinements;
+  PetscCall(AssignContactDofs());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Force(PetscInt l, double t, double h, Vec u) {
+  PetscFunctionBeginUser;
+  Level& L = *level_[l];
+  if (L.A) PetscCall(L.kernel.Apply(u, L.a));  // writes its rows only
+  if (l != contact_level_ || !contact_) PetscFunctionReturn(0);
+  if (!L.contact_only.empty()) {
+    PetscScalar* a;
+    PetscCall(VecGetArray(L.a, &a));
+    for (PetscInt i : L.contact_only) a[i] = 0.0;
+    PetscCall(VecRestoreArray(L.a, &a));
+  }
+  PetscCall(contact_->AddAcceleration(u, L.a));
+  if (h <= 0.0) PetscFunctionReturn(0);
+  PetscCall(contact_->Commit(u, h));
+  double omega2;
+  PetscCall(contact_->MaxFrequencySquared(&omega2));
+  const double w = info_[l].omega;
+  if (h * std::sqrt(w * w + omega2) > Limit() * (1.0 + 1e-12)) PetscCall(RefineContact(omega2, t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::RefineContact(double omega2, double t) {
+  PetscFunctionBeginUser;
+  // Finer until the level's step holds twice the current stiffness (headroom: a
+  // contact that just started to bite keeps stiffening).
+  PetscInt level = contact_level_;
+  for (;;) {
+    ++level;
+    if (level >= levels()) PetscCall(AddLevel());
+    const double h = std::ldexp(H_, -static_cast<int>(level)), w = info_[level].omega;
+    if (h * std::sqrt(w * w + 2.0 * omega2) <= Limit()) break;
+  }
+  if (refinements_ == 0)
+    PetscCall(PetscPrintf(comm_,
+                          "wave: the crack contact stiffened at t = %g s: the contact moved from level %" PetscInt_FMT
+                          " to %" PetscInt_FMT " (step %g s; further moves are counted in summary.json)\n",
+                          t, contact_level_, level, std::ldexp(H_, -static_cast<int>(level))));
+  ++refinements_;
+  pending_level_ = level;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::MoveContact(Vec u) {
+  PetscFunctionBeginUser;
+  // At a synchronisation point of the old contact level, after its end kick.
+  const PetscInt old = contact_level_;
+  contact_level_ = pending_level_;
+  pending_level_ = -1;
+  PetscCall(AssignContactDofs());
+  PetscCall(ForceWithoutCommit(old, u));
+  PetscCall(ForceWithoutCommit(contact_level_, u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::ForceWithoutCommit(PetscInt l, Vec u) {
+  PetscFunctionBeginUser;
+  Level& L = *level_[l];
+  PetscCall(VecSet(L.a, 0.0));
+  PetscCall(Force(l, 0.0, 0.0, u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
+  PetscFunctionBeginUser;
+  Level& L = *level_[l];
+  const PetscScalar* a;
+  PetscScalar *s, *V;
+  PetscCall(VecGetArrayRead(L.a, &a));
+  PetscCall(VecGetArray(scratch_, &s));
+  PetscCall(VecGetArray(v, &V));
+  for (PetscInt i : L.kick_rows) s[i] = a[i];
+  if (!L.terms.empty()) {
+    ForceState state;
+    state.signal = SignalValues::At(excitation_.signal, t);
+    state.kick_dt = c;
+    state.velocity = V;
+    PetscCall(VecGetArrayRead(mass_, &state.mass));
+    for (auto& term : L.terms) term->Accelerate(state, s);
+    PetscCall(VecRestoreArrayRead(mass_, &state.mass));
+  }
+  for (PetscInt i : L.kick_rows) V[i] += c * s[i];
+  PetscCall(VecRestoreArray(v, &V));
+  PetscCall(VecRestoreArray(scratch_, &s));
+  PetscCall(VecRestoreArrayRead(L.a, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Drift(PetscInt l, double t, double h, Vec u, Vec v) {
+  PetscFunctionBeginUser;
+  Level& L = *level_[l];
+  PetscScalar *U, *V;
+  PetscCall(VecGetArray(u, &U));
+  PetscCall(VecGetArray(v, &V));
+  for (PetscInt i : L.drift) U[i] += h * V[i];
+  const SignalValues signal = SignalValues::At(excitation_.signal, t + h);
+  for (const auto& term : L.terms) term->Impose(signal, U, V);
+  PetscCall(VecRestoreArray(v, &V));
+  PetscCall(VecRestoreArray(u, &U));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Advance(PetscInt l, double t, double h, Vec u, Vec v) {
+  PetscFunctionBeginUser;
+  PetscCall(Kick(l, t, 0.5 * h, v));
+  PetscCall(Drift(l, t, h, u, v));
+  if (l + 1 < levels()) {
+    PetscCall(Advance(l + 1, t, 0.5 * h, u, v));
+    PetscCall(Advance(l + 1, t + 0.5 * h, 0.5 * h, u, v));
+  }
+  PetscCall(Force(l, t + h, h, u));
+  PetscCall(Kick(l, t + h, 0.5 * h, v));
+  if (pending_level_ >= 0 && l == contact_level_) PetscCall(MoveContact(u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Start(Vec u) {
+  PetscFunctionBeginUser;
+  for (PetscInt l = 0; l < levels(); ++l) PetscCall(ForceWithoutCommit(l, u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::Step(double t, double h, Vec u, Vec v) {
+  PetscFunctionBeginUser;
+  PetscCall(Advance(0, t, h, u, v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::InteriorAcceleration(Vec a) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(a, 0.0));
+  for (const auto& L : level_) PetscCall(VecAXPY(a, 1.0, L->a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::IntegratorTerm(Vec u, double* term) const {
+  PetscFunctionBeginUser;
+  *term = 0.0;
+  Vec a, ma;
+  PetscCall(VecDuplicate(mass_, &a));
+  PetscCall(VecDuplicate(mass_, &ma));
+  for (PetscInt l = 0; l < element_levels_; ++l) {
+    PetscCall(VecSet(a, 0.0));
+    PetscCall(level_[l]->kernel.Apply(u, a));
+    PetscCall(VecPointwiseMult(ma, a, mass_));
+    PetscScalar ama;
+    PetscCall(VecDot(ma, a, &ama));
+    const double h = std::ldexp(H_, -static_cast<int>(l));
+    *term -= h * h / 8.0 * PetscRealPart(ama);
+  }
+  PetscCall(VecDestroy(&ma));
+  PetscCall(VecDestroy(&a));
+  PetscFunctionReturn(0);
+}
+
+double LtsStepper::speedup_bound() const {
+  // Cell updates per macro step: all cells at the finest element rate, against each at its own.
+  double global = 0.0, local = 0.0;
+  for (PetscInt l = 0; l < element_levels_; ++l) {
+    global += info_[l].cells * std::ldexp(1.0, static_cast<int>(element_levels_ - 1));
+    local += info_[l].cells * std::ldexp(1.0, static_cast<int>(l));
+  }
+  return local > 0.0 ? global / local : 1.0;
+}
+
+}  // namespace vibrotherm::wave
