@@ -105,6 +105,10 @@ void SpreadPairs(const double* x, std::int32_t pairs, Quad* spread) {
   for (std::int32_t c = 0; c < pairs; ++c) spread[c] = Quad{{x[2 * c], x[2 * c], x[2 * c + 1], x[2 * c + 1]}};
 }
 
+void SpreadPairsAt(const double* x, const std::vector<std::int32_t>& columns, Quad* spread) {
+  for (std::int32_t c : columns) spread[c] = Quad{{x[2 * c], x[2 * c], x[2 * c + 1], x[2 * c + 1]}};
+}
+
 void BlockCsrApply(const BlockCsr& part, const Quad* x, double* y, bool add, bool wide) {
 #ifdef VIBROTHERM_WIDE_KERNEL
   if (wide) return add ? ApplyWide<true>(part, x, y) : ApplyWide<false>(part, x, y);

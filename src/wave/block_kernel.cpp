@@ -2,6 +2,8 @@
 
 #include <petsc/private/petscimpl.h>  // PetscObjectStateGet: has A changed since the copy?
 
+#include <algorithm>
+
 namespace vibrotherm::wave {
 namespace {
 
@@ -96,6 +98,12 @@ PetscErrorCode BlockKernel::CopyArrays() const {
   } else {
     PetscCall(CopyPart(A_, compress_rows_, &diagonal_));
   }
+  used_columns_.clear();
+  if (compress_rows_) {  // a level of local time stepping: spread only what its rows read
+    for (std::int32_t offset : diagonal_.x_offset) used_columns_.push_back(offset / static_cast<std::int32_t>(sizeof(Quad)));
+    std::sort(used_columns_.begin(), used_columns_.end());
+    used_columns_.erase(std::unique(used_columns_.begin(), used_columns_.end()), used_columns_.end());
+  }
   PetscCall(PetscObjectStateGet((PetscObject)A_, &state_));
   PetscFunctionReturn(0);
 }
@@ -114,7 +122,8 @@ PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscScalar* ya;
   PetscCall(VecGetArrayRead(x, &xa));
   PetscCall(VecGetArrayWrite(y, &ya));
-  SpreadPairs(xa, static_cast<std::int32_t>(spread_.size()), spread_.data());
+  if (compress_rows_) SpreadPairsAt(xa, used_columns_, spread_.data());
+  else SpreadPairs(xa, static_cast<std::int32_t>(spread_.size()), spread_.data());
   BlockCsrApply(diagonal_, spread_.data(), ya, false, wide_);
   if (scatter_) {
     const PetscScalar* ghost;

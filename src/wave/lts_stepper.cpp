@@ -99,6 +99,7 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
       if (here(c.node)) L.boundary->constraints.push_back(c);
     for (const Dashpot& d : boundary.dashpots)
       if (here(d.node)) L.boundary->dashpots.push_back(d);
+    bool loaded = false;  // a traction on nodes of this level, here
     if (boundary.traction_shape) {
       PetscCall(VecDuplicate(boundary.traction_shape, &L.boundary->traction_shape));
       PetscCall(VecCopy(boundary.traction_shape, L.boundary->traction_shape));
@@ -108,8 +109,11 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
       PetscCall(VecGetArray(L.boundary->traction_shape, &s));
       for (PetscInt i = 0; i < n; ++i)
         if (element_finest_[i] != static_cast<PetscInt>(l)) s[i] = 0.0;
+        else loaded = loaded || s[i] != 0.0;
       PetscCall(VecRestoreArray(L.boundary->traction_shape, &s));
     }
+    // Terms only where they act (kicks and drifts are local: no rank needs empty ones).
+    if (L.boundary->constraints.empty() && L.boundary->dashpots.empty() && !loaded) continue;
     const bool displacement_source = excitation_.type == SourceType::Displacement;
     PetscCall(CreateBoundaryTerms(*L.boundary, mass_, displacement_source, &L.terms));
   }
@@ -244,8 +248,10 @@ PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
   PetscCall(VecGetArrayRead(L.a, &a));
   PetscCall(VecGetArray(scratch_, &s));
   PetscCall(VecGetArray(v, &V));
-  for (PetscInt i : L.kick_rows) s[i] = a[i];
-  if (!L.terms.empty()) {
+  if (L.terms.empty()) {  // interior rows only: straight from the level's force
+    for (PetscInt i : L.kick_rows) V[i] += c * a[i];
+  } else {
+    for (PetscInt i : L.kick_rows) s[i] = a[i];
     ForceState state;
     state.signal = SignalValues::At(excitation_.signal, t);
     state.kick_dt = c;
@@ -253,8 +259,8 @@ PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
     PetscCall(VecGetArrayRead(mass_, &state.mass));
     for (auto& term : L.terms) term->Accelerate(state, s);
     PetscCall(VecRestoreArrayRead(mass_, &state.mass));
+    for (PetscInt i : L.kick_rows) V[i] += c * s[i];
   }
-  for (PetscInt i : L.kick_rows) V[i] += c * s[i];
   PetscCall(VecRestoreArray(v, &V));
   PetscCall(VecRestoreArray(scratch_, &s));
   PetscCall(VecRestoreArrayRead(L.a, &a));

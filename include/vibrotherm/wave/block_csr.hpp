@@ -38,6 +38,8 @@ void AppendBlockRow(std::int32_t row, const std::int32_t* columns, const double*
                     bool compressed, BlockCsr* part);
 /// The spread form of x: per block column (x0, x0, x1, x1).
 void SpreadPairs(const double* x, std::int32_t pairs, Quad* spread);
+/// The spread form of x at the listed block columns only.
+void SpreadPairsAt(const double* x, const std::vector<std::int32_t>& columns, Quad* spread);
 /// y = P x (add = false) or y += P x (add = true) over the rows of P; x spread.
 /// wide: the 4-wide path (only where WideKernelAvailable()).
 void BlockCsrApply(const BlockCsr& part, const Quad* x, double* y, bool add, bool wide);

@@ -57,6 +57,7 @@ class BlockKernel {
   VecScatter scatter_ = nullptr;  ///< x → ghosts (null on one rank)
   Vec ghosts_ = nullptr;
   mutable std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
+  mutable std::vector<std::int32_t> used_columns_;    ///< compressed rows: the owned block columns they read
   PetscLogEvent event_ = -1;
   bool wide_ = false, compress_rows_ = false;
 };
