@@ -80,6 +80,7 @@ class Recorder {
   io::RunSummary* summary_ = nullptr;
   io::PointProbes probes_;
   io::EnergyLog energy_;
+  MPI_Comm comm_ = MPI_COMM_NULL;  ///< the probes' (and waves') communicator
   io::CrackStateLog crack_state_;
   io::Progress progress_;
   io::FieldFile fields_;

@@ -10,10 +10,13 @@ on the paper scene's first 60 us (the crack starts to clap and rub):
     only its leading part);
   - 2 ranks = 1 rank to rounding;
   - a contact 1000x stiffer (Biwa C = 1e14) costs only the crack: the macro step
-    and the step count stay, the contact moves to finer levels of its own.
+    and the step count stay, the contact moves to finer levels of its own;
+  - an unstable LTS step (-wave_lts_cfl 0.9 resonates on this mesh after ~0.4 ms)
+    never finishes as a result: the energy-budget guard stops it (exit 1, one
+    message naming -wave_lts_cfl, no output under its final name).
 
 usage: test_local_time_stepping.py VIBROTHERM MPIEXEC SOURCE_DIR"""
-import csv, json, math, os, sys, tempfile
+import csv, json, math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, run_scene
@@ -98,4 +101,13 @@ with tempfile.TemporaryDirectory() as tmp:
               "the stiff contact steps in a level of its own (%g)" % stiff["derived"]["wave_lts_contact_level"])
         check(stiff["wave_dt_reductions"] > 0 and math.isfinite(stiff["dissipated_energy"]),
               "the stiff contact moved finer while stepping and stayed finite")
+    unstable = os.path.join(tmp, "unstable")
+    r = subprocess.run([exe, "-options_file", os.path.join(src, "options/paper.opts"), "-wave_lts", "on",
+                        "-wave_lts_cfl", "0.9", "-final_time", "7e-4", "-output_times", "7e-4", "-output_dir", unstable],
+                       capture_output=True, text=True)
+    check(r.returncode == 1, "unstable LTS step: exit %d (want 1)" % r.returncode)
+    check("-wave_lts_cfl" in r.stderr + r.stdout and "unstable" in r.stderr + r.stdout,
+          "unstable LTS step: the message names -wave_lts_cfl: %s" % (r.stderr[-500:]))
+    check(not os.path.exists(os.path.join(unstable, "summary.json")) and not os.path.exists(os.path.join(unstable, "probes.csv")),
+          "unstable LTS step: nothing under a final name")
 check.finish()
