@@ -61,6 +61,7 @@ void ReportLevels(const wave::LtsStepper& lts, io::RunSummary* summary) {
   summary->derived["wave_lts_levels"] = static_cast<double>(lts.levels());
   summary->derived["wave_lts_speedup_bound"] = lts.speedup_bound();
   summary->derived["wave_lts_contact_level"] = static_cast<double>(lts.contact_level());
+  summary->derived["wave_lts_halvings"] = static_cast<double>(lts.halvings());
   for (PetscInt l = 0; l < lts.levels(); ++l) {
     const std::string key = "wave_lts_level" + std::to_string(l);
     summary->derived[key + "_dt"] = std::ldexp(lts.macro_step(), -static_cast<int>(l));

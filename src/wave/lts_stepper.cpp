@@ -158,22 +158,49 @@ PetscErrorCode LtsStepper::SetContact(WaveInterface* contact, double omega2) {
   for (PetscInt i = 0; i < n; ++i)
     if (PetscRealPart(m[i]) != 0.0) contact_dofs_.push_back(i), local_level = std::max(local_level, element_finest_[i]);
   PetscCall(VecRestoreArrayRead(scratch_, &m));
-  PetscCallMPI(MPI_Allreduce(&local_level, &contact_level_, 1, MPIU_INT, MPI_MAX, comm_));
+  PetscCallMPI(MPI_Allreduce(&local_level, &crack_level_, 1, MPIU_INT, MPI_MAX, comm_));
   // The coarsest level at least as fine as the crack's cells that holds the contact's stiffness.
-  for (;; ++contact_level_) {
+  for (contact_level_ = crack_level_;; ++contact_level_) {
     if (contact_level_ >= levels()) PetscCall(AddLevel());
     const double h = std::ldexp(H_, -static_cast<int>(contact_level_)), w = info_[contact_level_].omega;
     if (h * std::sqrt(w * w + omega2) <= Limit()) break;
   }
+  PetscCall(TakeHalvings(nullptr));
   PetscCall(AssignContactDofs());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinements) {
+PetscErrorCode LtsStepper::TakeHalvings(bool* halved) {
+  PetscFunctionBeginUser;
+  // The contact at most one level finer than the crack's cells: then the crack
+  // cells' impulses come at most every 2 contact steps, h_c·ω_c ≤ 2·cfl·2 < 2π·…
+  // below the first resonance of a contact mode (ω h = π). Deeper, the impulse
+  // form rang and blew up (pre-closed crack, 17 µs): halve H instead (all pay).
+  if (halved) *halved = false;
+  const PetscInt excess = contact_level_ - (crack_level_ + 1);
+  if (excess <= 0 || pending_level_ >= 0) PetscFunctionReturn(0);
+  H_ = std::ldexp(H_, -static_cast<int>(excess));
+  contact_level_ -= excess;
+  while (levels() > std::max(element_levels_, contact_level_ + 1)) {
+    level_.pop_back();
+    info_.pop_back();
+  }
+  ++halvings_;
+  if (halved) *halved = true;
+  PetscCall(AssignContactDofs());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinements, double macro_step) {
   PetscFunctionBeginUser;
   while (contact_ && levels() <= level) PetscCall(AddLevel());
+  while (levels() > std::max(element_levels_, level + 1)) {
+    level_.pop_back();
+    info_.pop_back();
+  }
   contact_level_ = level;
   refinements_ = refinements;
+  H_ = macro_step;
   PetscCall(AssignContactDofs());
   PetscFunctionReturn(0);
 }

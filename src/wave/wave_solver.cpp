@@ -251,8 +251,10 @@ PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface, double worst_a
   double omega2;
   if (options_.contact_step == ContactStepRule::kWorstCase) PetscCall(interface_->MaxFrequencySquared(&omega2, worst_approach));
   else PetscCall(interface_->MaxFrequencySquared(&omega2));
-  if (lts_active_) {  // the contact in a level of its own stiffness: H stays
+  if (lts_active_) {  // the contact in a level of its own stiffness (H halved if it needs more)
     PetscCall(lts_.SetContact(interface_, omega2));
+    step_.UseMacroStep(lts_.macro_step());
+    PetscCall(TSSetTimeStep(ts_, step_.dt()));
     lts_started_ = false;
     PetscFunctionReturn(0);
   }
@@ -264,7 +266,8 @@ PetscErrorCode WaveSolver::SetInterface(WaveInterface* interface, double worst_a
 
 PetscErrorCode WaveSolver::CheckStableStep() {
   PetscFunctionBeginUser;
-  if (!interface_ || step_.implicit() || lts_active_) PetscFunctionReturn(0);
+  if (!interface_ || step_.implicit()) PetscFunctionReturn(0);
+  if (lts_active_) PetscFunctionReturn(CheckMacroStep());
   double omega2, before = step_.dt(), term_before = 0.0, term_after = 0.0;
   bool changed;
   PetscCall(interface_->MaxFrequencySquared(&omega2));
@@ -275,6 +278,29 @@ PetscErrorCode WaveSolver::CheckStableStep() {
   PetscCall(IntegratorTerm(before, &term_before));
   PetscCall(IntegratorTerm(step_.dt(), &term_after));
   integrator_offset_ += term_before - term_after;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::CheckMacroStep() {
+  PetscFunctionBeginUser;
+  // The contact went more than one level below the crack's cells: H halves, the
+  // integrator term (which depends on the steps) carried over.
+  if (!lts_.halving_due()) PetscFunctionReturn(0);
+  double before = 0.0, after = 0.0;
+  PetscCall(IntegratorTerm(0.0, &before));
+  const double H = lts_.macro_step();
+  bool halved;
+  PetscCall(lts_.TakeHalvings(&halved));
+  if (!halved) PetscFunctionReturn(0);
+  PetscCall(IntegratorTerm(0.0, &after));
+  integrator_offset_ += before - after;
+  if (lts_.halvings() == 1)
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)dm_),
+                          "wave: the crack contact needs a step below half its cells' at t = %g s: macro step halved "
+                          "from %g to %g s (every level pays; further halvings are counted in summary.json)\n",
+                          time_, H, lts_.macro_step()));
+  step_.UseMacroStep(lts_.macro_step());
+  PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscFunctionReturn(0);
 }
 

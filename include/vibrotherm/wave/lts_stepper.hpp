@@ -77,7 +77,13 @@ class LtsStepper {
   /// Times the contact moved to a finer level while stepping.
   PetscInt contact_refinements() const { return refinements_; }
   /// The contact's level and moves (a restored checkpoint); call Start after.
-  PetscErrorCode set_contact_state(PetscInt level, PetscInt refinements);
+  PetscErrorCode set_contact_state(PetscInt level, PetscInt refinements, double macro_step);
+  /// Between macro steps: a contact more than one level finer than the crack's
+  /// cells halves H instead (every level twice as fast, the contact back to one
+  /// level below the crack's cells). *halved: whether H changed.
+  PetscErrorCode TakeHalvings(bool* halved);
+  PetscInt halvings() const { return halvings_; }
+  bool halving_due() const { return contact_level_ > crack_level_ + 1 && pending_level_ < 0; }
   const std::vector<LtsLevelInfo>& info() const { return info_; }
   /// Work of one macro step over the work of global steps at the finest step: the speed-up bound.
   double speedup_bound() const;
@@ -107,7 +113,9 @@ class LtsStepper {
   Excitation excitation_;
   WaveInterface* contact_ = nullptr;
   PetscInt element_levels_ = 1, contact_level_ = -1, refinements_ = 0;
-  PetscInt pending_level_ = -1;  ///< the contact's next level, moved to after the current kick
+  PetscInt pending_level_ = -1;
+  PetscInt crack_level_ = 0;   ///< finest level of the crack's cells
+  PetscInt halvings_ = 0;      ///< times H was halved for the contact  ///< the contact's next level, moved to after the current kick
   double H_ = 0.0, omega_dt_max_ = 2.0, cfl_ = 0.7;
   MPI_Comm comm_ = MPI_COMM_NULL;
 };

@@ -160,6 +160,7 @@ class WaveSolver {
   // Local time stepping (wave_lts.cpp).
   PetscErrorCode SetupLts(MPI_Comm comm);
   static PetscErrorCode MacroStep(void* ctx, PetscReal t, PetscReal h, Vec u, Vec v);
+  PetscErrorCode CheckMacroStep();
   /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
   PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
