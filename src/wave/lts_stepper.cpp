@@ -191,7 +191,8 @@ PetscErrorCode LtsStepper::TakeHalvings(bool* halved) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinements, double macro_step) {
+PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinements, double macro_step,
+                                             PetscInt halvings) {
   PetscFunctionBeginUser;
   while (contact_ && levels() <= level) PetscCall(AddLevel());
   while (levels() > std::max(element_levels_, level + 1)) {
@@ -201,6 +202,7 @@ PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinement
   contact_level_ = level;
   refinements_ = refinements;
   H_ = macro_step;
+  halvings_ = halvings;
   PetscCall(AssignContactDofs());
   PetscFunctionReturn(0);
 }

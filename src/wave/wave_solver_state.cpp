@@ -24,7 +24,8 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   checkpoint.PutShared("wave/step_control", step_.state());
   if (lts_active_)
     checkpoint.PutShared("wave/lts", {static_cast<double>(lts_.contact_level()),
-                                      static_cast<double>(lts_.contact_refinements()), lts_.macro_step()});
+                                      static_cast<double>(lts_.contact_refinements()), lts_.macro_step(),
+                                      static_cast<double>(lts_.halvings())});
   std::vector<double> accounts = {accounted_.radiated, accounted_.work_source, body_work_};
   for (const auto& term : terms_)
     for (double value : term->SavedAccount()) accounts.push_back(value);
@@ -56,8 +57,9 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   step_.set_state(control);
   if (lts_active_) {  // the contact's level; the level forces are recomputed from the state
     std::vector<double> lts;
-    PetscCall(checkpoint.GetShared("wave/lts", &lts, 3));
-    PetscCall(lts_.set_contact_state(static_cast<PetscInt>(lts[0]), static_cast<PetscInt>(lts[1]), lts[2]));
+    PetscCall(checkpoint.GetShared("wave/lts", &lts, 4));
+    PetscCall(lts_.set_contact_state(static_cast<PetscInt>(lts[0]), static_cast<PetscInt>(lts[1]), lts[2],
+                                     static_cast<PetscInt>(lts[3])));
     lts_started_ = false;
   }
   PetscCall(TSSetTime(ts_, time_));

@@ -77,7 +77,7 @@ class LtsStepper {
   /// Times the contact moved to a finer level while stepping.
   PetscInt contact_refinements() const { return refinements_; }
   /// The contact's level and moves (a restored checkpoint); call Start after.
-  PetscErrorCode set_contact_state(PetscInt level, PetscInt refinements, double macro_step);
+  PetscErrorCode set_contact_state(PetscInt level, PetscInt refinements, double macro_step, PetscInt halvings);
   /// Between macro steps: a contact more than one level finer than the crack's
   /// cells halves H instead (every level twice as fast, the contact back to one
   /// level below the crack's cells). *halved: whether H changed.
