@@ -323,21 +323,6 @@ PetscErrorCode HeatSolver::PostStep(TS ts) {
   self->time_ = t;
   if (self->on_step) PetscCall(self->on_step(*self));
   if (self->stop_requested_) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
-  if (ts == self->free_ts_) PetscCall(QuantizeNextStep(ts));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::QuantizeNextStep(TS ts) {
-  PetscFunctionBeginUser;
-  // The adaptor's next step, rounded down to a power of 2^(1/4): a smaller step
-  // than the error allows, never a larger one, and a shift that repeats for
-  // several steps, so the Cholesky factor is reused instead of refactored at
-  // every step (the paper scene's free phase: 157 factorisations, 1.9 s, before).
-  PetscReal h;
-  PetscCall(TSGetTimeStep(ts, &h));
-  if (!(h > 0.0) || !std::isfinite(h)) PetscFunctionReturn(0);
-  const double quantized = std::exp2(std::floor(4.0 * std::log2(h) + 1e-9) / 4.0);
-  PetscCall(TSSetTimeStep(ts, std::min(h, quantized)));
   PetscFunctionReturn(0);
 }
 

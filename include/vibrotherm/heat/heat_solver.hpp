@@ -117,8 +117,6 @@ class HeatSolver {
   static PetscErrorCode IJacobian(TS ts, PetscReal t, Vec theta, Vec theta_dot, PetscReal shift, Mat J, Mat P,
                                   void* ctx);
   static PetscErrorCode PostStep(TS ts);
-  /// Free phase: the next adaptive step rounded down to a power of 2^(1/4) (factor reuse).
-  static PetscErrorCode QuantizeNextStep(TS ts);
   /// J = K + shift M with the sink rows, unless it holds that shift already.
   static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
   PetscErrorCode Account(double h);
