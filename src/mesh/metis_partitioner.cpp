@@ -3,6 +3,8 @@
 #include "vibrotherm/mesh/metis_partitioner.hpp"
 
 #include <metis.h>
+
+#include <algorithm>
 #include <petsc/private/partitionerimpl.h>
 
 #include <vector>
@@ -15,6 +17,32 @@ namespace {
 struct MetisData {
   PetscInt seed = 0;
 };
+
+/// Vertex weights as METIS constraints: one constraint per distinct weight (up
+/// to 8; each vertex counts 1 in its own), so that every class of equal weight
+/// is balanced on its own — local time stepping's levels (lts_partition.hpp),
+/// whose products wait for the slowest rank level by level. More classes: the
+/// weights themselves, one constraint.
+PetscErrorCode ClassWeights(PetscSection section, PetscInt nvtxs, idx_t* ncon, std::vector<idx_t>* vwgt) {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> weight(nvtxs), distinct;
+  for (PetscInt v = 0; v < nvtxs; ++v) PetscCall(PetscSectionGetDof(section, v, &weight[v]));
+  distinct = weight;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if (distinct.size() > 8) {
+    *ncon = 1;
+    vwgt->assign(weight.begin(), weight.end());
+    PetscFunctionReturn(0);
+  }
+  *ncon = static_cast<idx_t>(distinct.size());
+  vwgt->assign(static_cast<std::size_t>(nvtxs) * distinct.size(), 0);
+  for (PetscInt v = 0; v < nvtxs; ++v) {
+    const auto c = std::lower_bound(distinct.begin(), distinct.end(), weight[v]) - distinct.begin();
+    (*vwgt)[static_cast<std::size_t>(v) * distinct.size() + c] = 1;
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode PartitionMetis(PetscPartitioner part, PetscInt nparts, PetscInt nvtxs, PetscInt start[],
                               PetscInt adjacency[], PetscSection vertSection, PetscSection /*targetSection*/,
@@ -30,10 +58,7 @@ PetscErrorCode PartitionMetis(PetscPartitioner part, PetscInt nparts, PetscInt n
   if (nvtxs > 0 && nparts > 1) {
     idx_t n = nvtxs, ncon = 1, np = nparts, edgecut = 0;
     std::vector<idx_t> vwgt;
-    if (vertSection) {
-      vwgt.resize(nvtxs);
-      for (PetscInt v = 0; v < nvtxs; ++v) PetscCall(PetscSectionGetDof(vertSection, v, &vwgt[v]));
-    }
+    if (vertSection) PetscCall(ClassWeights(vertSection, nvtxs, &ncon, &vwgt));
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_SEED] = static_cast<idx_t>(data->seed);

@@ -3,6 +3,7 @@
 #include "vibrotherm/mesh/memory_estimate.hpp"
 
 #include "vibrotherm/mesh/crack_split.hpp"
+#include "vibrotherm/mesh/lts_partition.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
 #include "vibrotherm/mesh/metis_partitioner.hpp"
 #include "vibrotherm/mesh/plex_builder.hpp"
@@ -211,6 +212,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   s->wave = split;
   if (heat) PetscCall(DMDestroy(&serial));
   s->heat = heat ? heat : serial;
+  PetscCall(SetLtsPartitionWeights(s->wave));
   PetscCall(Distribute(&s->wave, "wave_mesh", &s->wave_origin));
   PetscCall(Distribute(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
