@@ -1,6 +1,6 @@
 // Heat conduction on the heat mesh (PHYSICS.md §2), its own PETSc TS: prefix
 // -heat_ while coupled (backward Euler, fixed steps, direct solver), -heat_free_
-// once the waves are gone (Crank-Nicolson with adaptive steps):
+// once the waves are gone (Crank-Nicolson on the step ladder, step_ladder.hpp):
 //   ρ c_p Ṫ = ∇·(k ∇T) + q δ_Γ,   T = T0 on sink edges, h (T − T_ext) out of convective ones,
 // discretised for the rise θ = T − T0 (so the TS tolerances measure the rise,
 // not 293 K) as M θ̇ + (K + H) θ = Q(t) + G with row-sum lumped mass M
@@ -76,7 +76,7 @@ class HeatSolver {
   /// fewer steps on meshes much finer than the diffusion length (measured on the
   /// Carslaw-Jaeger case) but closes the balance only to ~1 %.
   PetscErrorCode UseFreeIntegrator();
-  /// Advances with the free (adaptive) integrator to exactly t_end.
+  /// Advances with the free integrator (its own step schedule) to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
   /// Advances to t_end in `steps` equal steps (coupling intervals: the source
   /// jumps at every interval, so error control there would only chase the jumps).
@@ -142,7 +142,7 @@ class HeatSolver {
   };
   std::vector<FacetLoad> facets_;
   std::vector<fe::LocatedPoint> probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, TS* ts);
+  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
   PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);
   static constexpr PetscInt kDirectSolveDofs = 50000;  ///< above: CG + AMG even for fixed steps
   TS coupled_ts_ = nullptr, free_ts_ = nullptr;  ///< prefixes -heat_ and -heat_free_
