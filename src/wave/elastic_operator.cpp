@@ -110,4 +110,16 @@ PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const El
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ScaleToAcceleration(Mat K, Vec lumped_mass) {
+  PetscFunctionBeginUser;
+  Vec minus_inverse;
+  PetscCall(VecDuplicate(lumped_mass, &minus_inverse));
+  PetscCall(VecCopy(lumped_mass, minus_inverse));
+  PetscCall(VecReciprocal(minus_inverse));
+  PetscCall(VecScale(minus_inverse, -1.0));
+  PetscCall(MatDiagonalScale(K, minus_inverse, nullptr));
+  PetscCall(VecDestroy(&minus_inverse));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::wave

@@ -48,13 +48,7 @@ PetscErrorCode LtsStepper::SetupLevel(PetscInt l, const fe::LagrangeSpace& space
   PetscCall(AssembleElasticStiffness(space, material,
                                      [&](std::size_t k) { return levels.cell_level[k] == l; }, &L.A));
   PetscCall(LargestAngularFrequency(L.A, mass_, &info_[l].omega));
-  Vec minus_inverse;
-  PetscCall(VecDuplicate(mass_, &minus_inverse));
-  PetscCall(VecCopy(mass_, minus_inverse));
-  PetscCall(VecReciprocal(minus_inverse));
-  PetscCall(VecScale(minus_inverse, -1.0));
-  PetscCall(MatDiagonalScale(L.A, minus_inverse, nullptr));
-  PetscCall(VecDestroy(&minus_inverse));
+  PetscCall(ScaleToAcceleration(L.A, mass_));
   PetscCall(L.kernel.Setup(L.A, true, true));
   for (std::size_t i = 0; i < touched.size(); ++i)
     if (touched[i]) L.element_rows.push_back(static_cast<PetscInt>(i));

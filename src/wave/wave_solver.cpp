@@ -164,9 +164,7 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
     A_ = K_;
     K_ = nullptr;
   }
-  PetscCall(VecScale(Minv_, -1.0));
-  PetscCall(MatDiagonalScale(A_, Minv_, nullptr));
-  PetscCall(VecScale(Minv_, -1.0));
+  PetscCall(ScaleToAcceleration(A_, M_));
   if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Setup(A_));
   TSType type;
   PetscCall(TSGetType(ts_, &type));

@@ -28,6 +28,9 @@ void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double
 /// in space.cells(); null: all) on the DM's full pattern (unused entries dropped at assembly).
 PetscErrorCode AssembleElasticStiffness(const fe::LagrangeSpace& space, const ElasticMaterial& material,
                                         const std::function<bool(std::size_t)>& include, Mat* K);
+/// K → A = −M⁻¹K in place (rows scaled by −1/m_i): the explicit steps' operator,
+/// of the whole stiffness or of one LTS level's.
+PetscErrorCode ScaleToAcceleration(Mat K, Vec lumped_mass);
 /// Creates and assembles K (global, from DMCreateMatrix) and the lumped mass (global vector).
 PetscErrorCode AssembleElasticOperators(const fe::LagrangeSpace& space, const ElasticMaterial& material, Mat* K,
                                         Vec* lumped_mass);
