@@ -230,7 +230,7 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
     PetscCall(recorder.progress().Update(h.time(), h.steps()));
     PetscFunctionReturn(0);
   };
-  // One TSSolve per output segment (or camera window boundary): the adaptor needs the step history a new solve discards.
+  // One TSSolve per output segment (or camera window boundary); the step ladder's rung carries over.
   while (heat.time() < final_time * (1 - 1e-12) && !interrupted_by_) {
     PetscCall(heat.AdvanceTo(recorder.NextHeatStop(heat.time(), final_time)));
     if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));

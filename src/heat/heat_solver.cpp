@@ -322,6 +322,7 @@ PetscErrorCode HeatSolver::PostStep(TS ts) {
   PetscCall(TSGetApplicationContext(ts, &self));
   PetscCall(TSGetTime(ts, &t));
   PetscCall(self->Account(t - self->time_));
+  self->last_step_ = t - self->time_;
   self->time_ = t;
   if (self->on_step) PetscCall(self->on_step(*self));
   if (self->stop_requested_) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));
@@ -367,7 +368,8 @@ PetscErrorCode HeatSolver::Account(double h) {
 PetscErrorCode HeatSolver::ScaleTolerance() {
   PetscFunctionBeginUser;
   // The rise can be anything from µK to K: the absolute tolerance follows the
-  // largest rise so far, so -heat_ts_rtol means the same in every scene.
+  // largest rise so far, so -heat_ts_rtol means the same in every scene (read by
+  // error-controlling adaptors only: -heat_free_ts_adapt_type basic, not the ladder).
   PetscReal peak;
   PetscCall(VecNorm(theta_, NORM_INFINITY, &peak));
   peak_rise_ = std::max(peak_rise_, static_cast<double>(peak));
@@ -382,11 +384,16 @@ PetscErrorCode HeatSolver::ScaleTolerance() {
 PetscErrorCode HeatSolver::UseFreeIntegrator() {
   PetscFunctionBeginUser;
   if (free_ts_) PetscFunctionReturn(0);
-  PetscReal dt;
-  PetscCall(TSGetTimeStep(ts_, &dt));
+  // The ladder starts from the last coupled step (not the coupled TS's next-step
+  // proposal, an error estimate's); nothing stepped yet: the TS's initial step.
+  PetscReal dt = last_step_;
+  if (dt <= 0.0) PetscCall(TSGetTimeStep(ts_, &dt));
   PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
   PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
   PetscCall(TSSetTimeStep(free_ts_, dt));
+  TSAdapt adapt;
+  PetscCall(TSGetAdapt(free_ts_, &adapt));
+  PetscCall(StepLadderStart(adapt, dt));  // a first segment shorter than dt must not set the rung
   ts_ = free_ts_;
   PetscFunctionReturn(0);
 }

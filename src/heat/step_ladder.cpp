@@ -5,11 +5,11 @@
 namespace vibrotherm::heat {
 namespace {
 
-struct Ladder {
-  PetscInt steps_per_rung = 16; ///< -ts_adapt_ladder_steps
-  PetscReal ratio = 2.0;        ///< -ts_adapt_ladder_ratio
-  PetscReal rung = 0.0;         ///< the current rung; 0 until the first step sets it
-  PetscInt taken = 0;           ///< steps taken on it
+struct Ladder {              // plain data: PetscNew'ed (Create sets the defaults)
+  PetscInt steps_per_rung;  ///< -ts_adapt_ladder_steps (16)
+  PetscReal ratio;          ///< -ts_adapt_ladder_ratio (2)
+  PetscReal rung;           ///< the current rung; 0 until StepLadderStart or the first step sets it
+  PetscInt taken;           ///< steps taken on it
 };
 
 PetscErrorCode Choose(TSAdapt adapt, TS, PetscReal h, PetscInt* next_sc, PetscReal* next_h, PetscBool* accept,
@@ -18,7 +18,7 @@ PetscErrorCode Choose(TSAdapt adapt, TS, PetscReal h, PetscInt* next_sc, PetscRe
   auto* ladder = static_cast<Ladder*>(adapt->data);
   if (ladder->rung <= 0.0) ladder->rung = h;  // the step the TS was started with
   if (++ladder->taken >= ladder->steps_per_rung) {
-    ladder->rung *= ladder->ratio;
+    ladder->rung = PetscMin(ladder->rung * ladder->ratio, adapt->dt_max);
     ladder->taken = 0;
   }
   *next_h = PetscClipInterval(ladder->rung, adapt->dt_min, adapt->dt_max);
@@ -38,8 +38,7 @@ PetscErrorCode Reset(TSAdapt adapt) {
 
 PetscErrorCode Destroy(TSAdapt adapt) {
   PetscFunctionBeginUser;
-  delete static_cast<Ladder*>(adapt->data);
-  adapt->data = nullptr;
+  PetscCall(PetscFree(adapt->data));
   PetscFunctionReturn(0);
 }
 
@@ -52,8 +51,7 @@ PetscErrorCode SetFromOptions(TSAdapt adapt, PetscOptionItems* PetscOptionsObjec
   PetscCall(PetscOptionsReal("-ts_adapt_ladder_ratio", "Growth of the step from one rung to the next", nullptr,
                              ladder->ratio, &ladder->ratio, nullptr));
   PetscOptionsHeadEnd();
-  const char* prefix;
-  PetscCall(PetscObjectGetOptionsPrefix((PetscObject)adapt, &prefix));
+  const char* prefix = PetscOptionsObject->prefix;  // the TS's: the adaptor has none of its own
   PetscCheck(ladder->steps_per_rung >= 1, PetscObjectComm((PetscObject)adapt), PETSC_ERR_USER_INPUT,
              "-%sts_adapt_ladder_steps must be >= 1, got %" PetscInt_FMT, prefix ? prefix : "",
              ladder->steps_per_rung);
@@ -75,7 +73,11 @@ PetscErrorCode View(TSAdapt adapt, PetscViewer viewer) {
 
 PetscErrorCode Create(TSAdapt adapt) {
   PetscFunctionBeginUser;
-  adapt->data = new Ladder;
+  Ladder* ladder;
+  PetscCall(PetscNew(&ladder));  // zeroed: rung 0 (set by the first step), taken 0
+  ladder->steps_per_rung = 16;
+  ladder->ratio = 2.0;
+  adapt->data = ladder;
   adapt->ops->choose = Choose;
   adapt->ops->reset = Reset;
   adapt->ops->destroy = Destroy;
@@ -89,6 +91,17 @@ PetscErrorCode Create(TSAdapt adapt) {
 PetscErrorCode RegisterStepLadder() {
   PetscFunctionBeginUser;
   PetscCall(TSAdaptRegister(kStepLadderAdapt, Create));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode StepLadderStart(TSAdapt adapt, PetscReal rung) {
+  PetscFunctionBeginUser;
+  PetscBool ladder;
+  PetscCall(PetscObjectTypeCompare((PetscObject)adapt, kStepLadderAdapt, &ladder));
+  if (!ladder) PetscFunctionReturn(0);
+  auto* data = static_cast<Ladder*>(adapt->data);
+  data->rung = rung;
+  data->taken = 0;
   PetscFunctionReturn(0);
 }
 

@@ -64,7 +64,7 @@ def open_series(grid):
     found = reader.TimestepValues if reader else []
     found = [found] if isinstance(found, float) else list(found)  # one time: ParaView gives a float
     check(len(found) == len(times) and all(abs(a - b) <= 1e-9 * b for a, b in zip(found, times)),
-          "fields_%s.xmf: times %s, h5 says %s" % (grid, found, times))
+          "fields_%s.xmf: ParaView reads times %s, the file lists %s" % (grid, found, times))
     reader.UpdatePipeline(times[-1])
     data = servermanager.Fetch(reader)
     check(data.IsA("vtkUnstructuredGrid"), "fields_%s.xmf: %s, not one grid" % (grid, data.GetClassName()))
@@ -157,8 +157,8 @@ def hot_window(data, zoom=5.0):
     xy = dsa.WrapDataObject(data).Points[:, :2]
     centre = xy[rise.argmax()]
     cold = xy[rise < 0.05 * rise.max()]
-    half = zoom * numpy.sqrt(((cold - centre) ** 2).sum(axis=1)).min()
     x0, x1, y0, y1 = data.GetBounds()[:4]
+    half = zoom * numpy.sqrt(((cold - centre) ** 2).sum(axis=1)).min() if len(cold) else numpy.inf
     if 2 * half >= max(x1 - x0, y1 - y0):  # late times: the heat has spread over the body
         return (x0, x1, y0, y1)
     return (centre[0] - half, centre[0] + half, centre[1] - half, centre[1] + half)

@@ -72,9 +72,10 @@ class HeatSolver {
   /// Temperatures [K] at the probe points, on every rank. Collective.
   PetscErrorCode ProbeTemperatures(std::vector<double>* T) const;
   /// Switches to the TS of free diffusion (prefix -heat_free_; Crank-Nicolson by
-  /// default, whose balance closes exactly). -heat_free_ts_type bdf takes 10×
-  /// fewer steps on meshes much finer than the diffusion length (measured on the
-  /// Carslaw-Jaeger case) but closes the balance only to ~1 %.
+  /// default, whose balance closes exactly, on the step ladder from the last
+  /// coupled step). With -heat_free_ts_adapt_type basic (error control),
+  /// -heat_free_ts_type bdf took 10× fewer steps on meshes much finer than the
+  /// diffusion length (Carslaw-Jaeger case) but closes the balance only to ~1 %.
   PetscErrorCode UseFreeIntegrator();
   /// Advances with the free integrator (its own step schedule) to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
@@ -148,6 +149,7 @@ class HeatSolver {
   TS coupled_ts_ = nullptr, free_ts_ = nullptr;  ///< prefixes -heat_ and -heat_free_
   TS ts_ = nullptr;                             ///< the one in use
   double time_ = 0.0, deposited_ = 0.0, boundary_loss_ = 0.0;
+  double last_step_ = 0.0;  ///< the last accepted step (the free ladder's first rung)
   std::map<Mat, double> last_shift_;  ///< shift of the Jacobian each matrix holds
   double peak_rise_ = 0.0;  ///< largest rise seen [K] (sets the absolute tolerance)
   PetscInt steps_ = 0, global_dofs_ = 0;
