@@ -23,6 +23,8 @@ PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   PetscCall(TSGetTimeStep(ts_, &dt));
   PetscCall(TSGetIJacobian(ts_, &J, nullptr, nullptr, nullptr));
   const auto shift = last_shift_.find(J);
+  // The step taken (the free phase's ladder starts from it), not the TS's proposal for the next one.
+  if (last_step_ > 0.0) dt = last_step_;
   checkpoint.PutShared("heat/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps), dt,
                                       deposited_, boundary_loss_, peak_rise_,
                                       shift == last_shift_.end() ? 0.0 : shift->second});
@@ -46,6 +48,7 @@ PetscErrorCode HeatSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   deposited_ = clock[4];
   boundary_loss_ = clock[5];
   peak_rise_ = clock[6];
+  last_step_ = clock[3];
   PetscCall(TSSetTime(ts_, time_));
   PetscCall(TSSetStepNumber(ts_, static_cast<PetscInt>(clock[2])));
   PetscCall(TSSetTimeStep(ts_, clock[3]));
