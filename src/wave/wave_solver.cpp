@@ -290,6 +290,9 @@ PetscErrorCode WaveSolver::CheckMacroStep() {
   bool halved;
   PetscCall(lts_.TakeHalvings(&halved));
   if (!halved) PetscFunctionReturn(0);
+  // The contact now acts in another level object, whose stored force lacks it: the
+  // next macro step starts from the level forces of the state (as after a restart).
+  lts_started_ = false;
   PetscCall(IntegratorTerm(0.0, &after));
   integrator_offset_ += before - after;
   if (lts_.halvings() == 1)
