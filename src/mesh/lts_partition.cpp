@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 namespace vibrotherm::mesh {
@@ -28,16 +27,9 @@ PetscErrorCode ShortestEdge(DM dm, PetscInt cell, double* h) {
 
 }  // namespace
 
-PetscErrorCode SetLtsPartitionWeights(DM dm) {
+PetscErrorCode SetLtsPartitionWeights(DM dm, const LtsWeighting& lts) {
   PetscFunctionBeginUser;
-  char mode[16] = "off";
-  PetscInt max_levels = 4;
-  PetscReal wiggle = 1.0;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-wave_lts", mode, sizeof(mode), nullptr));
-  if (std::strcmp(mode, "on") != 0) PetscFunctionReturn(0);
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-wave_lts_max_levels", &max_levels, nullptr));
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-wave_lts_wiggle", &wiggle, nullptr));
-  if (max_levels < 1 || !(wiggle > 0.5 && wiggle <= 1.0)) PetscFunctionReturn(0);  // refused later, by the wave options
+  if (!lts.on) PetscFunctionReturn(0);
   PetscInt cStart, cEnd, pStart, pEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
@@ -55,8 +47,7 @@ PetscErrorCode SetLtsPartitionWeights(DM dm) {
   PetscInt top = 0;
   for (std::size_t k = 0; k < h.size(); ++k) {
     if (h[k] <= 0.0) continue;
-    up[k] = std::min<PetscInt>(max_levels - 1, static_cast<PetscInt>(std::floor(std::log2(h[k] / h_min / wiggle))));
-    up[k] = std::max<PetscInt>(0, up[k]);
+    up[k] = LtsDoublings(h[k] / h_min, lts.wiggle, lts.max_levels);
     top = std::max(top, up[k]);
   }
   PetscSection weights;

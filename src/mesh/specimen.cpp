@@ -165,7 +165,7 @@ PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const Mesh
 
 }  // namespace
 
-PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s) {
+PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s, const LtsWeighting& lts) {
   PetscFunctionBeginUser;
   MeshLog log;
   PetscCall(RegisterMeshLogging(&log));
@@ -212,7 +212,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   s->wave = split;
   if (heat) PetscCall(DMDestroy(&serial));
   s->heat = heat ? heat : serial;
-  PetscCall(SetLtsPartitionWeights(s->wave));
+  PetscCall(SetLtsPartitionWeights(s->wave, lts));
   PetscCall(Distribute(&s->wave, "wave_mesh", &s->wave_origin));
   PetscCall(Distribute(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/mesh/lts_partition.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 
 namespace vibrotherm::wave {
@@ -112,8 +113,7 @@ PetscErrorCode AssignCellLevels(const fe::LagrangeSpace& space, const ElasticMat
   std::vector<PetscInt> up(omega.size());
   PetscInt local_top = 0, top;
   for (std::size_t k = 0; k < omega.size(); ++k) {
-    const double ratio = omega_max / omega[k] / options.wiggle;
-    up[k] = std::min<PetscInt>(options.max_levels - 1, std::max(0, static_cast<int>(std::floor(std::log2(ratio)))));
+    up[k] = mesh::LtsDoublings(omega_max / omega[k], options.wiggle, options.max_levels);
     local_top = std::max(local_top, up[k]);
   }
   PetscCallMPI(MPI_Allreduce(&local_top, &top, 1, MPIU_INT, MPI_MAX, comm));

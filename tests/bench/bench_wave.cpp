@@ -38,7 +38,8 @@ static PetscErrorCode Run() {
   mesh::Specimen specimen;
   coupling::Scene scene;
   PetscCall(coupling::ReadScene(comm, &scene));
-  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), &specimen));
+  const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
+  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), &specimen, lts));
   wave::ElasticMaterial material;
   wave::Excitation excitation;
   wave::WaveOptions options;

@@ -11,10 +11,28 @@
 
 #include <petscdmplex.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace vibrotherm::mesh {
 
+/// What the partition needs of the wave's LTS options (read and checked with them).
+struct LtsWeighting {
+  bool on = false;          ///< -wave_lts
+  PetscInt max_levels = 4;  ///< -wave_lts_max_levels
+  double wiggle = 1.0;      ///< -wave_lts_wiggle
+};
+
+/// The rate-2 class of a cell whose stable step is `ratio` × the finest one's
+/// (after SeisSol's λ = wiggle): doublings above the finest, 0 … max_levels − 1.
+/// The one rule of both these weights and the wave solver's levels (lts_levels).
+inline PetscInt LtsDoublings(double ratio, double wiggle, PetscInt max_levels) {
+  return std::min<PetscInt>(max_levels - 1,
+                            std::max<PetscInt>(0, static_cast<PetscInt>(std::floor(std::log2(ratio / wiggle)))));
+}
+
 /// Sets the weights on the serial dm and asks its partitioner to use them, when
-/// -wave_lts on is among the options (else nothing). Call before DMPlexDistribute.
-PetscErrorCode SetLtsPartitionWeights(DM dm);
+/// lts.on (else nothing). Call before DMPlexDistribute.
+PetscErrorCode SetLtsPartitionWeights(DM dm, const LtsWeighting& lts);
 
 }  // namespace vibrotherm::mesh

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vibrotherm/mesh/heat_mesh.hpp"
+#include "vibrotherm/mesh/lts_partition.hpp"
 #include "vibrotherm/mesh/point_origin.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
@@ -39,7 +40,9 @@ struct Specimen {
 /// -heat_mesh* options. `exchange_length` = √(α · coupling interval), the
 /// layer friction heats in one exchange: the default first heat layer is half
 /// of it. Collective.
-PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* specimen);
+/// lts: the wave's local-time-stepping options, for the partition's weights (lts_partition.hpp).
+PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* specimen,
+                              const LtsWeighting& lts = {});
 PetscErrorCode SpecimenDestroy(Specimen* specimen);
 
 /// Reads (declares, for -help) every mesh option without building anything. Collective.

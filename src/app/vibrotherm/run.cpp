@@ -127,7 +127,8 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   PetscFunctionBeginUser;
   PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree));
   const double t = MPI_Wtime();
-  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen));
+  const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
+  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen, lts));
   summary->stages["mesh"] = MPI_Wtime() - t;
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
