@@ -27,7 +27,10 @@ struct LtsStepper::Level {
 };
 
 LtsStepper::LtsStepper() = default;
-LtsStepper::~LtsStepper() { (void)VecDestroy(&scratch_); }
+LtsStepper::~LtsStepper() {
+  (void)VecDestroy(&scratch_);
+  (void)VecDestroy(&work_);
+}
 
 PetscErrorCode LtsStepper::AddLevel() {
   PetscFunctionBeginUser;
@@ -68,6 +71,7 @@ PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMa
   cfl_ = options.cfl;
   element_levels_ = levels.levels;
   PetscCall(VecDuplicate(mass, &scratch_));
+  PetscCall(VecDuplicate(mass, &work_));
   std::vector<std::vector<char>> touched;
   PetscCall(DofLevels(space, levels, &element_finest_, &touched));
   H_ = INFINITY;
@@ -267,13 +271,14 @@ PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
   PetscFunctionBeginUser;
   Level& L = *level_[l];
   const PetscScalar* a;
-  PetscScalar *s, *V;
+  PetscScalar* V;
   PetscCall(VecGetArrayRead(L.a, &a));
-  PetscCall(VecGetArray(scratch_, &s));
   PetscCall(VecGetArray(v, &V));
   if (L.terms.empty()) {  // interior rows only: straight from the level's force
     for (PetscInt i : L.kick_rows) V[i] += c * a[i];
   } else {
+    PetscScalar* s;
+    PetscCall(VecGetArray(scratch_, &s));
     for (PetscInt i : L.kick_rows) s[i] = a[i];
     ForceState state;
     state.signal = SignalValues::At(excitation_.signal, t);
@@ -283,9 +288,9 @@ PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
     for (auto& term : L.terms) term->Accelerate(state, s);
     PetscCall(VecRestoreArrayRead(mass_, &state.mass));
     for (PetscInt i : L.kick_rows) V[i] += c * s[i];
+    PetscCall(VecRestoreArray(scratch_, &s));
   }
   PetscCall(VecRestoreArray(v, &V));
-  PetscCall(VecRestoreArray(scratch_, &s));
   PetscCall(VecRestoreArrayRead(L.a, &a));
   PetscFunctionReturn(0);
 }
@@ -297,8 +302,10 @@ PetscErrorCode LtsStepper::Drift(PetscInt l, double t, double h, Vec u, Vec v) {
   PetscCall(VecGetArray(u, &U));
   PetscCall(VecGetArray(v, &V));
   for (PetscInt i : L.drift) U[i] += h * V[i];
-  const SignalValues signal = SignalValues::At(excitation_.signal, t + h);
-  for (const auto& term : L.terms) term->Impose(signal, U, V);
+  if (!L.terms.empty()) {
+    const SignalValues signal = SignalValues::At(excitation_.signal, t + h);
+    for (const auto& term : L.terms) term->Impose(signal, U, V);
+  }
   PetscCall(VecRestoreArray(v, &V));
   PetscCall(VecRestoreArray(u, &U));
   PetscFunctionReturn(0);
@@ -340,9 +347,7 @@ PetscErrorCode LtsStepper::InteriorAcceleration(Vec a) const {
 PetscErrorCode LtsStepper::IntegratorTerm(Vec u, double* term) const {
   PetscFunctionBeginUser;
   *term = 0.0;
-  Vec a, ma;
-  PetscCall(VecDuplicate(mass_, &a));
-  PetscCall(VecDuplicate(mass_, &ma));
+  Vec a = scratch_, ma = work_;  // scratch: free between macro steps
   for (PetscInt l = 0; l < element_levels_; ++l) {
     PetscCall(VecSet(a, 0.0));
     PetscCall(level_[l]->kernel.Apply(u, a));
@@ -352,8 +357,6 @@ PetscErrorCode LtsStepper::IntegratorTerm(Vec u, double* term) const {
     const double h = std::ldexp(H_, -static_cast<int>(l));
     *term -= h * h / 8.0 * PetscRealPart(ama);
   }
-  PetscCall(VecDestroy(&ma));
-  PetscCall(VecDestroy(&a));
   PetscFunctionReturn(0);
 }
 

@@ -110,6 +110,7 @@ class LtsStepper {
   std::vector<PetscInt> element_finest_;  ///< per owned dof: finest level of its cells
   std::vector<PetscInt> contact_dofs_;    ///< owned dofs the contact acts on
   Vec mass_ = nullptr, scratch_ = nullptr;  ///< mass: not owned
+  Vec work_ = nullptr;                      ///< IntegratorTerm's second vector
   Excitation excitation_;
   WaveInterface* contact_ = nullptr;
   PetscInt element_levels_ = 1, contact_level_ = -1, refinements_ = 0;
