@@ -158,11 +158,7 @@ PetscErrorCode LtsStepper::SetContact(WaveInterface* contact, double omega2) {
   PetscCall(VecRestoreArrayRead(scratch_, &m));
   PetscCallMPI(MPI_Allreduce(&local_level, &crack_level_, 1, MPIU_INT, MPI_MAX, comm_));
   // The coarsest level at least as fine as the crack's cells that holds the contact's stiffness.
-  for (contact_level_ = crack_level_;; ++contact_level_) {
-    if (contact_level_ >= levels()) PetscCall(AddLevel());
-    const double h = std::ldexp(H_, -static_cast<int>(contact_level_)), w = info_[contact_level_].omega;
-    if (h * std::sqrt(w * w + omega2) <= Limit()) break;
-  }
+  PetscCall(StableLevel(crack_level_, omega2, &contact_level_));
   PetscCall(TakeHalvings(nullptr));
   PetscCall(AssignContactDofs());
   PetscFunctionReturn(0);
@@ -179,10 +175,7 @@ PetscErrorCode LtsStepper::TakeHalvings(bool* halved) {
   if (excess <= 0 || pending_level_ >= 0) PetscFunctionReturn(0);
   H_ = std::ldexp(H_, -static_cast<int>(excess));
   contact_level_ -= excess;
-  while (levels() > std::max(element_levels_, contact_level_ + 1)) {
-    level_.pop_back();
-    info_.pop_back();
-  }
+  TrimLevels(contact_level_);
   ++halvings_;
   if (halved) *halved = true;
   PetscCall(AssignContactDofs());
@@ -193,10 +186,7 @@ PetscErrorCode LtsStepper::set_contact_state(PetscInt level, PetscInt refinement
                                              PetscInt halvings) {
   PetscFunctionBeginUser;
   while (contact_ && levels() <= level) PetscCall(AddLevel());
-  while (levels() > std::max(element_levels_, level + 1)) {
-    level_.pop_back();
-    info_.pop_back();
-  }
+  TrimLevels(level);
   contact_level_ = level;
   refinements_ = refinements;
   H_ = macro_step;
@@ -226,17 +216,29 @@ PetscErrorCode LtsStepper::Force(PetscInt l, double t, double h, Vec u) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode LtsStepper::StableLevel(PetscInt from, double omega2, PetscInt* level) {
+  PetscFunctionBeginUser;
+  for (*level = from;; ++*level) {
+    if (*level >= levels()) PetscCall(AddLevel());
+    const double h = std::ldexp(H_, -static_cast<int>(*level)), w = info_[*level].omega;
+    if (h * std::sqrt(w * w + omega2) <= Limit()) break;
+  }
+  PetscFunctionReturn(0);
+}
+
+void LtsStepper::TrimLevels(PetscInt contact_level) {
+  while (levels() > std::max(element_levels_, contact_level + 1)) {
+    level_.pop_back();
+    info_.pop_back();
+  }
+}
+
 PetscErrorCode LtsStepper::RefineContact(double omega2, double t) {
   PetscFunctionBeginUser;
   // Finer until the level's step holds twice the current stiffness (headroom: a
   // contact that just started to bite keeps stiffening).
-  PetscInt level = contact_level_;
-  for (;;) {
-    ++level;
-    if (level >= levels()) PetscCall(AddLevel());
-    const double h = std::ldexp(H_, -static_cast<int>(level)), w = info_[level].omega;
-    if (h * std::sqrt(w * w + 2.0 * omega2) <= Limit()) break;
-  }
+  PetscInt level;
+  PetscCall(StableLevel(contact_level_ + 1, 2.0 * omega2, &level));
   if (refinements_ == 0)
     PetscCall(PetscPrintf(comm_,
                           "wave: the crack contact stiffened at t = %g s: the contact moved from level %" PetscInt_FMT

@@ -102,6 +102,11 @@ class LtsStepper {
   PetscErrorCode MoveContact(Vec u);
   PetscErrorCode ForceWithoutCommit(PetscInt l, Vec u);
   PetscErrorCode AddLevel();
+  /// The first level from `from` on (added as needed) whose step holds the
+  /// level's stiffness plus a contact of squared frequency omega2.
+  PetscErrorCode StableLevel(PetscInt from, double omega2, PetscInt* level);
+  /// Drops the contact-only levels finer than contact_level.
+  void TrimLevels(PetscInt contact_level);
   PetscErrorCode AssignContactDofs();
   double Limit() const { return cfl_ * omega_dt_max_; }
 
