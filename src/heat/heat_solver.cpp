@@ -321,8 +321,8 @@ PetscErrorCode HeatSolver::PostStep(TS ts) {
   PetscReal t;
   PetscCall(TSGetApplicationContext(ts, &self));
   PetscCall(TSGetTime(ts, &t));
-  PetscCall(self->Account(t - self->time_));
   self->last_step_ = t - self->time_;
+  PetscCall(self->Account(self->last_step_));
   self->time_ = t;
   if (self->on_step) PetscCall(self->on_step(*self));
   if (self->stop_requested_) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));

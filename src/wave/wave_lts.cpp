@@ -8,7 +8,7 @@
 
 namespace vibrotherm::wave {
 
-PetscErrorCode WaveSolver::SetupLts(MPI_Comm comm) {
+PetscErrorCode WaveSolver::SetupLts() {
   PetscFunctionBeginUser;
   if (!options_.lts.on) PetscFunctionReturn(0);
   TSType type;
@@ -36,7 +36,6 @@ PetscErrorCode WaveSolver::SetupLts(MPI_Comm comm) {
   step_.UseMacroStep(lts_.macro_step());
   PetscCall(VelocityVerletSetMacroStep(ts_, MacroStep, this));
   lts_active_ = true;
-  (void)comm;
   PetscFunctionReturn(0);
 }
 

@@ -95,7 +95,7 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(VecDuplicate(M_, &force_));
   PetscCall(CreateTS(comm));
   PetscCall(SetupStepControl(comm));
-  PetscCall(SetupLts(comm));
+  PetscCall(SetupLts());
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscCall(TSSetTime(ts_, 0.0));
   PetscFunctionReturn(0);

@@ -158,7 +158,7 @@ class WaveSolver {
   /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
   PetscErrorCode CheckStableStep();
   // Local time stepping (wave_lts.cpp).
-  PetscErrorCode SetupLts(MPI_Comm comm);
+  PetscErrorCode SetupLts();
   static PetscErrorCode MacroStep(void* ctx, PetscReal t, PetscReal h, Vec u, Vec v);
   PetscErrorCode CheckMacroStep();
   /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
