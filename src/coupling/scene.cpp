@@ -62,6 +62,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
+  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));

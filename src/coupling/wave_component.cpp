@@ -139,6 +139,7 @@ PetscErrorCode WaveEnergyRow(const wave::WaveSolver& solver, io::EnergyRow* row)
   row->interface_stored = e.interface_stored;
   row->dissipated = e.dissipated;
   row->work_thermal = e.work_body;  // the only body force: the two-way thermal stress
+  row->damped = e.damped;
   PetscFunctionReturn(0);
 }
 

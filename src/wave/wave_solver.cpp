@@ -96,6 +96,11 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   PetscCall(CreateTS(comm));
   PetscCall(SetupStepControl(comm));
   PetscCall(SetupLts());
+  if (material.damping_rate > 0.0) {  // first: the later terms see the damped mass; LTS accounts it per kick
+    std::unique_ptr<BoundaryTerm> damping;
+    PetscCall(CreateMaterialDamping(material.damping_rate, M_, !lts_active_, &damping));
+    terms_.insert(terms_.begin(), std::move(damping));
+  }
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscCall(TSSetTime(ts_, 0.0));
   PetscFunctionReturn(0);
@@ -198,6 +203,7 @@ PetscErrorCode WaveSolver::ApplyTerms(double t, Vec v, Vec a, double kick_dt) {
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);
   state.kick_dt = kick_dt;
+  state.mass_factor = 1.0 + 0.5 * material_.damping_rate * kick_dt;
   PetscScalar* acc;
   PetscCall(VecGetArray(a, &acc));
   PetscCall(VecGetArrayRead(v, &state.velocity));

@@ -77,6 +77,7 @@ struct WaveEnergy {
   double kinetic = 0, strain = 0, radiated = 0, work_source = 0, integrator = 0;
   double interface_stored = 0, dissipated = 0;  ///< from the WaveInterface, if any
   double work_body = 0;  ///< work of the BodyForce on the waves, if any (two-way thermal stress)
+  double damped = 0;     ///< dissipated by material damping (-material_loss_factor)
 };
 
 class WaveSolver {
