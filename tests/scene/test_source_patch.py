@@ -4,7 +4,7 @@
 own kind. Checked: inside the patch the prescribed component follows the source, just outside
 the edge is free; a patch covering the whole edge is the edge source (same outputs); driving a
 free specimen through a patch closes the energy budget (work of the source = kinetic + strain
-energy, 1e-6); bad patches are refused naming the option.
+energy, 1e-5 as for every displacement source); bad patches are refused naming the option.
 
 usage: test_source_patch.py VIBROTHERM SOURCE_DIR"""
 import json, os, subprocess, sys, tempfile
