@@ -81,7 +81,7 @@ PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMa
     PetscCall(SetupLevel(l, space, material, levels, touched[l]));
     if (info_[l].omega > 0.0) H_ = std::min(H_, std::ldexp(Limit() / info_[l].omega, static_cast<int>(l)));
   }
-  H_ = StepControl::RoundDown(H_);
+  H_ = StepControl::Quantized(H_, options.step_quantum);
   PetscCall(AssignContactDofs());
   PetscCall(SetupBoundary(boundary));
   PetscFunctionReturn(0);

@@ -178,7 +178,8 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
              "-wave_ts_type %s is unstable for undamped waves (its stability region misses the imaginary axis); use "
              "basicsymplectic, rk with -wave_ts_rk_type 4, or ssp with -wave_ts_ssp_type rk104",
              type);
-  PetscCall(step_.Setup(comm, omega_max_, implicit ? 0.0 : omega_dt_max, options_.cfl, options_.dt, type));
+  PetscCall(step_.Setup(comm, omega_max_, implicit ? 0.0 : omega_dt_max, options_.cfl, options_.dt, type,
+                        options_.step_quantum));
   PetscFunctionReturn(0);
 }
 

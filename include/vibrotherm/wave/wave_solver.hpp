@@ -47,6 +47,9 @@ struct WaveOptions {
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
   StiffnessKernel kernel = StiffnessKernel::kBlocked;        ///< -wave_kernel petsc|blocked
   LtsOptions lts;  ///< -wave_lts on|off, -wave_lts_max_levels, -wave_lts_cfl, -wave_lts_wiggle
+  /// Every step divides this (0: any step): the heat step of a periodic source (-periodic on),
+  /// so that source periods end on wave steps (set by the scene, not an option).
+  double step_quantum = 0.0;
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
