@@ -1,5 +1,7 @@
 #include "vibrotherm/coupling/heat_component.hpp"
 
+#include <algorithm>
+
 #include "vibrotherm/coupling/thermal_stress.hpp"
 #include "vibrotherm/coupling/thermoelastic_source.hpp"
 #include "vibrotherm/coupling/thermoelastic_transfer.hpp"
@@ -142,6 +144,53 @@ PetscErrorCode HeatComponent::Restore(const io::Checkpoint& checkpoint, const me
     PetscCall(source->Restore(checkpoint, specimen));
     if (solver_.steps() > 0) deposited_by_source_[source->name()] = source->deposited();
   }
+  PetscFunctionReturn(0);
+}
+
+bool HeatComponent::replayable() const {
+  return !thermal_stress_ &&
+         std::all_of(sources_.begin(), sources_.end(), [](const auto& source) { return source->replayable(); });
+}
+
+PetscErrorCode HeatComponent::StartRecording(double t) {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->StartRecording(t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StopRecording() {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->StopRecording());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::Replay(ReplayMode mode) {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->Replay(mode));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StepAveraged(double t) {
+  PetscFunctionBeginUser;
+  const double t0 = MPI_Wtime();
+  PetscCall(VecSet(load_, 0.0));
+  for (auto& source : sources_) PetscCall(source->AddAverageLoad(load_));
+  PetscCall(solver_.SetSourceLoad(load_));
+  PetscCall(solver_.AdvanceInSteps(t, 1));
+  seconds_ += MPI_Wtime() - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::SolverSnapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Save(*snapshot, specimen.heat_origin));
+  snapshot->IndexLocal();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::RestoreSolver(const io::Checkpoint& snapshot, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Restore(snapshot, specimen.heat_origin));
   PetscFunctionReturn(0);
 }
 

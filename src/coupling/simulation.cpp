@@ -5,6 +5,7 @@
 
 #include "recorder.hpp"
 #include "vibrotherm/coupling/heat_camera.hpp"
+#include "vibrotherm/coupling/periodic_continuation.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -74,14 +75,20 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
     PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
   }
+  if (waves_) {
+    periodic_ = std::make_unique<PeriodicContinuation>();
+    PetscCall(periodic_->Setup(*scene_, *specimen_, waves_.get(), heat_.get(), dir, summary, control.restart));
+  }
   if (control.restart) PetscCall(Resume(*control.restart, recorder));
   if (waves_) PetscCall(RunCoupled(recorder, summary));
   if (!interrupted_by_ && heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12))
     PetscCall(RunHeatAlone(recorder, summary));
   if (interrupted_by_) {  // the files stay as the checkpoint describes them
     recorder.Keep();
+    if (periodic_) periodic_->Keep();
     PetscFunctionReturn(0);
   }
+  if (periodic_) PetscCall(periodic_->Finish(summary));
   if (heat_) {
     PetscCall(heat_->StopSources(dir));
     PetscCall(heat_->Summarise(summary));
@@ -124,9 +131,26 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     PetscCall(recorder.RecordEnergy(row, heat_.get()));
     if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
   }
+  periodic_->between_steps = [this, &recorder](bool* stop) {
+    PetscFunctionBeginUser;
+    PetscCall(CheckpointIfDue(recorder, false));
+    *stop = interrupted_by_ != 0;
+    PetscFunctionReturn(0);
+  };
   bool quiet = false;
+  if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
+    bool continued;
+    PetscCall(periodic_->FinishInterrupted(recorder, &continued));
+    PetscCall(waves_->Energy(&row));
+  }
   while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
     PetscCall(Interval(recorder, heat_dt, &row));
+    bool continued;
+    PetscCall(periodic_->AfterInterval(recorder, row, &continued));
+    if (continued) {  // the waves jumped ahead: their energies now, the progress line on from here
+      PetscCall(waves_->Energy(&row));
+      recorder.progress().Start(comm, "wave", solver.time(), expected_end, solver.dt(), false);
+    }
     PetscCall(WavesQuiet(row, &quiet));
     PetscCall(CheckpointIfDue(recorder, quiet));
   }
@@ -147,8 +171,13 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
   wave::WaveSolver& solver = waves_->solver();
   const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
   for (PetscInt k = 0; k < heat_steps && solver.time() < scene_->final_time * (1 - 1e-12); ++k) {
-    // Counted again each time: the contact may have shrunk the wave step.
-    PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
+    // Counted again each time: the contact may have shrunk the wave step. Quantized steps (a periodic
+    // source) land on the heat step's end, where a periodic state is compared and recorded.
+    if (scene_->wave.step_quantum > 0.0)
+      PetscCall(waves_->solver().AdvanceTo(
+          std::min(scene_->final_time, (std::round(solver.time() / heat_dt) + 1.0) * heat_dt)));
+    else
+      PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
     if (!heat_) continue;
     PetscCall(PetscLogStagePush(heat_stage_));
     PetscCall(heat_->StepTo(solver.time()));

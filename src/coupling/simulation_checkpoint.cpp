@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "recorder.hpp"
+#include "vibrotherm/coupling/periodic_continuation.hpp"
 #include "vibrotherm/coupling/simulation.hpp"
 
 namespace vibrotherm::coupling {
@@ -50,6 +51,7 @@ PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder) const {
   PetscCall(waves_->Save(checkpoint, *specimen_));
   if (heat_) PetscCall(heat_->Save(checkpoint, *specimen_));
   PetscCall(recorder.Save(checkpoint));
+  if (periodic_) PetscCall(periodic_->Save(checkpoint));
   std::vector<double> quiet = {peak_mechanical_, mechanical_left_};
   for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy});
   checkpoint.PutShared("run/quiet_rule", quiet);
@@ -66,6 +68,7 @@ PetscErrorCode Simulation::Resume(const io::Checkpoint& checkpoint, Recorder& re
              "-restart: the checkpoint has a heat solver, this scene has none");
   if (heat_) PetscCall(heat_->Restore(checkpoint, *specimen_));
   PetscCall(recorder.Restore(checkpoint, waves_.get(), heat_.get()));
+  if (periodic_) PetscCall(periodic_->Restore(checkpoint));
   std::vector<double> quiet;
   PetscCall(checkpoint.GetShared("run/quiet_rule", &quiet));
   peak_mechanical_ = quiet.at(0);

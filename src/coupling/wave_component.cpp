@@ -182,4 +182,30 @@ PetscErrorCode WaveComponent::Restore(const io::Checkpoint& checkpoint, const me
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode WaveComponent::Snapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const {
+  PetscFunctionBeginUser;
+  PetscCall(Save(*snapshot, specimen));
+  snapshot->IndexLocal();
+  PetscFunctionReturn(0);
+}
+
+std::vector<double> WaveComponent::Accumulated() const {
+  std::vector<double> values = solver_->Accumulated();
+  if (crack_) {
+    const std::vector<double> crack = crack_->Accumulated();
+    values.insert(values.end(), crack.begin(), crack.end());
+  }
+  return values;
+}
+
+PetscErrorCode WaveComponent::ResumeFrom(const io::Checkpoint& snapshot, const mesh::Specimen& specimen,
+                                         const std::vector<double>& increments) {
+  PetscFunctionBeginUser;
+  PetscCall(Restore(snapshot, specimen));
+  const std::size_t n = solver_->Accumulated().size();
+  PetscCall(solver_->JumpAhead(std::vector<double>(increments.begin(), increments.begin() + n)));
+  if (crack_) crack_->JumpAhead(std::vector<double>(increments.begin() + n, increments.end()));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

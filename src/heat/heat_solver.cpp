@@ -383,18 +383,29 @@ PetscErrorCode HeatSolver::ScaleTolerance() {
 
 PetscErrorCode HeatSolver::UseFreeIntegrator() {
   PetscFunctionBeginUser;
-  if (free_ts_) PetscFunctionReturn(0);
+  if (ts_ == free_ts_) PetscFunctionReturn(0);
   // The ladder starts from the last coupled step (not the coupled TS's next-step
   // proposal, an error estimate's); nothing stepped yet: the TS's initial step.
   PetscReal dt = last_step_;
   if (dt <= 0.0) PetscCall(TSGetTimeStep(ts_, &dt));
-  PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
-  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
+  if (!free_ts_) {
+    PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
+    PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
+  }
+  PetscCall(TSSetTime(free_ts_, time_));
   PetscCall(TSSetTimeStep(free_ts_, dt));
   TSAdapt adapt;
   PetscCall(TSGetAdapt(free_ts_, &adapt));
   PetscCall(StepLadderStart(adapt, dt));  // a first segment shorter than dt must not set the rung
   ts_ = free_ts_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::UseCoupledIntegrator() {
+  PetscFunctionBeginUser;
+  if (ts_ == coupled_ts_) PetscFunctionReturn(0);
+  PetscCall(TSSetTime(coupled_ts_, time_));
+  ts_ = coupled_ts_;
   PetscFunctionReturn(0);
 }
 

@@ -8,8 +8,6 @@ namespace vibrotherm::heat {
 
 PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
-  PetscCheck(ts_ == coupled_ts_, PetscObjectComm((PetscObject)dm_), PETSC_ERR_PLIB,
-             "heat checkpoints are taken while the waves run");
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   const PetscScalar* theta;
@@ -28,6 +26,7 @@ PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   checkpoint.PutShared("heat/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps), dt,
                                       deposited_, boundary_loss_, peak_rise_,
                                       shift == last_shift_.end() ? 0.0 : shift->second});
+  checkpoint.PutShared("heat/integrator", {free_integrator() ? 1.0 : 0.0});  // free: a periodic continuation's steps
   PetscFunctionReturn(0);
 }
 
@@ -38,6 +37,12 @@ PetscErrorCode HeatSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   std::vector<double> theta, clock;
   PetscCall(checkpoint.GetKeyed("heat/theta", keys, 1, &theta));
   PetscCall(checkpoint.GetShared("heat/clock", &clock, 8));
+  if (checkpoint.Scalar("heat/integrator") == 1.0) {
+    last_step_ = clock[3];
+    PetscCall(UseFreeIntegrator());
+  } else {
+    PetscCall(UseCoupledIntegrator());
+  }
   PetscScalar* x;
   PetscCall(VecGetArray(theta_, &x));
   std::copy(theta.begin(), theta.end(), x);

@@ -141,6 +141,17 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
           json.begin_object().value("frequency", frequency).value("participation", participation).end_object();
         json.end_array();
       }
+      json.begin_array("periodic");
+      for (const PeriodicSegment& p : s.periodic)
+        json.begin_object()
+            .value("detected", p.detected)
+            .value("suspended", p.suspended)
+            .value("resumed", p.resumed)
+            .value("period_multiple", p.period_multiple)
+            .value("periods_continued", p.periods_continued)
+            .value("change", p.change)
+            .end_object();
+      json.end_array();
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

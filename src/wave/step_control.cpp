@@ -61,13 +61,14 @@ PetscErrorCode StepControl::IncludeBulkStiffness(double omega2, const char* what
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StepControl::Check(double omega2, double time, PetscInt steps, bool* changed) {
+PetscErrorCode StepControl::Check(double omega2, double time, PetscInt steps, bool at_quantum, bool* changed) {
   PetscFunctionBeginUser;
   *changed = false;
   if (implicit()) PetscFunctionReturn(0);
   const double limit = Limit(omega2);
   stable_dt_ = limit;
   if (dt_ <= cfl_ * limit * (1.0 + 1e-12)) PetscFunctionReturn(0);
+  if (quantum_ > 0.0 && !at_quantum && dt_ < limit) PetscFunctionReturn(0);  // still stable: shrink at the boundary
   // Shrink by at least 10 %, with twice the current contact stiffness as
   // headroom: velocity Verlet wants a step that changes rarely (a creeping step
   // was measured to destabilise it), and a contact that just started to bite

@@ -276,7 +276,8 @@ PetscErrorCode WaveSolver::CheckStableStep() {
   double omega2, before = step_.dt(), term_before = 0.0, term_after = 0.0;
   bool changed;
   PetscCall(interface_->MaxFrequencySquared(&omega2));
-  PetscCall(step_.Check(omega2, time_, steps_, &changed));
+  const double q = step_.quantum(), k = q > 0.0 ? time_ / q : 0.0;
+  PetscCall(step_.Check(omega2, time_, steps_, std::abs(k - std::round(k)) < 1e-6, &changed));
   if (!changed) PetscFunctionReturn(0);
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   // The conserved energy of velocity Verlet depends on the step: keep the budget continuous.

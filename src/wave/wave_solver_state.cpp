@@ -94,4 +94,22 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   PetscFunctionReturn(0);
 }
 
+std::vector<double> WaveSolver::Accumulated() const {
+  return {time_, accounted_.radiated, accounted_.work_source, body_work_, accounted_.damped,
+          lts_active_ ? lts_.damped() : 0.0};
+}
+
+PetscErrorCode WaveSolver::JumpAhead(const std::vector<double>& increments) {
+  PetscFunctionBeginUser;
+  PetscCheck(increments.size() == 6, PetscObjectComm((PetscObject)dm_), PETSC_ERR_ARG_SIZ, "6 increments expected");
+  time_ += increments[0];
+  accounted_.radiated += increments[1];
+  accounted_.work_source += increments[2];
+  body_work_ += increments[3];
+  accounted_.damped += increments[4];
+  if (lts_active_) lts_.set_damped(lts_.damped() + increments[5]);
+  PetscCall(TSSetTime(ts_, time_));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::wave

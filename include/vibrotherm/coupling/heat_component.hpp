@@ -50,6 +50,20 @@ class HeatComponent {
   /// (after the waves have restored theirs).
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
+  // Periodic continuation (periodic_continuation.hpp).
+  /// Whether every source can replay a recorded period (the continuation needs it).
+  bool replayable() const;
+  /// The sources record what they deposit from t on (a heat step's end), until StopRecording ...
+  PetscErrorCode StartRecording(double t);
+  PetscErrorCode StopRecording();
+  /// ... and replay it (phase-locked or averaged) or take the live physics again (off).
+  PetscErrorCode Replay(ReplayMode mode);
+  /// One heat step to t with the sources' averaged load, exchanging and recording nothing
+  /// (the averaged twin of a continuation's phase-resolved start).
+  PetscErrorCode StepAveraged(double t);
+  /// The solver alone into an in-memory snapshot, and back (the twin starts and ends there).
+  PetscErrorCode SolverSnapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const;
+  PetscErrorCode RestoreSolver(const io::Checkpoint& snapshot, const mesh::Specimen& specimen);
   /// Wall time spent stepping the heat [s].
   double seconds() const { return seconds_; }
   void add_seconds(double s) { seconds_ += s; }

@@ -41,6 +41,7 @@ namespace vibrotherm::coupling {
 
 class Recorder;
 class HeatCamera;
+class PeriodicContinuation;
 
 /// How a run starts and what its checkpoints carry.
 struct RunControl {
@@ -88,6 +89,7 @@ class Simulation {
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
+  std::unique_ptr<PeriodicContinuation> periodic_;  ///< -periodic: continuation of a periodic state
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
     double t, energy;

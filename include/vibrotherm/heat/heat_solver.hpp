@@ -77,6 +77,9 @@ class HeatSolver {
   /// -heat_free_ts_type bdf took 10× fewer steps on meshes much finer than the
   /// diffusion length (Carslaw-Jaeger case) but closes the balance only to ~1 %.
   PetscErrorCode UseFreeIntegrator();
+  /// Back to the coupled phase's TS at the current time (after a periodic continuation's free steps).
+  PetscErrorCode UseCoupledIntegrator();
+  bool free_integrator() const { return ts_ == free_ts_ && free_ts_ != nullptr; }
   /// Advances with the free integrator (its own step schedule) to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
   /// Advances to t_end in `steps` equal steps (coupling intervals: the source

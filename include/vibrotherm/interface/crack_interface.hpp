@@ -75,6 +75,10 @@ class CrackInterface final : public wave::WaveInterface {
   /// the accounts into a checkpoint, keyed by the + point's origin; and back (crack_interface_state.cpp).
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  /// The periodic continuation: what accumulates (W of every owned cell, this rank's dissipated
+  /// energy), and a jump ahead that adds increments of these.
+  std::vector<double> Accumulated() const;
+  void JumpAhead(const std::vector<double>& increments);
   /// Wall time spent evaluating and committing the interface (this rank).
   double seconds() const { return seconds_; }
 

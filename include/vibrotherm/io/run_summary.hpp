@@ -27,6 +27,15 @@ struct CameraSummary {
   bool detectable = false; ///< peak_snr >= -camera_detect_snr
 };
 
+/// One periodic continuation (coupling/periodic_continuation): when the run was found periodic,
+/// when the waves were suspended and resumed, and the periods continued.
+struct PeriodicSegment {
+  double detected = 0.0, suspended = 0.0, resumed = 0.0;  ///< [s]
+  double period_multiple = 0.0;    ///< source periods in the period recorded and replayed
+  double periods_continued = 0.0;  ///< source periods the waves did not simulate
+  double change = 0.0;             ///< the detector's change when it was found periodic
+};
+
 /// The largest rise over every heat dof at every heat step, when and where.
 struct FieldPeakSummary {
   bool known = false;
@@ -65,6 +74,7 @@ struct RunSummary {
   CameraSummary camera;         ///< summary.json camera, camera_peak_snr, camera_detectable (frames > 0)
   /// -modes: (frequency [Hz], defect participation) of each mode found.
   std::vector<std::pair<double, double>> modes;
+  std::vector<PeriodicSegment> periodic;  ///< the periodic continuations (summary.json "periodic")
   mesh::MeshSummary mesh;
 };
 

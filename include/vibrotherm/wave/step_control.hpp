@@ -37,8 +37,11 @@ class StepControl {
   /// A stiffness added to the bulk (a body force's, bounded by omega2): ω_bulk² += omega2,
   /// the step shrinks if it must (refused when -wave_dt is given and no longer stable).
   PetscErrorCode IncludeBulkStiffness(double omega2, const char* what);
-  /// After a step, with the contact's current omega2: *changed when the step shrank.
-  PetscErrorCode Check(double omega2, double time, PetscInt steps, bool* changed);
+  /// After a step, with the contact's current omega2: *changed when the step shrank. With a
+  /// quantum, off a quantum boundary (at_quantum false) a step still within the stability limit
+  /// is kept until the boundary, so that quanta stay whole numbers of steps.
+  PetscErrorCode Check(double omega2, double time, PetscInt steps, bool at_quantum, bool* changed);
+  double quantum() const { return quantum_; }
   double dt() const { return dt_; }
   double stable_dt() const { return stable_dt_; }
   double omega_dt_max() const { return omega_dt_max_; }

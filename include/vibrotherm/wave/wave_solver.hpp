@@ -144,6 +144,11 @@ class WaveSolver {
   /// Restore after Setup and SetInterface; the interface restores itself.
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  /// What grows with time rather than repeating in a periodic state (this rank's: the clock,
+  /// radiated, source work, body work, damped), for the periodic continuation ...
+  std::vector<double> Accumulated() const;
+  /// ... which jumps ahead by adding increments of these (after restoring a stored state).
+  PetscErrorCode JumpAhead(const std::vector<double>& increments);
 
  private:
   // Explicit types (wave_solver.cpp).

@@ -1,0 +1,27 @@
+// Periodic continuation's options (-periodic*; periodic_continuation.hpp).
+#pragma once
+
+#include <petscsys.h>
+
+namespace vibrotherm::coupling {
+
+struct PeriodicOptions {
+  bool on = true;             ///< -periodic on|off
+  double tol = 1e-3;          ///< -periodic_tol: largest change per period of the state and energies
+  /// -periodic_tol_cells: largest change of the friction energy's distribution over the crack (it
+  /// wanders by ~0.4 % from window to window in the paper scene while the total repeats to 1e-5)
+  double tol_cells = 1e-2;
+  PetscInt max_multiple = 4;  ///< -periodic_max_multiple: longest period sought, in source periods
+  /// -periodic_window: periods (of the period found) whose friction energy is compared with the
+  /// window before, recorded and replayed as one: the contact's period-to-period noise averages out
+  PetscInt window = 4;
+  double refresh = 0.0;       ///< -periodic_refresh [s]: waves re-run after this much continuation (0: never)
+  PetscInt ladder_steps = 16;  ///< -periodic_ladder_steps: heat steps per rung (the step doubles after them)
+  PetscInt fine_periods = 4;   ///< -periodic_fine_periods: phase-resolved heat periods before the ladder
+  PetscInt min_continued = 8;  ///< -periodic_min_continued: fewer periods to skip are simply simulated
+};
+
+/// Reads -periodic*, checked, named errors. Collective.
+PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* options);
+
+}  // namespace vibrotherm::coupling
