@@ -150,8 +150,9 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
   for (std::size_t m = 1; m <= static_cast<std::size_t>(options_.max_multiple) && m < samples_.size(); ++m) {
     double parts[4];
     PetscCall(Change(m, weights, parts));
-    // The distribution over the crack against its own tolerance (its noise floor is higher).
-    const double change = std::max({parts[0], parts[1], parts[3], parts[2] * options_.tol / options_.tol_cells});
+    // The contact's cell by cell quantities against their own tolerance (their noise floor is higher).
+    const double scale = options_.tol / options_.tol_cells;
+    const double change = std::max({parts[0], parts[1] * scale, parts[3], parts[2] * scale});
     last_change_ = std::min(last_change_, change);
     if (file_)
       file_->stream() << samples_.back().t << ',' << m << ',' << change << ',' << parts[0] << ',' << parts[1] << ','

@@ -17,8 +17,8 @@ PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
   PetscCall(PetscOptionsReal("-periodic_tol", "Periodic when the state, every cell's friction energy and the energy "
                              "accounts change by less than this from one period to the next", nullptr, o->tol, &o->tol,
                              nullptr));
-  PetscCall(PetscOptionsReal("-periodic_tol_cells", "Periodic when, besides, the friction energy of the contact cells "
-                             "(L1 over the crack) changes by less than this from one window to the next", nullptr,
+  PetscCall(PetscOptionsReal("-periodic_tol_cells", "Periodic when, besides, the contact cell by cell (tractions and slip "
+                             "offsets, friction energy over a window) changes by less than this", nullptr,
                              o->tol_cells, &o->tol_cells, nullptr));
   PetscCall(PetscOptionsInt("-periodic_max_multiple", "Longest period sought, in source periods (clapping can halve "
                             "the frequency)", nullptr, o->max_multiple, &o->max_multiple, nullptr));

@@ -82,6 +82,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
   PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));
   PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat));

@@ -90,6 +90,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
+  if (scene.wave.harmonic_start) PetscCall(solver_->StartHarmonic());
   PetscCall(stage.End(&summary->stages["wave_setup"]));
   PetscCall(solver_->ViewLts());
   summary->derived["wave_dt"] = solver_->dt();

@@ -19,6 +19,7 @@ void WriteHeatView(JsonWriter& json, const RunSummary& s) {
   const CameraSummary& c = s.camera;
   if (c.frames == 0) return;
   json.value("camera_peak_snr", c.peak_snr).value("camera_detectable", c.detectable);
+  json.value("camera_detection_time", c.detection_time);
   json.begin_object("camera");
   json.value("frames", c.frames).value("rows", c.rows).value("cols", c.cols).value("netd", c.netd);
   json.value("peak_rise", c.peak_rise).value("peak_frame", c.peak_frame).value("peak_time", c.peak_time);

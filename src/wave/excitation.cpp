@@ -33,7 +33,7 @@ double SourceTimeFunction::ramp_time() const { return std::min(ramp_cycles / fre
 double SourceTimeFunction::blend_time() const { return std::max(ramp_cycles, 1.0) / frequency; }
 
 bool SourceTimeFunction::steady_stretch(double t, double* start, double* end) const {
-  double from = ramp_time();
+  double from = running_at_start ? 0.0 : ramp_time();
   for (const Step& step : schedule) {
     if (t < step.t) break;
     from = step.t + blend_time();
@@ -55,7 +55,7 @@ void SourceTimeFunction::evaluate(double t, double* g, double* dg, double* ddg) 
   const double ramp = ramp_time();
   // Window w(t) and its derivatives: sin²(π τ / (2 T_r)), τ the time from the nearer end.
   double win = 1.0, dwin = 0.0, ddwin = 0.0;
-  if (ramp > 0.0 && (t < ramp || t > duration - ramp)) {
+  if (ramp > 0.0 && ((t < ramp && !running_at_start) || t > duration - ramp)) {
     const bool on = t < ramp;
     const double tau = on ? t : duration - t, sign = on ? 1.0 : -1.0, k = M_PI / (2.0 * ramp);
     win = std::sin(k * tau) * std::sin(k * tau);

@@ -35,6 +35,13 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
                               "stability limit (on) or all at the smallest cell's step (off)",
                               {"off", "on"}, &lts));
   o->lts.on = lts == Switch::kOn;
+  enum class Start { kRest, kHarmonic };
+  Start start = o->harmonic_start ? Start::kHarmonic : Start::kRest;
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_start",
+                              "Initial state: rest (the source switches on), or harmonic (the steady response of the "
+                              "linearized waves to the running source: a resonant specimen's build-up skipped)",
+                              {"rest", "harmonic"}, &start));
+  o->harmonic_start = start == Start::kHarmonic;
   PetscCall(PetscOptionsInt("-wave_lts_max_levels", "Most levels of local time stepping (rate 2 each)", nullptr,
                             o->lts.max_levels, &o->lts.max_levels, nullptr));
   PetscCall(PetscOptionsReal("-wave_lts_cfl", "Each LTS level's step as a fraction of its own stability limit", nullptr,

@@ -14,7 +14,8 @@
 // Energies and friction by windows: a contact sheds broadband noise, and single
 // periods' friction energies differ cell by cell by ~0.5 % in the paper scene
 // while the crack's total repeats to 1e-5; a window of 4 periods averages it.
-// The largest of these (cells scaled by -periodic_tol / -periodic_tol_cells) is
+// The largest of these (memory and cells scaled by -periodic_tol / -periodic_tol_cells:
+// the contact's cell-by-cell quantities have a noise floor of ~0.5 %) is
 // the change of multiple m; summary.json and
 // periodic.csv report it (a scene that never becomes periodic says how close it came).
 #pragma once

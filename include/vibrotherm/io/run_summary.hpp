@@ -25,6 +25,7 @@ struct CameraSummary {
   double peak_time = 0.0;  ///< centre of that frame's window [s]
   double peak_snr = 0.0;   ///< peak_rise / NETD
   bool detectable = false; ///< peak_snr >= -camera_detect_snr
+  double detection_time = -1.0;  ///< end of the first frame whose clean peak reaches the SNR [s] (-1: none)
 };
 
 /// One periodic continuation (coupling/periodic_continuation): when the run was found periodic,

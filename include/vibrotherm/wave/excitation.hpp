@@ -28,6 +28,7 @@ struct SourceTimeFunction {
     double t, amplitude;  ///< from t on, this amplitude (after the blend)
   };
   std::vector<Step> schedule;  ///< -source_schedule, by time
+  bool running_at_start = false;  ///< no switch-on: the waves start in the source's steady response
 
   /// g, dg/dt, d²g/dt² at time t.
   void evaluate(double t, double* g, double* dg, double* ddg) const;
