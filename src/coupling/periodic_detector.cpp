@@ -131,6 +131,13 @@ PetscErrorCode PeriodicDetector::Change(std::size_t m, const std::vector<double>
     const double change = std::abs(recent - over(start.energy, before.energy, column));
     if (change > 0.0) parts[3] = std::max(parts[3], recent != 0.0 ? change / std::abs(recent) : INFINITY);
   }
+  // A steady state's energy flow balances over the window: what the source works, the losses take.
+  const double work = over(now.energy, start.energy, &io::EnergyRow::work_source) +
+                      over(now.energy, start.energy, &io::EnergyRow::work_thermal);
+  const double losses = over(now.energy, start.energy, &io::EnergyRow::radiated) +
+                        over(now.energy, start.energy, &io::EnergyRow::dissipated) +
+                        over(now.energy, start.energy, &io::EnergyRow::damped);
+  if (work != 0.0) parts[3] = std::max(parts[3], std::abs(work - losses) / std::abs(work));
   PetscFunctionReturn(0);
 }
 

@@ -201,9 +201,17 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   if (scene_->run.quiet_fraction <= 0.0) PetscFunctionReturn(0);
   // The mechanical energy left bounds the heat still to come: once it is a small
   // fraction of what has been dissipated, stopping the waves loses at most that fraction.
-  const double left = e.kinetic + e.strain + e.interface_stored;
+  // Of it, friction takes at most its share of the losses over the last period (material
+  // damping and radiation heat no crack; friction's share only falls as the waves decay).
   const double t = e.t;
-  recent_.push_back({t, left});
+  double left = e.kinetic + e.strain + e.interface_stored;
+  if (!recent_.empty()) {
+    const Sample& first = recent_.front();
+    const double friction = e.dissipated - first.dissipated;
+    const double losses = friction + (e.damped - first.damped) + (e.radiated - first.radiated);
+    if (losses > 0.0) left *= std::max(0.0, friction) / losses;
+  }
+  recent_.push_back({t, left, e.dissipated, e.damped, e.radiated});
   peak_mechanical_ = std::max(peak_mechanical_, left);
   // Over a whole source period: kinetic and strain energy trade places within a cycle.
   const double period = 1.0 / scene_->excitation.signal.frequency;

@@ -10,7 +10,9 @@
 //   cells    Σ_c w_c |ΔW_c over the last window − over the window before| / Σ_c w_c ΔW_c,
 //            windows of -periodic_window × m periods;
 //   energies the source's work, the radiated, dissipated and damped energy over the
-//            last window against the window before, each relative to itself.
+//            last window against the window before, each relative to itself, and
+//            the window's balance: the source's work less the losses, relative to
+//            the work (a transient still changes the stored energy);
 // Energies and friction by windows: a contact sheds broadband noise, and single
 // periods' friction energies differ cell by cell by ~0.5 % in the paper scene
 // while the crack's total repeats to 1e-5; a window of 4 periods averages it.

@@ -92,7 +92,8 @@ class Simulation {
   std::unique_ptr<PeriodicContinuation> periodic_;  ///< -periodic: continuation of a periodic state
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
-    double t, energy;
+    double t, energy;                    ///< energy: the mechanical energy left times friction's share of the losses
+    double dissipated, damped, radiated;  ///< the accounts then
   };
   std::vector<Sample> recent_;
   double peak_mechanical_ = 0.0, mechanical_left_ = 0.0;
