@@ -22,9 +22,10 @@ PetscErrorCode PeriodicContinuation::Setup(const Scene& scene, const mesh::Speci
   heat_ = heat;
   period_ = 1.0 / scene.excitation.signal.frequency;
   heat_dt_ = scene.couple_dt / scene.run.heat_substeps;
-  on_ = scene.periodic.on && waves;
-  if (!scene.periodic.on) note_ = "-periodic off";
+  on_ = scene.periodic.on && waves && (heat || scene.periodic.choice == PeriodicChoice::On);
+  if (!scene.periodic.on) note_ = "-periodic off (or the coupling cannot compare whole periods)";
   else if (!waves) note_ = "no waves";
+  else if (!heat && scene.periodic.choice == PeriodicChoice::Auto) note_ = "-periodic auto: no heat runs";
   else if (heat && !heat->replayable()) {
     on_ = false;
     note_ = "a heat source cannot replay a recorded period (-thermoelastic)";

@@ -8,12 +8,11 @@ namespace vibrotherm::coupling {
 
 PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
   PetscFunctionBeginUser;
-  PetscInt on = o->on ? 0 : 1;
   PetscOptionsBegin(comm, nullptr, "Periodic continuation of a periodic source", nullptr);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-periodic",
-                          "Once waves and contact repeat from period to period, suspend the waves and feed the heat the "
-                          "recorded period until the source changes",
-                          {"on", "off"}, &on, nullptr));
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-periodic",
+                              "Once waves and contact repeat from period to period, suspend the waves and feed the heat "
+                              "the recorded period until the source changes: auto (when heat runs), on, off",
+                              {"auto", "on", "off"}, &o->choice));
   PetscCall(PetscOptionsReal("-periodic_tol", "Periodic when the state, every cell's friction energy and the energy "
                              "accounts change by less than this from one period to the next", nullptr, o->tol, &o->tol,
                              nullptr));
@@ -36,7 +35,7 @@ PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
   PetscCall(PetscOptionsInt("-periodic_min_continued", "A continuation shorter than this many periods is simulated "
                             "instead", nullptr, o->min_continued, &o->min_continued, nullptr));
   PetscOptionsEnd();
-  o->on = on == 0;
+  o->on = o->choice != PeriodicChoice::Off;
   PetscCheck(o->tol > 0.0 && o->tol < 1.0, comm, PETSC_ERR_USER_INPUT, "-periodic_tol must be in (0, 1), got %g", o->tol);
   PetscCheck(o->max_multiple >= 1 && o->max_multiple <= 16, comm, PETSC_ERR_USER_INPUT,
              "-periodic_max_multiple must be in [1, 16], got %" PetscInt_FMT, o->max_multiple);

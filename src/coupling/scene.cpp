@@ -59,6 +59,8 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
 /// the heat step, which must divide the period. Off (said once) when the coupling cannot.
 PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
+  const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
+  if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
   if (!s->periodic.on) PetscFunctionReturn(0);
   const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
   const double per_period = period / heat_dt;

@@ -205,7 +205,7 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   // damping and radiation heat no crack; friction's share only falls as the waves decay).
   const double t = e.t;
   double left = e.kinetic + e.strain + e.interface_stored;
-  if (!recent_.empty()) {
+  if (heat_ && !recent_.empty()) {  // the waves stop for the heat's sake: only friction heats
     const Sample& first = recent_.front();
     const double friction = e.dissipated - first.dissipated;
     const double losses = friction + (e.damped - first.damped) + (e.radiated - first.radiated);

@@ -28,8 +28,9 @@ PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, Elast
   PetscOptionsEnd();
   PetscCheck(m->loss_factor >= 0.0 && m->loss_factor < 1.0, comm, PETSC_ERR_USER_INPUT,
              "-material_loss_factor must be in [0, 1), got %g", m->loss_factor);
-  PetscCheck(m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency), comm, PETSC_ERR_USER_INPUT,
-             "-material_damping_frequency must be > 0, got %g", m->damping_frequency);
+  // Checked only when it matters (an unusable -source_frequency is refused under its own name).
+  PetscCheck(m->loss_factor == 0.0 || (m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency)), comm,
+             PETSC_ERR_USER_INPUT, "-material_damping_frequency must be > 0 and finite, got %g", m->damping_frequency);
   m->damping_rate = m->loss_factor * 2.0 * M_PI * m->damping_frequency;
   PetscFunctionReturn(0);
 }

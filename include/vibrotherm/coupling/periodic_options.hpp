@@ -5,8 +5,13 @@
 
 namespace vibrotherm::coupling {
 
+/// -periodic auto|on|off: auto continues when heat runs (the continuation feeds the heat;
+/// without it, continuing would only skip the waves a wave-only run is for).
+enum class PeriodicChoice { Auto, On, Off };
+
 struct PeriodicOptions {
-  bool on = true;             ///< -periodic on|off
+  PeriodicChoice choice = PeriodicChoice::Auto;
+  bool on = true;             ///< choice is not off, and the coupling can compare whole periods
   double tol = 3e-3;          ///< -periodic_tol: largest change per period of the state and energies
   /// -periodic_tol_cells: largest change of the contact cell by cell (memory, friction energy's
   /// distribution: it wanders by ~0.4 % from window to window in the paper scene while the total
