@@ -31,20 +31,16 @@ PetscErrorCode FrictionHeatSource::Finish(const std::string& dir) {
   PetscFunctionReturn(0);
 }
 
-namespace {
-
-std::vector<long long> CellKeys(const interface::CrackInterface& crack, const mesh::PointOrigin& origin) {
+std::vector<long long> FrictionHeatSource::CellKeys(const mesh::Specimen& specimen) const {
   std::vector<long long> keys;
-  for (const interface::ContactCell& c : crack.cells()) keys.push_back(origin[c.plus]);
+  for (const interface::ContactCell& c : crack_->cells()) keys.push_back(specimen.wave_origin[c.plus]);
   return keys;
 }
-
-}  // namespace
 
 PetscErrorCode FrictionHeatSource::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
   checkpoint.PutShared("friction_heat/deposited", {deposited_});
-  record_.Save(checkpoint, CellKeys(*crack_, specimen.wave_origin));
+  record_.Save(checkpoint, CellKeys(specimen));
   PetscFunctionReturn(0);
 }
 
@@ -53,7 +49,7 @@ PetscErrorCode FrictionHeatSource::Restore(const io::Checkpoint& checkpoint, con
   std::vector<double> deposited;
   PetscCall(checkpoint.GetShared("friction_heat/deposited", &deposited, 1));
   deposited_ = deposited[0];
-  PetscCall(record_.Restore(checkpoint, CellKeys(*crack_, specimen.wave_origin)));
+  PetscCall(record_.Restore(checkpoint, CellKeys(specimen)));
   // The last exchange took the energies the interface holds now (checkpoints follow a heat step).
   transfer_.set_previous(crack_->dissipated_per_area());
   PetscFunctionReturn(0);

@@ -55,6 +55,7 @@ void LineKernel::Build(const std::array<double, 2>& x, const std::vector<KernelS
                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
   x_ = x;
   segments_ = segments;
+  intervals_ = intervals;
   cells_ = cells;
   alpha_ = alpha;
   rho_c_ = rho_c;
@@ -68,25 +69,43 @@ void LineKernel::Build(const std::array<double, 2>& x, const std::vector<KernelS
     // dΦ/ds = 2s K(s²) is finite at s = 0 (K ~ 1/s on the line): take it just above.
     const double s = i == 0 ? 1e-6 * h_ : i * h_;
     Kernel(s * s, &k);
-    for (int c = 0; c < cells; ++c) slope_[c * points + i] = 2.0 * s * k[c];
+    for (int c = 0; c < cells; ++c) slope_[i * cells + c] = h_ * 2.0 * s * k[c];
     if (i == 0) continue;
     for (int q = 0; q < 8; ++q) {  // Φ(s_i) = Φ(s_{i−1}) + ∫ 2s K(s²) ds over the grid cell
       const double sq = (i - 0.5) * h_ + 0.5 * h_ * gx[q];
       Kernel(sq * sq, &k);
-      for (int c = 0; c < cells; ++c) value_[c * points + i] += 0.5 * h_ * gw[q] * 2.0 * sq * k[c];
+      for (int c = 0; c < cells; ++c) value_[i * cells + c] += 0.5 * h_ * gw[q] * 2.0 * sq * k[c];
     }
-    for (int c = 0; c < cells; ++c) value_[c * points + i] += value_[c * points + i - 1];
+    for (int c = 0; c < cells; ++c) value_[i * cells + c] += value_[(i - 1) * cells + c];
   }
 }
 
-double LineKernel::Phi(int cell, double tau) const {
-  const int points = static_cast<int>(value_.size() / std::max(cells_, 1));
-  const double x = std::min(std::sqrt(std::max(tau, 0.0)) / h_, static_cast<double>(points - 1));
-  const int i = std::min(static_cast<int>(x), points - 2);
+namespace {
+
+/// Grid cell i and the cubic Hermite weights (value, slope at i; value, slope at i + 1) at s = √τ.
+int HermiteWeights(double tau, double h, int intervals, double w[4]) {
+  const double x = std::min(std::sqrt(std::max(tau, 0.0)) / h, static_cast<double>(intervals));
+  const int i = std::min(static_cast<int>(x), intervals - 1);
   const double t = x - i, t2 = t * t, t3 = t2 * t;
-  const double* v = &value_[static_cast<std::size_t>(cell) * points + i];
-  const double* m = &slope_[static_cast<std::size_t>(cell) * points + i];
-  return (2 * t3 - 3 * t2 + 1) * v[0] + (t3 - 2 * t2 + t) * h_ * m[0] + (-2 * t3 + 3 * t2) * v[1] + (t3 - t2) * h_ * m[1];
+  w[0] = 2 * t3 - 3 * t2 + 1, w[1] = t3 - 2 * t2 + t, w[2] = -2 * t3 + 3 * t2, w[3] = t3 - t2;
+  return i;
+}
+
+}  // namespace
+
+double LineKernel::Phi(int cell, double tau) const {
+  double w[4];
+  const std::size_t i = static_cast<std::size_t>(HermiteWeights(tau, h_, intervals_, w)) * cells_ + cell;
+  return w[0] * value_[i] + w[1] * slope_[i] + w[2] * value_[i + cells_] + w[3] * slope_[i + cells_];
+}
+
+double LineKernel::Combine(const double* weight, double tau) const {
+  double w[4];
+  const std::size_t i = static_cast<std::size_t>(HermiteWeights(tau, h_, intervals_, w)) * cells_;
+  const double *v0 = &value_[i], *m0 = &slope_[i], *v1 = v0 + cells_, *m1 = m0 + cells_;
+  double sum = 0.0;
+  for (int c = 0; c < cells_; ++c) sum += weight[c] * (w[0] * v0[c] + w[1] * m0[c] + w[2] * v1[c] + w[3] * m1[c]);
+  return sum;
 }
 
 }  // namespace vibrotherm::coupling

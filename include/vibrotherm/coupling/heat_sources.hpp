@@ -44,6 +44,10 @@ class FrictionHeatSource final : public HeatSource {
   const char* name() const override { return "friction"; }
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
+  const FrictionHeat& transfer() const { return transfer_; }
+  const interface::CrackInterface& crack() const { return *crack_; }
+  /// Checkpoint keys of this rank's contact cells (their + point's origin).
+  std::vector<long long> CellKeys(const mesh::Specimen& specimen) const;
 
  private:
   interface::CrackInterface* crack_ = nullptr;

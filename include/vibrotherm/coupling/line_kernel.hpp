@@ -34,8 +34,12 @@ class LineKernel {
   /// node maps to, for ages up to tau_max, on `intervals` cells in √τ.
   void Build(const std::array<double, 2>& x, const std::vector<KernelSegment>& segments, int cells, double alpha,
              double rho_c, double tau_max, int intervals = 1024);
+  /// The same for ages up to a new tau_max.
+  void Rebuild(double tau_max) { Build(x_, segments_, cells_, alpha_, rho_c_, tau_max, intervals_); }
   /// Φ_c(τ) [K per W/m² of density held for τ, i.e. K m² s/J]; τ ≤ tau_max.
   double Phi(int cell, double tau) const;
+  /// Σ_c weight[c] Φ_c(τ) over all cells (one interpolation in τ for all of them).
+  double Combine(const double* weight, double tau) const;
   int cells() const { return cells_; }
   double tau_max() const { return s_max_ * s_max_; }
 
@@ -44,9 +48,10 @@ class LineKernel {
   void Kernel(double tau, std::vector<double>* k) const;
   std::array<double, 2> x_{};
   std::vector<KernelSegment> segments_;
-  int cells_ = 0;
+  int cells_ = 0, intervals_ = 0;
   double alpha_ = 1.0, rho_c_ = 1.0, s_max_ = 0.0, h_ = 1.0;
-  std::vector<double> value_, slope_;  ///< [cell][grid point]: Φ and dΦ/ds
+  /// [grid point][cell]: Φ and h dΦ/ds (a point's cells side by side: Combine reads them in a row)
+  std::vector<double> value_, slope_;
 };
 
 }  // namespace vibrotherm::coupling

@@ -69,6 +69,8 @@ class Simulation {
   PetscInt WaveStepsPerHeatStep(double heat_dt) const;
   PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
   PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
+  /// The probes' temperatures since the last call into probes.csv.
+  PetscErrorCode RecordTemperature(Recorder& recorder, bool waves_running);
   // Checkpoints (simulation_checkpoint.cpp).
   /// Between coupling intervals: a checkpoint when due; a signal stops the run.
   PetscErrorCode CheckpointIfDue(Recorder& recorder, bool quiet);

@@ -71,6 +71,14 @@ class HeatSolver {
   PetscErrorCode SetProbePoints(const std::vector<double>& xy);
   /// Temperatures [K] at the probe points, on every rank. Collective.
   PetscErrorCode ProbeTemperatures(std::vector<double>* T) const;
+  /// Probe p's rise as a linear functional of θ: sets phi (a global vector of
+  /// the heat DM) to the heat basis at the point, φᵀθ = the rise there. Collective.
+  PetscErrorCode ProbeFunctional(std::size_t probe, Vec phi) const;
+  /// What a load does to a functional φᵀθ under the coupled integrator with
+  /// steps of length dt (step_responses.cpp): w[k] such that a load Q applied
+  /// in step n − k adds w[k]ᵀQ to φᵀθ at the end of step n, k = 0 .. steps − 1.
+  /// supported = false (w empty) when the coupled TS is not of the theta family. Collective.
+  PetscErrorCode StepResponses(Vec phi, double dt, PetscInt steps, std::vector<Vec>* w, bool* supported);
   /// Switches to the TS of free diffusion (prefix -heat_free_; Crank-Nicolson by
   /// default, whose balance closes exactly, on the step ladder from the last
   /// coupled step). With -heat_free_ts_adapt_type basic (error control),
@@ -126,6 +134,8 @@ class HeatSolver {
   PetscErrorCode AddConvectiveFilm();
   PetscErrorCode CollectCrackFacets();
   PetscErrorCode ScaleTolerance();
+  /// The response solver's operator for steps of dt (J = K + M/(w dt), sinks as the TS's).
+  PetscErrorCode SetupResponseSolver(double dt, double w);
 
   DM dm_ = nullptr;
   fe::LagrangeSpace space_;
@@ -155,6 +165,10 @@ class HeatSolver {
   PetscInt steps_ = 0, global_dofs_ = 0;
   bool stop_requested_ = false;
   PetscLogEvent source_event_ = 0;
+  /// StepResponses' own factorisation (the TS's is not disturbed), rebuilt when dt changes.
+  Mat response_J_ = nullptr;
+  KSP response_ksp_ = nullptr;
+  double response_shift_ = 0.0;
 };
 
 }  // namespace vibrotherm::heat
