@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "vibrotherm/fe/point_location.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -33,6 +32,7 @@ PetscErrorCode CrackNearField::Setup(const interface::CrackInterface& crack, con
   PetscCall(PetscLogEventRegister("NearFieldSetup", TS_CLASSID, &setup_event_));
   PetscCall(PetscLogEventRegister("NearFieldStep", TS_CLASSID, &step_event_));
   PetscCall(PetscLogEventRegister("NearFieldExact", TS_CLASSID, &exact_event_));
+  PetscCall(PetscLogEventRegister("NearFieldRespond", TS_CLASSID, &response_event_));
   PetscCall(PetscLogEventBegin(setup_event_, 0, 0, 0, 0));
   crack_ = &crack;
   friction_ = &friction;
@@ -98,15 +98,10 @@ PetscErrorCode CrackNearField::FindNearCells(std::size_t p, const std::array<dou
 PetscErrorCode CrackNearField::ClearOfEdges(const std::array<double, 2>& x, double reach, bool* clear) const {
   PetscFunctionBeginUser;
   // The continuum kernel is the infinite plate's: no outer edge may be within reach.
-  std::vector<double> ring;
-  for (int k = 0; k < 32; ++k) {
-    const double a = 2.0 * M_PI * k / 32;
-    for (double r : {reach, 0.5 * reach}) ring.insert(ring.end(), {x[0] + r * std::cos(a), x[1] + r * std::sin(a)});
-  }
-  std::vector<fe::LocatedPoint> located;
-  std::vector<bool> inside;
-  PetscCall(fe::LocatePoints(heat_->space(), ring, &located, &inside));
-  *clear = std::all_of(inside.begin(), inside.end(), [](bool b) { return b; });
+  double distance;
+  PetscCall(heat::DistanceToOuterEdges(PetscObjectComm((PetscObject)heat_->space().dm()), heat_->boundary(), x[0], x[1],
+                                       &distance));
+  *clear = distance > reach;
   PetscFunctionReturn(0);
 }
 
@@ -142,6 +137,7 @@ void CrackNearField::Prune() {
 
 PetscErrorCode CrackNearField::UpdateResponses(double h) {
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(response_event_, 0, 0, 0, 0));
   response_step_ = h;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     Probe& probe = probes_[p];
@@ -154,7 +150,7 @@ PetscErrorCode CrackNearField::UpdateResponses(double h) {
                             "vibrotherm: warning: -heat_ts_type is not of the theta family: the crack probes read the "
                             "heat field without the near-field correction\n"));
       for (Probe& q : probes_) q.active = false;
-      PetscFunctionReturn(0);
+      break;
     }
     probe.g.resize(w.size());
     for (std::size_t k = 0; k < w.size(); ++k) {
@@ -162,6 +158,7 @@ PetscErrorCode CrackNearField::UpdateResponses(double h) {
       PetscCall(VecDestroy(&w[k]));
     }
   }
+  PetscCall(PetscLogEventEnd(response_event_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

@@ -103,7 +103,7 @@ class CrackNearField {
   std::deque<std::vector<double>> density_; ///< q̄ of steps n−K+1 .. n
   std::deque<Sample> fine_;                 ///< every wave step from t_{n−K} on
   std::size_t owned_cells_ = 0;
-  PetscLogEvent setup_event_ = 0, step_event_ = 0, exact_event_ = 0;
+  PetscLogEvent setup_event_ = 0, step_event_ = 0, exact_event_ = 0, response_event_ = 0;
 };
 
 }  // namespace vibrotherm::coupling
