@@ -197,7 +197,7 @@ def rise_series(record, point, samples, alpha, rho_c, width=None, height=None):
         raise ValueError("rise_series: samples before the last run of equal intervals")
     lags = np.arange(len(dt) - first)
     kernel = cell_kernels(record, point, lags * step, (lags + 1) * step, alpha, rho_c, width, height)
-    q = record.density[first:len(dt)]
+    q = record.density[first:len(dt)] * (dt[first:, None] / step)  # each interval's energy over the common step
     rise = np.zeros(len(dt))
     for c in range(q.shape[1]):
         rise[first:] += fftconvolve(q[:, c], kernel[:, c])[:len(q)]

@@ -59,7 +59,7 @@ PetscErrorCode CrackNearField::Setup(const interface::CrackInterface& crack, con
   ends_ = {heat->time()};
   fine_ = {{heat->time(), std::vector<double>(owned_cells_, 0.0)}};
   density_.clear();
-  response_step_ = 0.0;
+  equal_step_ = 0.0;
   PetscCall(PetscLogEventEnd(setup_event_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -113,11 +113,10 @@ PetscErrorCode CrackNearField::AfterHeatStep(double t) {
   PetscFunctionBeginUser;
   if (!any()) PetscFunctionReturn(0);
   PetscCall(PetscLogEventBegin(step_event_, 0, 0, 0, 0));
-  const double h = t - ends_.back();
   ends_.push_back(t);
   density_.push_back(friction_->density());
-  if (std::abs(h - response_step_) > 1e-10 * h) PetscCall(UpdateResponses(h));
   Prune();
+  PetscCall(Terms());
   Jumps();
   if (t - ends_.front() > tau_max_) {  // steps grew beyond the kernels' range
     tau_max_ *= 2.0;
@@ -135,16 +134,52 @@ void CrackNearField::Prune() {
   while (fine_.size() > 1 && fine_[1].t <= ends_.front()) fine_.pop_front();
 }
 
-PetscErrorCode CrackNearField::UpdateResponses(double h) {
+PetscErrorCode CrackNearField::Terms() {
+  PetscFunctionBeginUser;
+  std::vector<double> lengths;  // h_n, h_{n−1}, ... of the window, newest first
+  for (std::size_t i = ends_.size() - 1; i > 0; --i) lengths.push_back(ends_[i] - ends_[i - 1]);
+  const double h = lengths.front();
+  const bool equal = std::all_of(lengths.begin(), lengths.end(), [h](double x) { return std::abs(x - h) <= 1e-10 * h; });
+  if (equal && std::abs(h - equal_step_) > 1e-10 * h) PetscCall(EqualStepResponses(h));
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    Probe& probe = probes_[p];
+    if (!probe.active) continue;
+    std::vector<std::vector<double>> own;  // a window of unequal steps: its own responses
+    if (!equal) {
+      std::vector<Vec> w;
+      bool supported;
+      PetscCall(PetscLogEventBegin(response_event_, 0, 0, 0, 0));
+      PetscCall(heat_->StepResponses(probe.phi, lengths, &w, &supported));
+      own.resize(w.size());
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        PetscCall(friction_->CellResponse(w[k], &own[k]));
+        PetscCall(VecDestroy(&w[k]));
+      }
+      PetscCall(PetscLogEventEnd(response_event_, 0, 0, 0, 0));
+    }
+    const std::vector<std::vector<double>>& g = equal ? probe.g : own;
+    std::vector<double> terms(lengths.size(), 0.0);
+    for (std::size_t k = 0; k < lengths.size() && k < g.size(); ++k) {
+      const std::vector<double>& q = density_[density_.size() - 1 - k];
+      for (std::size_t c = 0; c < q.size(); ++c) terms[k] += g[k][c] * q[c];
+    }
+    probe.terms.push_back(std::move(terms));
+    if (probe.terms.size() > 3) probe.terms.pop_front();
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackNearField::EqualStepResponses(double h) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(response_event_, 0, 0, 0, 0));
-  response_step_ = h;
+  equal_step_ = h;
+  const std::vector<double> lengths(static_cast<std::size_t>(steps_), h);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     Probe& probe = probes_[p];
     if (!probe.active) continue;
     std::vector<Vec> w;
     bool supported;
-    PetscCall(heat_->StepResponses(probe.phi, h, steps_, &w, &supported));
+    PetscCall(heat_->StepResponses(probe.phi, lengths, &w, &supported));
     if (!supported) {  // the same on every rank
       PetscCall(PetscPrintf(PetscObjectComm((PetscObject)probe.phi),
                             "vibrotherm: warning: -heat_ts_type is not of the theta family: the crack probes read the "
@@ -163,15 +198,13 @@ PetscErrorCode CrackNearField::UpdateResponses(double h) {
 }
 
 std::array<double, 3> CrackNearField::Discrete(std::size_t p) const {
+  // D at t_{n−j} for the window (t_{n−K}, ·]: the terms of step n − j with lag below K − j.
   std::array<double, 3> d = {0.0, 0.0, 0.0};
-  const Probe& probe = probes_[p];
-  const std::size_t n = density_.size();
-  for (std::size_t j = 0; j < 3; ++j)
-    for (std::size_t k = j; k < n && k < probe.g.size() + j; ++k) {  // step n − k seen at lag k − j
-      const std::vector<double>& q = density_[n - 1 - k];
-      const std::vector<double>& g = probe.g[k - j];
-      for (std::size_t c = 0; c < q.size(); ++c) d[j] += g[c] * q[c];
-    }
+  const std::deque<std::vector<double>>& terms = probes_[p].terms;
+  for (std::size_t j = 0; j < 3 && j < terms.size(); ++j) {
+    const std::vector<double>& t = terms[terms.size() - 1 - j];
+    for (std::size_t k = 0; k < t.size() && k + j < static_cast<std::size_t>(steps_); ++k) d[j] += t[k];
+  }
   return d;
 }
 

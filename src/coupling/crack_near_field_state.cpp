@@ -1,7 +1,8 @@
 // The near field in checkpoints (taken after a heat step): the heat step ends
 // of the window, its per-cell densities and wave-step energies (keyed by the
-// contact cells' origin: any partition restores them), and the step length of
-// the discrete responses, which a restart recomputes with the very same step.
+// contact cells' origin: any partition restores them), the last steps' terms of
+// D (this rank's sums; another partition puts them on rank 0), and the step
+// length of the equal-step responses, which a restart recomputes with the very same step.
 #include "vibrotherm/coupling/crack_near_field.hpp"
 
 namespace vibrotherm::coupling {
@@ -10,7 +11,19 @@ PetscErrorCode CrackNearField::Save(io::Checkpoint& checkpoint, const std::vecto
   PetscFunctionBeginUser;
   if (!any()) PetscFunctionReturn(0);
   checkpoint.PutShared("near_field/ends", std::vector<double>(ends_.begin(), ends_.end()));
-  checkpoint.PutShared("near_field/response_step", {response_step_});
+  checkpoint.PutShared("near_field/equal_step", {equal_step_});
+  // The kept steps' term counts (the same on every rank), then the terms padded to K
+  // (sums of the ranks' parts add up whatever the partition).
+  std::vector<double> counts, terms;
+  const std::size_t K = static_cast<std::size_t>(steps_);
+  for (const Probe& probe : probes_)
+    for (std::size_t j = 0; probe.active && j < 3; ++j) {
+      const bool kept = j < probe.terms.size();
+      counts.push_back(kept ? static_cast<double>(probe.terms[j].size()) : -1.0);
+      for (std::size_t k = 0; k < K; ++k) terms.push_back(kept && k < probe.terms[j].size() ? probe.terms[j][k] : 0.0);
+    }
+  checkpoint.PutShared("near_field/term_counts", counts);
+  checkpoint.PutPerRank("near_field/terms", terms);
   std::vector<double> times;
   for (const Sample& s : fine_) times.push_back(s.t);
   checkpoint.PutShared("near_field/times", times);
@@ -30,7 +43,7 @@ PetscErrorCode CrackNearField::Restore(const io::Checkpoint& checkpoint, const s
   if (!any()) PetscFunctionReturn(0);
   std::vector<double> ends, step, times, energy, density;
   PetscCall(checkpoint.GetShared("near_field/ends", &ends));
-  PetscCall(checkpoint.GetShared("near_field/response_step", &step, 1));
+  PetscCall(checkpoint.GetShared("near_field/equal_step", &step, 1));
   PetscCall(checkpoint.GetShared("near_field/times", &times));
   const std::size_t cells = keys.size(), n = times.size(), m = ends.size() - 1;  // a density per step of the window
   PetscCall(checkpoint.GetKeyed("near_field/energy", keys, static_cast<int>(n), &energy));
@@ -46,7 +59,20 @@ PetscErrorCode CrackNearField::Restore(const io::Checkpoint& checkpoint, const s
     density_.push_back(std::vector<double>(cells));
     for (std::size_t c = 0; c < cells; ++c) density_.back()[c] = density[c * m + k];
   }
-  if (step[0] > 0.0) PetscCall(UpdateResponses(step[0]));
+  if (step[0] > 0.0) PetscCall(EqualStepResponses(step[0]));
+  std::vector<double> counts, terms;
+  PetscCall(checkpoint.GetShared("near_field/term_counts", &counts));
+  PetscCall(checkpoint.GetPerRank("near_field/terms", &terms));
+  const std::size_t K = static_cast<std::size_t>(steps_);
+  std::size_t slot = 0;
+  for (Probe& probe : probes_) {
+    probe.terms.clear();
+    for (std::size_t j = 0; probe.active && j < 3; ++j, ++slot) {
+      if (counts.at(slot) < 0) continue;
+      const auto from = terms.begin() + static_cast<long>(slot * K);
+      probe.terms.emplace_back(from, from + static_cast<long>(counts[slot]));
+    }
+  }
   Jumps();
   PetscFunctionReturn(0);
 }

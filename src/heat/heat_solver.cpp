@@ -54,8 +54,11 @@ PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o) {
 HeatSolver::~HeatSolver() {
   (void)TSDestroy(&coupled_ts_);
   (void)TSDestroy(&free_ts_);
-  (void)KSPDestroy(&response_ksp_);
-  for (Mat* m : {&M_, &K_, &response_J_}) (void)MatDestroy(m);
+  for (ResponseFactor& f : response_factors_) {
+    (void)KSPDestroy(&f.ksp);
+    (void)MatDestroy(&f.J);
+  }
+  for (Mat* m : {&M_, &K_}) (void)MatDestroy(m);
   for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) (void)VecDestroy(v);
 }
 

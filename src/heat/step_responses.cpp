@@ -2,13 +2,14 @@
 // steps (used by coupling/crack_near_field to take the heat mesh's response
 // to the last few heat steps' friction heat out of the crack probes).
 //
-// A theta-family step of length dt (w = 1: backward Euler) is
-//   (M/dt + wK) θ_n = (M/dt − (1−w)K) θ_{n−1} + Q_n   on the free rows, θ = 0 on sinks,
-// i.e. θ_n = P (wJ)⁻¹ (B θ_{n−1} + Q_n) with J = K + M/(w dt) (the TS's Jacobian,
-// sinks as identity rows with zeroed columns), B = M/dt − (1−w)K and P the
-// projection on the free rows. A load Q in step n − k adds
-//   φᵀ [P(wJ)⁻¹B]^k P(wJ)⁻¹ Q = w_kᵀ Q,  w_0 = P(wJ)⁻¹φ,  w_k = P(wJ)⁻¹ B w_{k−1}
-// to φᵀθ_n (J, B symmetric): one solve per lag, with a factorisation of its own.
+// A theta-family step of length h (w = 1: backward Euler) is
+//   (M/h + wK) θ_n = (M/h − (1−w)K) θ_{n−1} + Q_n   on the free rows, θ = 0 on sinks,
+// i.e. θ_n = P (wJ_n)⁻¹ (B_n θ_{n−1} + Q_n) with J_n = K + M/(w h_n) (the TS's
+// Jacobian, sinks as identity rows with zeroed columns), B_n = M/h_n − (1−w)K and
+// P the projection on the free rows. A load Q in step n − k adds w_kᵀQ to φᵀθ_n,
+//   w_0 = P(wJ_n)⁻¹ φ,  w_k = P(wJ_{n−k})⁻¹ B_{n−k+1} w_{k−1}
+// (J, B symmetric): one solve per lag, with factorisations of its own, kept for
+// the last few step lengths.
 #include "vibrotherm/heat/heat_solver.hpp"
 
 #include <petscdmplex.h>
@@ -32,25 +33,34 @@ PetscErrorCode HeatSolver::ProbeFunctional(std::size_t probe, Vec phi) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::SetupResponseSolver(double dt, double w) {
+PetscErrorCode HeatSolver::ResponseSolver(double dt, double w, KSP* ksp) {
   PetscFunctionBeginUser;
   const double shift = 1.0 / (w * dt);
-  if (response_ksp_ && std::abs(shift - response_shift_) <= 1e-10 * shift) PetscFunctionReturn(0);
-  if (!response_J_) {
-    PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &response_J_));
-    PetscCall(MatSetOption(response_J_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-    PetscCall(KSPCreate(PetscObjectComm((PetscObject)dm_), &response_ksp_));
-    PetscCall(KSPSetOptionsPrefix(response_ksp_, "heat_response_"));
-    PetscCall(ConfigureLinearSolver(response_ksp_, global_dofs_ <= kDirectSolveDofs));
-    PetscCall(KSPSetFromOptions(response_ksp_));
+  for (const ResponseFactor& f : response_factors_)
+    if (std::abs(shift - f.shift) <= 1e-10 * shift) {  // as the TS keeps its Jacobian
+      *ksp = f.ksp;
+      PetscFunctionReturn(0);
+    }
+  if (response_factors_.size() == 4) {  // a new step length: the oldest factor goes
+    PetscCall(KSPDestroy(&response_factors_.front().ksp));
+    PetscCall(MatDestroy(&response_factors_.front().J));
+    response_factors_.erase(response_factors_.begin());
   }
-  PetscCall(AssembleJacobian(this, shift, response_J_));
-  PetscCall(KSPSetOperators(response_ksp_, response_J_, response_J_));
-  response_shift_ = shift;
+  ResponseFactor f{shift, nullptr, nullptr};
+  PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &f.J));
+  PetscCall(MatSetOption(f.J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(AssembleJacobian(this, shift, f.J));
+  PetscCall(KSPCreate(PetscObjectComm((PetscObject)dm_), &f.ksp));
+  PetscCall(KSPSetOptionsPrefix(f.ksp, "heat_response_"));
+  PetscCall(ConfigureLinearSolver(f.ksp, global_dofs_ <= kDirectSolveDofs));
+  PetscCall(KSPSetOperators(f.ksp, f.J, f.J));
+  PetscCall(KSPSetFromOptions(f.ksp));
+  response_factors_.push_back(f);
+  *ksp = f.ksp;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::StepResponses(Vec phi, double dt, PetscInt steps, std::vector<Vec>* w,
+PetscErrorCode HeatSolver::StepResponses(Vec phi, const std::vector<double>& lengths, std::vector<Vec>* w,
                                          bool* supported) {
   PetscFunctionBeginUser;
   w->clear();
@@ -60,24 +70,25 @@ PetscErrorCode HeatSolver::StepResponses(Vec phi, double dt, PetscInt steps, std
   if (!theta_family) PetscFunctionReturn(0);
   PetscReal weight;
   PetscCall(TSThetaGetTheta(coupled_ts_, &weight));
-  PetscCall(SetupResponseSolver(dt, weight));
   Vec rhs, mass;
   PetscCall(VecDuplicate(theta_, &rhs));
   PetscCall(VecDuplicate(theta_, &mass));
   PetscInt rstart;
   PetscCall(VecGetOwnershipRange(rhs, &rstart, nullptr));
-  for (PetscInt k = 0; k < steps; ++k) {
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
     if (k == 0) {
       PetscCall(VecCopy(phi, rhs));
-    } else {  // B w_{k−1} = (M/dt − (1 − w) K) w_{k−1}
+    } else {  // B_{n−k+1} w_{k−1} = (M/h − (1 − w) K) w_{k−1}, h the step after
       PetscCall(MatMult(K_, w->back(), rhs));
       PetscCall(VecScale(rhs, -(1.0 - weight)));
       PetscCall(MatMult(M_, w->back(), mass));
-      PetscCall(VecAXPY(rhs, 1.0 / dt, mass));
+      PetscCall(VecAXPY(rhs, 1.0 / lengths[k - 1], mass));
     }
+    KSP ksp;
+    PetscCall(ResponseSolver(lengths[k], weight, &ksp));
     Vec next;
     PetscCall(VecDuplicate(theta_, &next));
-    PetscCall(KSPSolve(response_ksp_, rhs, next));
+    PetscCall(KSPSolve(ksp, rhs, next));
     PetscCall(VecScale(next, 1.0 / weight));
     PetscScalar* x;
     PetscCall(VecGetArray(next, &x));

@@ -12,7 +12,9 @@
 // source along the wave mesh's crack elements, exact in space: line_kernel.hpp).
 //   D(t_n) = Σ_{k<K} g_kᵀ q̄_{n−k},  g_k = Tᵀ w_k: the discrete step responses of
 //            the heat integrator (HeatSolver::StepResponses) through the friction
-//            transfer T, per contact cell; q̄: each heat step's density per cell;
+//            transfer T, per contact cell; q̄: each heat step's density per cell.
+//            Equal steps share one table g_k; a window with unequal steps (the
+//            wave step changed, the last step of a run) gets its own, exactly;
 //   E(t)   = Σ_c Σ_j q_{c,j} [Φ_c(t − t_{j−1}) − Φ_c(t − t_j)] over the wave steps j
 //            of the window, q_{c,j} = ΔW_c / Δt_j the friction power per area.
 // Sources older than the window are where the heat mesh is accurate (they have
@@ -21,9 +23,8 @@
 //
 // The input is the friction energy per cell over intervals: per heat step for
 // D (what the heat solver received), per wave step for E (only the window's).
-// Any interval lengths work (a replayed record of per-cell energies too); D is
-// exact for equal heat steps and is recomputed when the step length changes
-// (for the K steps after a change the older loads are taken at the new length).
+// Any interval lengths work (a replayed record of per-cell energies too): E
+// takes any wave steps, D any heat steps (K solves a step while they differ).
 //
 // MPI: each rank sums over its own contact cells; the caller adds the ranks'
 // partial sums (one reduction per coupling interval).
@@ -78,7 +79,8 @@ class CrackNearField {
     LineKernel kernel;
     std::vector<int> cells;                ///< owned cell of each kernel cell
     Vec phi = nullptr;                     ///< the probe as a functional of θ
-    std::vector<std::vector<double>> g;    ///< g[k][owned cell]: discrete response at lag k
+    std::vector<std::vector<double>> g;    ///< g[k][owned cell]: response at lag k to equal steps
+    std::deque<std::vector<double>> terms; ///< last three steps: g_kᵀ q̄_{n−k} by lag k (this rank's cells)
     std::vector<double> jumps;             ///< [boundary][kernel cell]: q_{b+1} − q_b over the window
   };
   struct Sample {
@@ -87,7 +89,10 @@ class CrackNearField {
   };
   PetscErrorCode FindNearCells(std::size_t p, const std::array<double, 2>& x, double reach);
   PetscErrorCode ClearOfEdges(const std::array<double, 2>& x, double reach, bool* clear) const;
-  PetscErrorCode UpdateResponses(double h);
+  /// g_k per probe for K equal steps of h.
+  PetscErrorCode EqualStepResponses(double h);
+  /// Each probe's terms g_kᵀ q̄_{n−k} of the step just taken (its own responses when the window's steps differ).
+  PetscErrorCode Terms();
   void Prune();
   /// The window's density jumps at every wave step boundary (Exact's summation by parts).
   void Jumps();
@@ -98,7 +103,7 @@ class CrackNearField {
   std::vector<Probe> probes_;
   PetscInt steps_ = 24;
   double alpha_ = 1.0, rho_c_ = 1.0, tau_max_ = 0.0;
-  double response_step_ = 0.0;              ///< heat step length the g were computed for
+  double equal_step_ = 0.0;                 ///< heat step length of the probes' g (0: none yet)
   std::deque<double> ends_;                 ///< heat step ends t_{n−K} .. t_n
   std::deque<std::vector<double>> density_; ///< q̄ of steps n−K+1 .. n
   std::deque<Sample> fine_;                 ///< every wave step from t_{n−K} on

@@ -74,11 +74,12 @@ class HeatSolver {
   /// Probe p's rise as a linear functional of θ: sets phi (a global vector of
   /// the heat DM) to the heat basis at the point, φᵀθ = the rise there. Collective.
   PetscErrorCode ProbeFunctional(std::size_t probe, Vec phi) const;
-  /// What a load does to a functional φᵀθ under the coupled integrator with
-  /// steps of length dt (step_responses.cpp): w[k] such that a load Q applied
-  /// in step n − k adds w[k]ᵀQ to φᵀθ at the end of step n, k = 0 .. steps − 1.
-  /// supported = false (w empty) when the coupled TS is not of the theta family. Collective.
-  PetscErrorCode StepResponses(Vec phi, double dt, PetscInt steps, std::vector<Vec>* w, bool* supported);
+  /// What a load does to a functional φᵀθ under the coupled integrator
+  /// (step_responses.cpp): lengths = h_n, h_{n−1}, ... of the last steps, newest
+  /// first; w[k] such that a load Q applied in step n − k adds w[k]ᵀQ to φᵀθ at
+  /// the end of step n, k = 0 .. lengths.size() − 1. supported = false (w empty)
+  /// when the coupled TS is not of the theta family. Collective.
+  PetscErrorCode StepResponses(Vec phi, const std::vector<double>& lengths, std::vector<Vec>* w, bool* supported);
   /// Switches to the TS of free diffusion (prefix -heat_free_; Crank-Nicolson by
   /// default, whose balance closes exactly, on the step ladder from the last
   /// coupled step). With -heat_free_ts_adapt_type basic (error control),
@@ -134,8 +135,8 @@ class HeatSolver {
   PetscErrorCode AddConvectiveFilm();
   PetscErrorCode CollectCrackFacets();
   PetscErrorCode ScaleTolerance();
-  /// The response solver's operator for steps of dt (J = K + M/(w dt), sinks as the TS's).
-  PetscErrorCode SetupResponseSolver(double dt, double w);
+  /// A solver of J = K + M/(w dt) (sinks as the TS's), factored once per step length dt.
+  PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
 
   DM dm_ = nullptr;
   fe::LagrangeSpace space_;
@@ -165,10 +166,13 @@ class HeatSolver {
   PetscInt steps_ = 0, global_dofs_ = 0;
   bool stop_requested_ = false;
   PetscLogEvent source_event_ = 0;
-  /// StepResponses' own factorisation (the TS's is not disturbed), rebuilt when dt changes.
-  Mat response_J_ = nullptr;
-  KSP response_ksp_ = nullptr;
-  double response_shift_ = 0.0;
+  /// StepResponses' own factorisations (the TS's is not disturbed), by shift: the last few step lengths.
+  struct ResponseFactor {
+    double shift;
+    Mat J;
+    KSP ksp;
+  };
+  std::vector<ResponseFactor> response_factors_;
 };
 
 }  // namespace vibrotherm::heat
