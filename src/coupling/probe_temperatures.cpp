@@ -21,7 +21,34 @@ PetscErrorCode ProbeTemperatures::Setup(heat::HeatSolver* heat) {
   heat_ = heat;
   std::vector<double> rise;
   PetscCall(FieldRise(&rise));
+  functionals_.clear();
+  Vec phi;
+  PetscCall(DMCreateGlobalVector(heat->space().dm(), &phi));
+  for (std::size_t p = 0; p < rise.size(); ++p) {
+    PetscCall(heat->ProbeFunctional(p, phi));
+    const PetscScalar* x;
+    PetscInt n;
+    PetscCall(VecGetLocalSize(phi, &n));
+    PetscCall(VecGetArrayRead(phi, &x));
+    functionals_.emplace_back();
+    for (PetscInt i = 0; i < n; ++i)
+      if (PetscRealPart(x[i]) != 0.0) functionals_.back().push_back({i, PetscRealPart(x[i])});
+    PetscCall(VecRestoreArrayRead(phi, &x));
+  }
+  PetscCall(VecDestroy(&phi));
+  PetscCall(PartialRise(&rise));
   samples_ = {{heat->time(), rise}};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ProbeTemperatures::PartialRise(std::vector<double>* rise) const {
+  PetscFunctionBeginUser;
+  const PetscScalar* theta;
+  PetscCall(VecGetArrayRead(heat_->rise(), &theta));
+  rise->assign(functionals_.size(), 0.0);
+  for (std::size_t p = 0; p < functionals_.size(); ++p)
+    for (const auto& [i, w] : functionals_[p]) (*rise)[p] += w * PetscRealPart(theta[i]);
+  PetscCall(VecRestoreArrayRead(heat_->rise(), &theta));
   PetscFunctionReturn(0);
 }
 
@@ -50,7 +77,7 @@ PetscErrorCode ProbeTemperatures::AfterHeatStep() {
   PetscFunctionBeginUser;
   const double t = heat_->time();
   Sample now{t, {}};
-  PetscCall(FieldRise(&now.rise));
+  PetscCall(PartialRise(&now.rise));
   samples_.push_back(now);
   if (samples_.size() > 3) samples_.pop_front();
   if (near_) PetscCall(near_->AfterHeatStep(t));
@@ -68,19 +95,17 @@ PetscErrorCode ProbeTemperatures::AfterHeatStep() {
   const std::size_t first = closed_.size();
   for (double tr : times) {
     const std::vector<double> w = LagrangeWeights(ts, tr);
-    Row row{tr, std::vector<double>(probes, 0.0), std::vector<double>(probes, 0.0)};
+    Row row{tr, std::vector<double>(probes, 0.0)};
     for (std::size_t p = 0; p < probes; ++p)
-      for (std::size_t j = 0; j < ts.size(); ++j) {
-        row.known[p] += w[j] * samples_[samples_.size() - 1 - j].rise[p];
-        row.partial[p] -= w[j] * discrete[p][j];
-      }
+      for (std::size_t j = 0; j < ts.size(); ++j)
+        row.part[p] += w[j] * (samples_[samples_.size() - 1 - j].rise[p] - discrete[p][j]);
     closed_.push_back(std::move(row));
   }
   std::vector<double> exact;
   for (std::size_t p = 0; p < probes && near_; ++p) {
     if (!near_->active(p)) continue;
     PetscCall(near_->Exact(p, times, &exact));
-    for (std::size_t r = 0; r < times.size(); ++r) closed_[first + r].partial[p] += exact[r];
+    for (std::size_t r = 0; r < times.size(); ++r) closed_[first + r].part[p] += exact[r];
   }
   rows_.erase(rows_.begin(), rows_.begin() + static_cast<long>(done));
   PetscFunctionReturn(0);
@@ -100,16 +125,16 @@ PetscErrorCode ProbeTemperatures::Collect(io::TemperatureSeries* series) {
     rows_.clear();
     PetscFunctionReturn(0);
   }
-  std::vector<double> partial, sum;
-  for (const Row& r : closed_) partial.insert(partial.end(), r.partial.begin(), r.partial.end());
-  sum.resize(partial.size());
-  PetscCallMPI(MPI_Allreduce(partial.data(), sum.data(), static_cast<int>(partial.size()), MPI_DOUBLE, MPI_SUM,
+  std::vector<double> part, sum;
+  for (const Row& r : closed_) part.insert(part.end(), r.part.begin(), r.part.end());
+  sum.resize(part.size());
+  PetscCallMPI(MPI_Allreduce(part.data(), sum.data(), static_cast<int>(part.size()), MPI_DOUBLE, MPI_SUM,
                              PetscObjectComm((PetscObject)heat_->space().dm())));
   std::size_t k = 0;
   for (const Row& r : closed_) {
     series->t.push_back(r.t);
     series->T.emplace_back();
-    for (std::size_t p = 0; p < r.known.size(); ++p) series->T.back().push_back(T0 + r.known[p] + sum[k++]);
+    for (std::size_t p = 0; p < r.part.size(); ++p) series->T.back().push_back(T0 + sum[k++]);
   }
   closed_.clear();
   PetscFunctionReturn(0);
@@ -117,25 +142,27 @@ PetscErrorCode ProbeTemperatures::Collect(io::TemperatureSeries* series) {
 
 PetscErrorCode ProbeTemperatures::Save(io::Checkpoint& checkpoint, const std::vector<long long>& cell_keys) const {
   PetscFunctionBeginUser;
-  std::vector<double> flat;  // per sample: t, then the rises
+  std::vector<double> times, rises;  // this rank's parts (another partition: their sums on rank 0)
   for (const Sample& s : samples_) {
-    flat.push_back(s.t);
-    flat.insert(flat.end(), s.rise.begin(), s.rise.end());
+    times.push_back(s.t);
+    rises.insert(rises.end(), s.rise.begin(), s.rise.end());
   }
-  checkpoint.PutShared("probe_temperatures/samples", flat);
+  checkpoint.PutShared("probe_temperatures/times", times);
+  checkpoint.PutPerRank("probe_temperatures/rises", rises);
   if (near_) PetscCall(near_->Save(checkpoint, cell_keys));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ProbeTemperatures::Restore(const io::Checkpoint& checkpoint, const std::vector<long long>& cell_keys) {
   PetscFunctionBeginUser;
-  std::vector<double> flat;
-  PetscCall(checkpoint.GetShared("probe_temperatures/samples", &flat));
-  const std::size_t probes = samples_.front().rise.size();
+  std::vector<double> times, rises;
+  PetscCall(checkpoint.GetShared("probe_temperatures/times", &times));
+  PetscCall(checkpoint.GetPerRank("probe_temperatures/rises", &rises));
+  const std::size_t probes = functionals_.size();
   samples_.clear();
-  for (std::size_t i = 0; i + probes < flat.size(); i += probes + 1)
-    samples_.push_back({flat[i], std::vector<double>(flat.begin() + static_cast<long>(i) + 1,
-                                                     flat.begin() + static_cast<long>(i + 1 + probes))});
+  for (std::size_t k = 0; k < times.size(); ++k)
+    samples_.push_back({times[k], std::vector<double>(rises.begin() + static_cast<long>(k * probes),
+                                                      rises.begin() + static_cast<long>((k + 1) * probes))});
   rows_.clear();
   closed_.clear();
   if (near_) PetscCall(near_->Restore(checkpoint, cell_keys));

@@ -44,15 +44,21 @@ class ProbeTemperatures {
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const std::vector<long long>& cell_keys);
 
  private:
+  // Everything per heat step is this rank's part (its dofs, its contact cells): the
+  // ranks' parts are added once per coupling interval, in Collect.
   struct Sample {
     double t;
-    std::vector<double> rise;  ///< the field's rise at each probe (every rank)
+    std::vector<double> rise;  ///< the field's rise at each probe: this rank's part
   };
   struct Row {
     double t;
-    std::vector<double> known, partial;  ///< per probe: the same on every rank; this rank's part
+    std::vector<double> part;  ///< per probe: this rank's part of the rise
   };
+  /// This rank's part of φ_pᵀθ for every probe (no communication).
+  PetscErrorCode PartialRise(std::vector<double>* rise) const;
+  /// The field's rise at the probes, on every rank. Collective.
   PetscErrorCode FieldRise(std::vector<double>* rise) const;
+  std::vector<std::vector<std::pair<PetscInt, double>>> functionals_;  ///< per probe: (owned local row, weight)
   heat::HeatSolver* heat_ = nullptr;
   std::unique_ptr<CrackNearField> near_;
   std::deque<Sample> samples_;  ///< the last three heat steps (t = 0 counts)
