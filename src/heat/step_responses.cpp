@@ -64,12 +64,9 @@ PetscErrorCode HeatSolver::StepResponses(Vec phi, const std::vector<double>& len
                                          bool* supported) {
   PetscFunctionBeginUser;
   w->clear();
-  PetscBool theta_family;
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)coupled_ts_, &theta_family, TSTHETA, TSBEULER, TSCN, ""));
-  *supported = theta_family;
-  if (!theta_family) PetscFunctionReturn(0);
-  PetscReal weight;
-  PetscCall(TSThetaGetTheta(coupled_ts_, &weight));
+  double weight;
+  PetscCall(ThetaWeight(coupled_ts_, supported, &weight));
+  if (!*supported) PetscFunctionReturn(0);
   Vec rhs, mass;
   PetscCall(VecDuplicate(theta_, &rhs));
   PetscCall(VecDuplicate(theta_, &mass));

@@ -130,6 +130,8 @@ class HeatSolver {
   /// J = K + shift M with the sink rows, unless it holds that shift already.
   static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
   PetscErrorCode Account(double h);
+  /// w of a theta-family TS (1: backward Euler, 1/2: Crank-Nicolson); family = false (w = 1) for others.
+  static PetscErrorCode ThetaWeight(TS ts, bool* family, double* w);
   // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G; the crack facets.
   PetscErrorCode AssembleMassAndConductivity(bool lumped);
   PetscErrorCode AddConvectiveFilm();
