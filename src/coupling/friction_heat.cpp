@@ -223,4 +223,19 @@ PetscErrorCode FrictionHeat::AddLoad(const std::vector<double>& W, double interv
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FrictionHeat::CellResponse(Vec w, std::vector<double>* per_cell) const {
+  PetscFunctionBeginUser;
+  Vec r;
+  PetscCall(VecDuplicate(rate_, &r));
+  PetscCall(MatMultTranspose(transfer_, w, r));
+  const PetscScalar* x;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(r, &n));
+  PetscCall(VecGetArrayRead(r, &x));
+  per_cell->assign(x, x + n);
+  PetscCall(VecRestoreArrayRead(r, &x));
+  PetscCall(VecDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::coupling

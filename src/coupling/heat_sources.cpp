@@ -64,20 +64,16 @@ PetscErrorCode FrictionHeatSource::Finish(const std::string& dir) {
   PetscFunctionReturn(0);
 }
 
-namespace {
-
-std::vector<long long> CellKeys(const interface::CrackInterface& crack, const mesh::PointOrigin& origin) {
+std::vector<long long> FrictionHeatSource::CellKeys(const mesh::Specimen& specimen) const {
   std::vector<long long> keys;
-  for (const interface::ContactCell& c : crack.cells()) keys.push_back(origin[c.plus]);
+  for (const interface::ContactCell& c : crack_->cells()) keys.push_back(specimen.wave_origin[c.plus]);
   return keys;
 }
-
-}  // namespace
 
 PetscErrorCode FrictionHeatSource::Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
   checkpoint.PutShared("friction_heat/deposited", {deposited_});
-  const std::vector<long long> keys = CellKeys(*crack_, specimen.wave_origin);
+  const std::vector<long long> keys = CellKeys(specimen);
   record_.Save(checkpoint, keys);
   // A periodic recording (under way or replayed): its phases, and per cell its samples.
   std::vector<double> samples;
@@ -98,7 +94,7 @@ PetscErrorCode FrictionHeatSource::Restore(const io::Checkpoint& checkpoint, con
   std::vector<double> deposited;
   PetscCall(checkpoint.GetShared("friction_heat/deposited", &deposited, 1));
   deposited_ = deposited[0];
-  const std::vector<long long> keys = CellKeys(*crack_, specimen.wave_origin);
+  const std::vector<long long> keys = CellKeys(specimen);
   PetscCall(record_.Restore(checkpoint, keys));
   std::vector<double> replay, samples;
   PetscCall(checkpoint.GetShared("friction_heat/replay", &replay));

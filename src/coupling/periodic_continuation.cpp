@@ -228,9 +228,10 @@ PetscErrorCode PeriodicContinuation::Ladder(Recorder& recorder, bool* stopped) {
   recorder.progress().Start(comm, "periodic", ladder_.t, ladder_.end, 0.0, true);
   while (ladder_.t < ladder_.end * (1 - 1e-12)) {
     const double next = std::min(ladder_.t + ladder_.rung, recorder.NextHeatStop(ladder_.t, ladder_.end));
-    PetscCall(heat_->StepTo(next));
+    PetscCall(heat_->StepTo(next, false));
     ladder_.t = next;
-    PetscCall(AddNearField(ladder_.t, 1.0));
+    PetscCall(AddNearField(ladder_.t, 1.0));  // the probes sample θ (their own near field is the crack's)
+    PetscCall(heat_->SampleProbes());
     PetscCall(Observe(recorder, ladder_.t, true));
     PetscCall(AddNearField(ladder_.t, -1.0));
     if (++ladder_.count % scene_->periodic.ladder_steps == 0) ladder_.rung *= 2.0;
@@ -259,7 +260,7 @@ PetscErrorCode PeriodicContinuation::Observe(Recorder& recorder, double t, bool 
   const heat::HeatSolver& heat = heat_->solver();
   PetscCall(recorder.OnHeatStep(heat));
   if (interval) {
-    PetscCall(recorder.RecordTemperature(heat, false));
+    PetscCall(recorder.RecordTemperature(*heat_, false));
     PetscCall(recorder.RecordEnergy(WaveRow(t), heat_));
     PetscCall(recorder.progress().Update(t, heat.steps()));
   }

@@ -72,7 +72,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (heat_ && !control.restart) {  // t = 0
-    PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
+    PetscCall(recorder.RecordTemperature(*heat_, waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
   }
   if (waves_) {
@@ -116,7 +116,10 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
                           heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
   const bool energy_each_step = !heat_;  // with heat, energy rows at intervals (all columns at one time)
-  solver.on_step = [&recorder, energy_each_step](const wave::WaveSolver& w) {
+  const PetscInt probe_every = scene_->run.probe_every;
+  solver.on_step = [this, &recorder, energy_each_step, probe_every](const wave::WaveSolver& w) {
+    // The heat side samples the friction at every wave step, the probes' temperatures at their rows.
+    if (heat_) heat_->AfterWaveStep(w.time(), w.steps() % probe_every == 0);
     return recorder.OnWaveStep(w, energy_each_step);
   };
   // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
@@ -186,7 +189,7 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
   if (heat_) {
-    PetscCall(recorder.RecordTemperature(heat_->solver(), true));
+    PetscCall(recorder.RecordTemperature(*heat_, true));
     PetscCall(recorder.RecordEnergy(*row, heat_.get()));
   } else {
     recorder.FlushProbes();
@@ -256,15 +259,15 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
   if (recorder.OutputDue(t_begin)) PetscCall(recorder.WriteFields(t_begin, nullptr, heat_.get()));
-  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver& h) {
+  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver&) {
     PetscFunctionBeginUser;
     bool due;  // no checkpoints here: a signal stops the run, a restart repeats this phase
     PetscCall(schedule_.Poll(&due, &interrupted_by_));
     if (interrupted_by_) heat.RequestStop();
-    PetscCall(recorder.RecordTemperature(h, false));
-    PetscCall(recorder.OnHeatStep(h));
+    PetscCall(recorder.RecordTemperature(*heat_, false));
+    PetscCall(recorder.OnHeatStep(heat));
     PetscCall(recorder.RecordEnergy(recorder.waves_at_stop(), heat_.get()));
-    PetscCall(recorder.progress().Update(h.time(), h.steps()));
+    PetscCall(recorder.progress().Update(heat.time(), heat.steps()));
     PetscFunctionReturn(0);
   };
   // One TSSolve per output segment (or camera window boundary); the step ladder's rung carries over.

@@ -43,6 +43,9 @@ class FrictionHeat {
   const std::vector<std::array<double, 4>>& crack_vertices() const { return crack_vertices_; }
   /// Global index of this rank's first contact cell.
   PetscInt first_cell() const { return first_cell_; }
+  /// Tᵀw per owned contact cell [m]: what a unit density at each cell adds to wᵀQ
+  /// (w: a global vector of the heat DM). Collective.
+  PetscErrorCode CellResponse(Vec w, std::vector<double>* per_cell) const;
 
  private:
   PetscErrorCode BuildWaveElements(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,

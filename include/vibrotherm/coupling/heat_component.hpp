@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/heat_sources.hpp"
+#include "vibrotherm/coupling/probe_temperatures.hpp"
 #include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/coupling/wave_component.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
@@ -37,7 +38,14 @@ class HeatComponent {
   const heat::HeatSolver& solver() const { return solver_; }
   /// One heat step to t, loaded with what every source deposited since the last step
   /// (two_way: then the thermal stress on the waves follows the new temperatures).
-  PetscErrorCode StepTo(double t);
+  /// sample_probes = false: the caller samples the probes itself (SampleProbes), after shifting the field.
+  PetscErrorCode StepTo(double t, bool sample_probes = true);
+  /// The probes after a heat step (and, while a replay runs, the replayed friction for their near field).
+  PetscErrorCode SampleProbes();
+  /// After every wave step while coupled (row: probes.csv has a row at t).
+  void AfterWaveStep(double t, bool row) { probe_temperatures_.AfterWaveStep(t, row); }
+  /// The probes' temperatures since the last call (probe_temperatures.hpp). Collective.
+  PetscErrorCode ProbeSeries(io::TemperatureSeries* series) { return probe_temperatures_.Collect(series); }
   /// The sources' physics stopped: they write their records into dir and go (and
   /// the thermal stress leaves the waves).
   PetscErrorCode StopSources(const std::string& dir);
@@ -74,6 +82,8 @@ class HeatComponent {
   heat::HeatSolver solver_;
   std::vector<std::unique_ptr<HeatSource>> sources_;
   std::unique_ptr<ThermalStress> thermal_stress_;  ///< -thermoelastic two_way: θ back on the waves
+  ProbeTemperatures probe_temperatures_;          ///< the probes between heat steps
+  FrictionHeatSource* friction_ = nullptr;        ///< among sources_, when friction heats
   Vec load_ = nullptr;
   std::vector<double> crack_probe_xy_;
   std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go

@@ -60,10 +60,15 @@ class FrictionHeatSource final : public HeatSource {
   PetscErrorCode StopRecording() override;
   PetscErrorCode Replay(ReplayMode mode) override;
   PetscErrorCode AddAverageLoad(Vec Q) override;
-
- private:
+  const FrictionHeat& transfer() const { return transfer_; }
   /// Every owned cell's friction energy so far [J/m²] at t: the interface's, or the replay's.
   std::vector<double> Dissipated(double t) const;
+  bool replaying() const { return mode_ != ReplayMode::Off; }
+  const interface::CrackInterface& crack() const { return *crack_; }
+  /// Checkpoint keys of this rank's contact cells (their + point's origin).
+  std::vector<long long> CellKeys(const mesh::Specimen& specimen) const;
+
+ private:
   interface::CrackInterface* crack_ = nullptr;
   PeriodicReplay replay_;
   ReplayMode mode_ = ReplayMode::Off;
