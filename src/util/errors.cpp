@@ -1,12 +1,22 @@
 #include "vibrotherm/util/errors.hpp"
 
+#include <dlfcn.h>
+#include <hdf5.h>
+
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
 namespace vibrotherm {
 namespace {
+
+/// The handler's context (PETSc keeps the pointer for the whole run).
+struct HandlerContext {
+  std::string program;
+  bool debug = false;  ///< -debug: PETSc's trace after the line, MPI_Abort's banner, HDF5's diagnostics
+};
 
 bool IsUserError(PetscErrorCode n) { return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN; }
 
@@ -56,26 +66,42 @@ std::string UnparsedValueOption(const char* mess) {
   return names.empty() ? "" : names + ": expected " + expected + ", got '" + value + "'";
 }
 
+/// Ends every rank of the job at once with `code`. Open MPI's MPI_Abort prints a
+/// seven-line banner by design (even serially); its ompi_mpi_abort, which
+/// MPI_Abort calls after the banner, kills the job the same way without it. Looked
+/// up at run time, so other MPI libraries get their MPI_Abort.
+[[noreturn]] void EndJob(int code, bool debug) {
+  using Abort = int (*)(MPI_Comm, int);
+  const auto quiet = reinterpret_cast<Abort>(dlsym(RTLD_DEFAULT, "ompi_mpi_abort"));
+  if (quiet && !debug) quiet(MPI_COMM_WORLD, code);
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);
+}
+
 PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const char* file, PetscErrorCode n,
                                 PetscErrorType p, const char* mess, void* ctx) {
+  const HandlerContext& context = *static_cast<const HandlerContext*>(ctx);
+  const char* program = context.program.c_str();
+  if (context.debug) PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, nullptr);
   if (!IsUserError(n) && p == PETSC_ERROR_INITIAL) {
     const std::string option = UnparsedValueOption(mess);
     if (!option.empty()) {  // a user error after all: every rank reads the options, every rank gets here
       PetscMPIInt rank = 0;
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-      if (rank == 0) std::fprintf(stderr, "%s: error: %s\n", static_cast<const char*>(ctx), option.c_str());
+      if (rank == 0) std::fprintf(stderr, "%s: error: %s\n", program, option.c_str());
       return PETSC_ERR_USER_INPUT;
     }
   }
   if (!IsUserError(n)) {
     // A runtime failure may be seen by one rank only: unwinding would leave the
     // others waiting in a collective call (HDF5 flushes, reductions). One line,
-    // then the whole job ends; outputs stay under their .partial names.
+    // then the whole job ends; outputs stay under their .partial names (a
+    // checkpoint's restart needs them).
     if (p == PETSC_ERROR_INITIAL) {
-      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", static_cast<const char*>(ctx), mess ? mess : "(no message)",
-                   fun ? fun : "?", file ? file : "?", line);
+      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", program, mess ? mess : "(no message)", fun ? fun : "?",
+                   file ? file : "?", line);
       std::fflush(stderr);
-      MPI_Abort(MPI_COMM_WORLD, 1);
+      EndJob(1, context.debug);
     }
     return n;
   }
@@ -85,11 +111,11 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
     if (comm != MPI_COMM_NULL) MPI_Comm_rank(comm, &rank), MPI_Comm_size(comm, &size);
     MPI_Comm_size(MPI_COMM_WORLD, &world);
     if (rank == 0) {
-      std::fprintf(stderr, "%s: error: %s\n", static_cast<const char*>(ctx), mess ? mess : "(no message)");
+      std::fprintf(stderr, "%s: error: %s\n", program, mess ? mess : "(no message)");
       std::fflush(stderr);
     }
     // Found by some ranks only (a file on rank 0): the others would wait forever.
-    if (size < world) MPI_Abort(MPI_COMM_WORLD, 2);
+    if (size < world) EndJob(2, context.debug);
   }
   return n;
 }
@@ -98,10 +124,22 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
 
 PetscErrorCode PushUserErrorHandler(const char* program) {
   PetscFunctionBeginUser;
-  static std::string name;  // PETSc keeps the context pointer for the whole run
-  name = program;
-  PetscCall(PetscPushErrorHandler(UserErrorHandler, name.data()));
+  static HandlerContext context;  // PETSc keeps the context pointer for the whole run
+  context.program = program;
+  PetscBool debug = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-debug", &debug, nullptr));
+  context.debug = debug;
+  // HDF5 prints its error stack (~20 lines) on every failed call, even those the
+  // program reports itself in one line: only with -debug.
+  if (!debug) PetscCallExternal(H5Eset_auto2, H5E_DEFAULT, nullptr, nullptr);
+  PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
   PetscFunctionReturn(0);
+}
+
+void PrintOneLineError(const char* program, const std::string& message) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::fprintf(stderr, "%s: error: %s\n", program, message.c_str());
 }
 
 int ExitCode(PetscErrorCode ierr) {

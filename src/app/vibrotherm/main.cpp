@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/options/option_database.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "run.hpp"
 
@@ -19,6 +20,16 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--version") == 0) argv[i] = version;
   }
   const std::vector<std::string> command_line(argv + 1, argv + argc);
+  // PETSc reads the options files inside PetscInitialize, where a missing file
+  // or a malformed line is a 20-line trace and an MPI_Abort: checked first, with
+  // MPI up (PETSc then leaves MPI_Finalize to us).
+  MPI_Init(&argc, &argv);
+  const std::string options_file_error = vibrotherm::options::options_file_error(command_line);
+  if (!options_file_error.empty()) {
+    vibrotherm::PrintOneLineError("vibrotherm", options_file_error);
+    MPI_Finalize();
+    return 2;
+  }
   PetscCall(SlepcInitialize(&argc, &argv, nullptr,
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
@@ -26,5 +37,6 @@ int main(int argc, char** argv) {
   int status = 0;
   const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line, &status);
   PetscCall(SlepcFinalize());
+  MPI_Finalize();
   return ierr ? vibrotherm::ExitCode(ierr) : status;
 }

@@ -80,6 +80,7 @@ PetscErrorCode RemoveCheckpoint(MPI_Comm comm, const std::string& dir) {
 struct AppOptions {
   PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
   PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
+  PetscBool debug = PETSC_FALSE;  ///< read by the error handler (util/errors.hpp); declared here
   char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
   char restart[PETSC_MAX_PATH_LEN] = "";  ///< -restart DIR: continue the run whose checkpoint is in DIR
 };
@@ -99,6 +100,8 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
                                nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
   PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
                              nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
+  PetscCall(PetscOptionsBool("-debug", "Errors with PETSc's full trace after the one line, MPI_Abort's banner and HDF5's "
+                             "diagnostics", nullptr, o->debug, &o->debug, nullptr));
   PetscOptionsEnd();
   PetscBool dir_set = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output_dir", &dir_set));
@@ -233,6 +236,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
   summary.complete = simulation.interrupted_by() == 0;
+  PetscCall(io::RunLogPublish());  // summary.json, the run's record, comes last
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
   PetscCall(PetscPrintf(comm, "outputs in %s%s\n", dir.c_str(), summary.complete ? "" : " (incomplete: summary.json says \"complete\": false)"));
