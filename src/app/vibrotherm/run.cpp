@@ -20,65 +20,15 @@
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/util/option_audit.hpp"
 #include "vibrotherm/util/version.hpp"
+#include "output_directory.hpp"
 #include "restart.hpp"
 
 namespace vibrotherm::app {
 namespace {
 
-/// Everything a run (and scripts/plot after it) writes into its output directory.
-const std::vector<std::string>& RunOutputFiles() {
-  static const std::vector<std::string> files = {
-      "summary.json", "mesh.h5", "mesh.xmf", "fields.h5", "fields_wave.xmf", "fields_heat.xmf", "fields_cracks.xmf",
-      "fields.xmf" /* before fields_<grid>.xmf */, "probes.csv", "energy.csv", "checkpoint.h5",
-      "crack_state.csv", "crack_heat.h5", "camera.h5", "camera.xmf", "modes.csv", "modes.h5", "modes.xmf",
-      "vibrotherm.log", "traction_loop.png", "crack_temperature.png", "temperature_maps.png", "energy_budget.png",
-      "crack_spacetime.png", "camera.png", "modes.png"};
-  return files;
-}
-
-/// Creates the output directory on rank 0 and removes an earlier run's outputs
-/// there (with their .partial leftovers), so no old file sits beside new ones.
-/// A restart keeps what its checkpoint continues: the checkpoint, the .partial
-/// files, and the interrupted run's log as vibrotherm.before-restart.log.
-/// A failure is an error on every rank.
-PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir, bool restart) {
-  PetscFunctionBeginUser;
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  int failed = 0, removed = 0;
-  if (rank == 0) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    failed = !std::filesystem::is_directory(dir);
-    if (restart) std::filesystem::rename(dir + "/vibrotherm.log", dir + "/vibrotherm.before-restart.log", ec);
-    ec.clear();
-    for (const std::string& name : RunOutputFiles()) {
-      if (restart && name == "checkpoint.h5") continue;
-      const std::string file = dir + "/" + name;
-      if (!failed && std::filesystem::remove(file, ec)) ++removed;
-      if (!failed && !restart && std::filesystem::remove(file + ".partial", ec)) ++removed;
-    }
-    failed = failed || static_cast<bool>(ec);
-  }
-  PetscCallMPI(MPI_Bcast(&failed, 1, MPI_INT, 0, comm));
-  PetscCheck(!failed, comm, PETSC_ERR_FILE_OPEN, "-output_dir %s: cannot create the directory or remove its old outputs",
-             dir.c_str());
-  if (removed) PetscCall(PetscPrintf(comm, "removed %d outputs of an earlier run from %s\n", removed, dir.c_str()));
-  PetscFunctionReturn(0);
-}
-
-/// A complete run needs no checkpoint: removed, so that no -restart repeats its end.
-PetscErrorCode RemoveCheckpoint(MPI_Comm comm, const std::string& dir) {
-  PetscFunctionBeginUser;
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  std::error_code ec;
-  if (rank == 0) std::filesystem::remove(dir + "/checkpoint.h5", ec);
-  PetscFunctionReturn(0);
-}
-
 struct AppOptions {
   PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
+  PetscBool overwrite = PETSC_FALSE;  ///< -overwrite: discard an interrupted run's checkpoint in -output_dir
   PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
   PetscBool debug = PETSC_FALSE;  ///< read by the error handler (util/errors.hpp); declared here
   char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
@@ -98,6 +48,10 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
                                "Continue the interrupted run whose outputs and checkpoint.h5 are in this directory "
                                "(the same options; it becomes the output directory)",
                                nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
+  PetscCall(PetscOptionsBool("-overwrite",
+                             "Write into an -output_dir that holds an interrupted run's checkpoint, discarding it "
+                             "(without it such a run is refused: continue it with -restart)",
+                             nullptr, o->overwrite, &o->overwrite, nullptr));
   PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
                              nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
   PetscCall(PetscOptionsBool("-debug", "Errors with PETSc's full trace after the one line, MPI_Abort's banner and HDF5's "
@@ -106,8 +60,8 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
   PetscBool dir_set = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output_dir", &dir_set));
   if (o->restart[0]) {
-    PetscCheck(!dir_set || std::string(o->output_dir) == o->restart, comm, PETSC_ERR_USER_INPUT,
-               "-restart %s writes into that directory: -output_dir %s differs", o->restart, o->output_dir);
+    PetscCheck(!dir_set || SameDirectory(o->output_dir, o->restart), comm, PETSC_ERR_USER_INPUT,
+               "-restart %s writes into that directory: -output_dir %s is another one", o->restart, o->output_dir);
     PetscCheck(!o->modes && !o->mesh_only, comm, PETSC_ERR_USER_INPUT, "-restart continues a time run, not -modes or -mesh_only");
     PetscCall(PetscStrncpy(o->output_dir, o->restart, sizeof(o->output_dir)));
   }
@@ -203,6 +157,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
     PetscCall(OptionAuditEnd(&declared));
     PetscFunctionReturn(io::RunLogClose());
   }
+  // Before meshing: another run there, or an interrupted run's checkpoint, is refused now.
+  PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
   io::RunSummary summary;
   mesh::Specimen specimen;
   coupling::Simulation simulation;
@@ -223,7 +179,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
     control.restart = &checkpoint;
     summary.restarted_from = dir + "/checkpoint.h5";
   }
-  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr));
+  io::OutputLock lock;  // the directory is this run's until Run returns
+  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr, &lock));
   PetscCall(io::RunLogOpen(comm, dir + "/vibrotherm.log"));
   PetscLogStage output_stage;
   PetscCall(PetscLogStageRegister("Output", &output_stage));
