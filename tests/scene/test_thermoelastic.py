@@ -20,7 +20,7 @@ lam, G = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 beta = (3 * lam + 2 * G) * alpha_L
 box = ["-specimen_width", "0.02", "-specimen_height", "0.1", "-edge_top", "source", "-edge_bottom", "absorbing",
        "-thermoelastic", "one_way", "-final_time", "4e-5", "-source_duration", "1e-3", "-probe_points",
-       "0.01,0.08,0.01,0.0805,0.01,0.0795", "-probe_every", "6"]
+       "0.01,0.08,0.01,0.0805,0.01,0.0795", "-probe_every", "6", "-wave_degree", "1"]
 p_wave = ["-source_component", "normal", "-edge_left", "roller", "-edge_right", "roller"]
 s_wave = ["-source_component", "tangential", "-edge_left", "antisymmetric", "-edge_right", "antisymmetric"]
 
