@@ -241,14 +241,39 @@ PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+/// -mesh_file sets the specimen's outline, cracks, mesh and edges: the options of a
+/// generated specimen given with it (an options file written for one, such as
+/// paper.opts) are ignored, said in one note.
+PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
+  PetscFunctionBeginUser;
+  static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
+                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
+                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right"};
+  std::string given;
+  for (const char* name : names) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    if (set) given += std::string(given.empty() ? "" : ", ") + name;
+  }
+  if (!given.empty())
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: -mesh_file %s sets the specimen, its cracks, mesh and edges: %s "
+                                "ignored\n", file, given.c_str()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
 PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length) {
   PetscFunctionBeginUser;
   MeshSource source;
   PetscCall(ReadMeshSource(comm, &source));
   SpecimenGeometry geometry;
-  PetscCall(ReadSpecimenGeometry(comm, &geometry));
-  HeatMeshSizes sizes;
-  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes));
+  PetscCall(ReadSpecimenGeometry(comm, &geometry, !source.from_file));
+  if (source.from_file) PetscCall(NoteIgnoredGeometry(comm, source.file));
+  HeatMeshSizes sizes;  // a mesh file's are derived from the file once read
+  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes, !source.from_file));
   PetscFunctionReturn(0);
 }
 

@@ -30,25 +30,11 @@ const ValueMessage kValueMessages[] = {
     {"Unknown logical value: ", "", "true or false (1|0|yes|no)"},
 };
 
-/// When mess is one of kValueMessages about X: "<options whose value, or one of
-/// its comma-separated entries, is X>: expected ..., got 'X'"; else "".
-std::string UnparsedValueOption(const char* mess) {
-  const std::string m = mess ? mess : "";
-  std::string value;
-  const char* expected = nullptr;
-  for (const ValueMessage& v : kValueMessages) {
-    const std::string head = v.head, tail = v.tail;
-    const std::size_t a = m.find(head);
-    if (a == std::string::npos) continue;
-    const std::size_t b = tail.empty() ? m.size() : m.find(tail, a + head.size());
-    if (b == std::string::npos) continue;
-    value = m.substr(a + head.size(), b - a - head.size());
-    expected = v.expected;
-    break;
-  }
-  if (!expected || value.empty()) return "";
+/// The options whose value, or one of its comma-separated entries, is `value`
+/// ("-a, -b"; "" when none).
+std::string OptionsHolding(const std::string& value) {
   char* all = nullptr;
-  if (PetscOptionsGetAll(nullptr, &all) || !all) return "";
+  if (value.empty() || PetscOptionsGetAll(nullptr, &all) || !all) return "";
   std::istringstream words(all);
   PetscFree(all);
   std::string word, option, names;
@@ -63,7 +49,38 @@ std::string UnparsedValueOption(const char* mess) {
     for (std::string entry; std::getline(entries, entry, ',');) holds = holds || entry == value;
     if (!option.empty() && holds) names += (names.empty() ? "" : ", ") + option;
   }
-  return names.empty() ? "" : names + ": expected " + expected + ", got '" + value + "'";
+  return names;
+}
+
+/// When mess is one of kValueMessages about X: "<options holding X>: expected ...,
+/// got 'X'"; else "".
+std::string UnparsedValueOption(const char* mess) {
+  const std::string m = mess ? mess : "";
+  for (const ValueMessage& v : kValueMessages) {
+    const std::string head = v.head, tail = v.tail;
+    const std::size_t a = m.find(head);
+    if (a == std::string::npos) continue;
+    const std::size_t b = tail.empty() ? m.size() : m.find(tail, a + head.size());
+    if (b == std::string::npos) continue;
+    const std::string value = m.substr(a + head.size(), b - a - head.size());
+    const std::string names = OptionsHolding(value);
+    return names.empty() ? "" : names + ": expected " + v.expected + ", got '" + value + "'";
+  }
+  return "";
+}
+
+/// PETSc's "unknown type" errors (Unknown TSAdapt type "foo" given, Unable to find
+/// requested KSP type foo) about a value an option holds: "<option>: unknown value
+/// 'foo' (PETSc: ...)"; else "".
+std::string UnknownTypeOption(const char* mess) {
+  std::istringstream words(mess ? mess : "");
+  for (std::string word; words >> word;) {
+    const std::size_t a = word.find_first_not_of("\"'"), b = word.find_last_not_of("\"':,.");
+    if (a == std::string::npos || b == std::string::npos || b < a) continue;
+    const std::string value = word.substr(a, b - a + 1), names = OptionsHolding(value);
+    if (!names.empty()) return names + ": unknown value '" + value + "' (PETSc: " + mess + ")";
+  }
+  return "";
 }
 
 /// Ends every rank of the job at once with `code`. Open MPI's MPI_Abort prints a
@@ -84,7 +101,7 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
   const char* program = context.program.c_str();
   if (context.debug) PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, nullptr);
   if (!IsUserError(n) && p == PETSC_ERROR_INITIAL) {
-    const std::string option = UnparsedValueOption(mess);
+    const std::string option = n == PETSC_ERR_ARG_UNKNOWN_TYPE ? UnknownTypeOption(mess) : UnparsedValueOption(mess);
     if (!option.empty()) {  // a user error after all: every rank reads the options, every rank gets here
       PetscMPIInt rank = 0;
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);

@@ -16,6 +16,7 @@
 #include "vibrotherm/io/run_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
+#include "vibrotherm/mesh/metis_partitioner.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/util/option_audit.hpp"
@@ -68,8 +69,45 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
   PetscFunctionReturn(0);
 }
 
-/// -help: the options of every module, whatever the scene, then nothing else.
-PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
+/// -help: the main options of the PETSc objects under vibrotherm's prefixes (a
+/// run reads them from the objects themselves, with every other option of
+/// theirs, and refuses one none of them read).
+PetscErrorCode ListSolverOptions(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  PetscCall(mesh::RegisterMetisPartitioner());
+  PetscPartitioner partitioner;  // prints -petscpartitioner_type with the types and the default of this build
+  PetscCall(PetscPartitionerCreate(comm, &partitioner));
+  PetscCall(PetscPartitionerSetFromOptions(partitioner));
+  PetscCall(PetscPartitionerDestroy(&partitioner));
+  struct Entry {
+    const char* name;
+    std::string value;
+    const char* text;
+  };
+  const Entry entries[] = {
+      {"-wave_ts_type", "velocityverlet",
+       "Wave TS: velocityverlet (vibrotherm's own), basicsymplectic, rk, ssp or alpha2 (implicit)"},
+      {"-wave_ts_rk_type", "4", "-wave_ts_type rk: 1fe, 2a, 3 or 4 (fixed steps)"},
+      {"-heat_ts_type", "beuler", "Heat TS while the waves run (fixed steps; -heat_ksp_*, -heat_pc_*: its linear solver)"},
+      {"-heat_free_ts_type", "cn", "Heat TS after the waves (-heat_free_ksp_*, -heat_free_pc_*: its linear solver)"},
+      {"-heat_free_ts_adapt_type", "ladder",
+       "Its steps: ladder (doubling every -heat_free_ts_adapt_ladder_steps steps, ratio "
+       "-heat_free_ts_adapt_ladder_ratio) or basic (PETSc's error control)"}};
+  PetscOptionsBegin(comm, nullptr,
+                    "PETSc solvers (any option of -wave_ts_*, -heat_ts_*, -heat_free_ts_*, -heat_ksp_*, -heat_pc_*, "
+                    "-modes_eps_*, -modes_st_*, -petscpartitioner_*; refused when none of them reads it)", nullptr);
+  for (const Entry& e : entries) {
+    char value[64];
+    PetscCall(PetscStrncpy(value, e.value.c_str(), sizeof(value)));
+    PetscCall(PetscOptionsString(e.name, e.text, nullptr, value, value, sizeof(value), nullptr));
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+/// Every option of every module, whatever the scene (-help lists them, and a run
+/// checks the command line against them before meshing), with their values checked.
+PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionBeginUser;
   PetscCall(mesh::DeclareSpecimenOptions(comm, scene.exchange_length()));
   modes::ModesOptions modes;
@@ -77,8 +115,23 @@ PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionReturn(0);
 }
 
-/// Builds what the options describe (all input checked, nothing written), then
-/// checks that every option given was one the program knows.
+/// Before meshing (which may take minutes): every name on the command line is
+/// vibrotherm's or under a PETSc prefix, every value is there, and the output
+/// directory can be used.
+PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene) {
+  PetscFunctionBeginUser;
+  PetscCall(DeclareOptions(comm, scene));
+  std::vector<DeclaredOption> declared;
+  OptionAuditDeclared(&declared);
+  // Likely typos now (PETSc's objects declare their options later); -allow_unknown's warning comes once, after.
+  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, declared, false, true));
+  PetscCall(CheckMissingValues(comm, declared));
+  // Another run there, or an interrupted run's checkpoint, is refused now.
+  PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
+  PetscFunctionReturn(0);
+}
+
+/// Builds what the options describe (all input checked, nothing written).
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
@@ -153,20 +206,21 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   PetscCall(coupling::ReadScene(comm, &scene));
   std::vector<DeclaredOption> declared;
   if (app.help) {
-    PetscCall(ListOptions(comm, scene));
+    PetscCall(DeclareOptions(comm, scene));
+    PetscCall(ListSolverOptions(comm));
     PetscCall(OptionAuditEnd(&declared));
     PetscFunctionReturn(io::RunLogClose());
   }
-  // Before meshing: another run there, or an interrupted run's checkpoint, is refused now.
-  PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
+  PetscCall(CheckBeforeMeshing(comm, app, scene));
   io::RunSummary summary;
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
   PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
+  // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, declared, app.allow_unknown));
-  PetscCall(CheckMissingValues(comm, declared));
+  PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
   RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
@@ -193,6 +247,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
   summary.complete = simulation.interrupted_by() == 0;
+  if (summary.complete) PetscCall(WarnUnreadSolverOptions(comm));
   PetscCall(io::RunLogPublish());  // summary.json, the run's record, comes last
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
