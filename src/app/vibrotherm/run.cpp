@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/model_validity.hpp"
 #include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/coupling/simulation.hpp"
 #include "vibrotherm/io/mesh_output.hpp"
@@ -143,7 +144,10 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
   if (app.modes && !app.mesh_only) PetscCall(modes_run->Setup(*specimen, scene, summary));
-  else if (!app.mesh_only) PetscCall(simulation->Setup(*specimen, scene, summary));
+  if (app.modes || app.mesh_only) PetscFunctionReturn(0);
+  if (scene.run.physics != coupling::PhysicsChoice::Heat)
+    PetscCall(coupling::CheckSourceValidity(comm, scene, summary->mesh.h_max, summary));
+  PetscCall(simulation->Setup(*specimen, scene, summary));
   PetscFunctionReturn(0);
 }
 
