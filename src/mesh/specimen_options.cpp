@@ -106,8 +106,9 @@ PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& g, doubl
                              nullptr, sizes->grading, &sizes->grading, nullptr));
   PetscOptionsEnd();
   sizes->graded = kind == 1;
-  if (!h_along_set) sizes->h_along = std::min(sizes->h_along, sizes->h);
-  if (!h_crack_set) sizes->h_crack = std::min(sizes->h_crack, sizes->h_along);
+  // A default follows the size the user set next to it (a bad one is refused below, naming it).
+  if (!h_along_set && sizes->h > 0.0) sizes->h_along = std::min(sizes->h_along, sizes->h);
+  if (!h_crack_set && sizes->h_along > 0.0) sizes->h_crack = std::min(sizes->h_crack, sizes->h_along);
   if (sizes->graded && check) VibrothermCallCpp(comm, sizes->validate());
   PetscFunctionReturn(0);
 }

@@ -143,13 +143,13 @@ PetscErrorCode PushUserErrorHandler(const char* program) {
   PetscFunctionBeginUser;
   static HandlerContext context;  // PETSc keeps the context pointer for the whole run
   context.program = program;
-  PetscBool debug = PETSC_FALSE;
+  PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
+  PetscBool debug = PETSC_FALSE;  // read under the handler: a bad value is one line, exit 2
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-debug", &debug, nullptr));
   context.debug = debug;
   // HDF5 prints its error stack (~20 lines) on every failed call, even those the
   // program reports itself in one line: only with -debug.
   if (!debug) PetscCallExternal(H5Eset_auto2, H5E_DEFAULT, nullptr, nullptr);
-  PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
   PetscFunctionReturn(0);
 }
 

@@ -88,6 +88,7 @@ ALLOWED = {
     "-mesh_only": {"0", ""}, "-modes": {"0", ""}, "-allow_unknown": {"0", ""}, "-heat_lumped_mass": {"0", ""},
     # The camera switch and -force are booleans; any integer seeds the noise; 0 fps: no camera.
     "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
+    "-debug": {"0", ""}, "-overwrite": {"0", ""},
     # NETD 0: a noise-free camera (the clean frames).
     "-camera_netd": {"0"},
     # 0: checkpoints only when a signal stops the run.

@@ -33,9 +33,9 @@ int main(int argc, char** argv) {
   PetscCall(SlepcInitialize(&argc, &argv, nullptr,
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
-  PetscCall(vibrotherm::PushUserErrorHandler("vibrotherm"));
   int status = 0;
-  const PetscErrorCode ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line, &status);
+  PetscErrorCode ierr = vibrotherm::PushUserErrorHandler("vibrotherm");
+  if (!ierr) ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line, &status);
   PetscCall(SlepcFinalize());
   MPI_Finalize();
   return ierr ? vibrotherm::ExitCode(ierr) : status;
