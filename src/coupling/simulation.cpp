@@ -102,7 +102,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
-                        "omega_max %.4g rad/s), up to %.0f steps to t = %g s\n",
+                        "omega_max %.4g rad/s), %.0f steps at this step to t = %g s\n",
                         solver.dofs(), scene_->wave.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
                         std::ceil(final_time / solver.dt()), final_time));
   if (heat_)

@@ -134,6 +134,23 @@ PetscErrorCode ShareGeometry(MPI_Comm comm, bool* usable, SpecimenGeometry* g) {
   PetscFunctionReturn(0);
 }
 
+/// Meshing may take minutes (gmsh's recombination into quads grows faster than the
+/// cells): said before it starts, with the cells to expect and the faster way.
+PetscErrorCode AnnounceMeshing(MPI_Comm comm, const MeshSource& source, const SpecimenGeometry& geometry) {
+  PetscFunctionBeginUser;
+  if (source.from_file) {
+    PetscCall(PetscPrintf(comm, "Meshing: reading %s\n", source.file));
+    PetscFunctionReturn(0);
+  }
+  const double cells = EstimateMemory(geometry, 0, 1, 1).wave_cells;
+  constexpr double kLarge = 1e5;  // cells: gmsh then takes tens of seconds to minutes on one core
+  PetscCall(PetscPrintf(comm, "Meshing with gmsh on rank 0: about %.2g wave cells, then the heat mesh%s\n", cells,
+                        cells > kLarge && source.refinements == 0
+                            ? " (a large mesh: minutes; meshing coarser and -dm_refine 1 is about 4x faster)"
+                            : ""));
+  PetscFunctionReturn(0);
+}
+
 /// A mesh file whose heat mesh cannot be graded to its cracks (ungraded: why, on
 /// rank 0): the heat falls back to the wave mesh, far too coarse at the cracks.
 /// Said loudly, with the cost and the ways out, unless -heat_mesh wave asked for it.
@@ -199,6 +216,8 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
   MeshData data;
   bool generate_heat = !source.from_file;
+  PetscCall(AnnounceMeshing(comm, source, geometry));
+  const double t0 = MPI_Wtime();
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
   std::string ungraded;  // why a mesh file's heat mesh cannot be generated (rank 0)
   PetscCall(RunOnRoot(comm, [&] {
@@ -223,6 +242,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(PetscLogEventBegin(log.heat_generate, 0, 0, 0, 0));
   PetscCall(BuildHeatMesh(comm, source, data, geometry, generate_heat, heat_sizes, names, &heat, &s->heat_source));
   PetscCall(PetscLogEventEnd(log.heat_generate, 0, 0, 0, 0));
+  PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
   PetscCall(PetscLogEventBegin(log.build, 0, 0, 0, 0));
   PetscCall(BuildSerialPlex(comm, data, names, source.refinements, &serial));
   data = MeshData{};  // free the arrays

@@ -4,6 +4,7 @@
 // coupling/driver.hpp) or, with -modes, solves for its natural modes.
 #include <slepcsys.h>
 
+#include <csignal>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
   PetscCall(SlepcInitialize(&argc, &argv, nullptr,
                             "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
                             "Options files: -options_file options/paper.opts. Full list: -help.\n"));
+  // Output piped into a reader that stopped (vibrotherm ... | head): end quietly, as
+  // any command does, not with PETSc's trace of a "caught signal".
+  std::signal(SIGPIPE, SIG_DFL);
   int status = 0;
   PetscErrorCode ierr = vibrotherm::PushUserErrorHandler("vibrotherm");
   if (!ierr) ierr = vibrotherm::app::Run(PETSC_COMM_WORLD, command_line, &status);
