@@ -48,13 +48,16 @@ Holder Parse(const std::string& text) {
 
 /// Whether the holder may still be running: always when on another host (it
 /// cannot be checked from here); on this one, while its pid runs a vibrotherm
-/// (a reused pid runs something else).
+/// (a reused pid runs something else) that is not a zombie.
 bool Alive(const Holder& h) {
   if (h.host != ThisHost()) return true;
   if (h.pid <= 0) return false;
   if (kill(static_cast<pid_t>(h.pid), 0) != 0 && errno == ESRCH) return false;
+  // A killed process not yet reaped by its parent (an MPI launcher) is a zombie: dead.
+  std::ifstream stat("/proc/" + std::to_string(h.pid) + "/stat");
+  std::string pid, name, state;
+  if (stat >> pid >> name >> state && state == "Z") return false;
   std::ifstream comm("/proc/" + std::to_string(h.pid) + "/comm");
-  std::string name;
   if (comm >> name) return name.rfind("vibrotherm", 0) == 0;
   return true;
 }
