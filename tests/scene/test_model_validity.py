@@ -16,7 +16,7 @@ usage: test_model_validity.py VIBROTHERM"""
 import json, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, one_line_error
 
 exe = os.path.abspath(sys.argv[1])
 check = Checks("model_validity")
@@ -34,10 +34,7 @@ def run(tmp, name, extra):
 
 
 def refused(label, r, out, *words):
-    lines = [l for l in r.stderr.splitlines() if l.strip()]
-    check(r.returncode == 2 and len(lines) == 1, "%s: one line, exit 2 (exit %d: %s)" % (label, r.returncode, r.stderr[-400:]))
-    for word in words:
-        check(bool(lines) and word in lines[0], "%s: the line names %s: %s" % (label, word, lines))
+    one_line_error(check, label, r.returncode, r.stderr, *words)
     check(not os.path.exists(out), "%s: nothing written" % label)
 
 

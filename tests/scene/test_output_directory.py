@@ -17,7 +17,7 @@ usage: test_output_directory.py VIBROTHERM"""
 import json, os, signal, socket, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, one_line_error
 
 exe = os.path.abspath(sys.argv[1])
 check = Checks("output_directory")
@@ -33,16 +33,8 @@ def run(args, cwd=None):
     return r.returncode, r.stdout, r.stderr
 
 
-def errors(err):
-    return [l for l in err.splitlines() if l.startswith("vibrotherm: error:")]
-
-
 def one_line_refusal(label, code, err, *words):
-    lines = errors(err)
-    check(code == 2 and len(lines) == 1 and len(err.strip().splitlines()) == 1,
-          "%s: one line, exit 2 (exit %d: %s)" % (label, code, err[-500:]))
-    for word in words:
-        check(bool(lines) and word in lines[0], "%s: the line names %s: %s" % (label, word, lines))
+    one_line_error(check, label, code, err, *words)
 
 
 def wait_for(path, process, seconds=60):
