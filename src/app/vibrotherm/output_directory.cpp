@@ -35,10 +35,13 @@ bool SameDirectory(const std::string& a, const std::string& b) {
 PetscErrorCode CheckOutputDirectory(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite) {
   PetscFunctionBeginUser;
   PetscCall(io::OutputLock::CheckFree(comm, dir));
-  if (restart || overwrite) PetscFunctionReturn(0);
   PetscCall(RunOnRoot(comm, [&] {
     std::error_code ec;
-    if (std::filesystem::exists(dir + "/checkpoint.h5", ec))
+    const bool checkpoint = std::filesystem::exists(dir + "/checkpoint.h5", ec);
+    if (restart && !checkpoint)
+      throw std::invalid_argument("-restart " + dir + ": no checkpoint.h5 there, nothing to continue (a complete run "
+                                  "removes its checkpoint)");
+    if (checkpoint && !restart && !overwrite)
       throw std::invalid_argument("-output_dir " + dir + " holds the checkpoint of an interrupted run (checkpoint.h5): "
                                   "continue it with -restart " + dir + " and that run's options, or give -overwrite "
                                   "to discard it");

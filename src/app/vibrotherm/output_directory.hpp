@@ -13,9 +13,9 @@
 
 namespace vibrotherm::app {
 
-/// Refuses (exit 2, one line) a directory a live run holds, or one holding an
+/// Refuses (exit 2, one line) a directory a live run holds, one holding an
 /// interrupted run's checkpoint when the run neither restarts it nor was given
-/// -overwrite. Creates nothing. Collective.
+/// -overwrite, and a restart without a checkpoint. Creates nothing. Collective.
 PetscErrorCode CheckOutputDirectory(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
 /// Creates the directory (rank 0), takes its lock, and removes an earlier run's
 /// outputs; a restart keeps what its checkpoint continues. Collective.

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -116,9 +115,8 @@ PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionReturn(0);
 }
 
-/// Before meshing (which may take minutes): every name on the command line is
-/// vibrotherm's or under a PETSc prefix, every value is there, and the output
-/// directory can be used.
+/// Before meshing (which may take minutes): no likely typo of a vibrotherm option,
+/// every value there, and an output directory this run may use.
 PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene) {
   PetscFunctionBeginUser;
   PetscCall(DeclareOptions(comm, scene));
