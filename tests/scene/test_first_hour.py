@@ -11,7 +11,7 @@ solvers' main options (-wave_ts_type, -petscpartitioner_type); a misspelt option
 refused before meshing; a misspelt PETSc solver option (-wave_ts_rk_typ) and a bad value
 of one PETSc reads (-heat_free_ts_adapt_type) are refused before any step, one line,
 exit 2, nothing written; the README's -mesh_file example with paper.opts runs, with a
-note naming the options the file makes irrelevant.
+note naming the options the file makes irrelevant; meshing is announced before it starts.
 
 usage: test_first_hour.py VIBROTHERM SOURCE_DIR"""
 import os, subprocess, sys, tempfile
@@ -92,4 +92,7 @@ with tempfile.TemporaryDirectory() as tmp:
                              os.path.join(tmp, "late")], tmp)
     check(r.returncode == 0 and "-output_times 0.005 s is after the end of the run" in r.stdout,
           "late output time: exit %d, %r" % (r.returncode, r.stdout[-400:]))
+    # Meshing says what it does before it starts (large scenes take minutes).
+    before = r.stdout.split("Mesh (generated)")[0]
+    check("Meshing with gmsh" in before and "wave cells" in before, "no word before meshing: %r" % before[-300:])
 check.finish()
