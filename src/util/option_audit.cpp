@@ -69,9 +69,13 @@ const char* const kPetscPrefixes[] = {
 bool StartsWithAny(const std::string& name, const char* const* begin, const char* const* end) {
   return std::any_of(begin, end, [&](const char* p) { return name.rfind(p, 0) == 0; });
 }
-bool SolverOption(const std::string& name) {
-  return StartsWithAny(name, std::begin(kSolverPrefixes), std::end(kSolverPrefixes));
+/// The solver prefix an option is under ("" when none).
+std::string SolverPrefix(const std::string& name) {
+  for (const char* p : kSolverPrefixes)
+    if (name.rfind(p, 0) == 0) return p;
+  return "";
 }
+bool SolverOption(const std::string& name) { return !SolverPrefix(name).empty(); }
 bool PetscOwned(const std::string& name) {
   return SolverOption(name) || StartsWithAny(name, std::begin(kPetscPrefixes), std::end(kPetscPrefixes));
 }
@@ -206,12 +210,20 @@ PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOpti
 
 namespace {
 
-/// The first solver option given and not read yet ("" when none); before the
-/// steps, those read only while solving are not counted.
-std::string FirstUnreadSolverOption(bool before_steps) {
-  for (const std::string& name : OptionsLeft())
-    if (SolverOption(name) && !(before_steps && ReadWhileSolving(name))) return "-" + name;
-  return "";
+/// Solver options given and not read yet: *unread, the first under the prefix of a
+/// solver this scene has (it declared options); *absent, those under one it has not.
+/// Before the steps, those read only while solving are not counted.
+void UnreadSolverOptions(const std::vector<std::string>& declared, bool before_steps, std::string* unread,
+                         std::string* absent) {
+  unread->clear(), absent->clear();
+  for (const std::string& name : OptionsLeft()) {
+    if (!SolverOption(name) || (before_steps && ReadWhileSolving(name))) continue;
+    const std::string prefix = "-" + SolverPrefix(name);
+    const bool present = std::any_of(declared.begin(), declared.end(),
+                                     [&](const std::string& d) { return d.rfind(prefix, 0) == 0; });
+    if (!present) *absent += (absent->empty() ? "-" : ", -") + name;
+    else if (unread->empty()) *unread = "-" + name;
+  }
 }
 
 }  // namespace
@@ -219,8 +231,14 @@ std::string FirstUnreadSolverOption(bool before_steps) {
 PetscErrorCode CheckSolverOptionsRead(MPI_Comm comm, const std::vector<DeclaredOption>& declared_options,
                                       bool allow_unknown) {
   PetscFunctionBeginUser;
-  const std::string unknown = FirstUnreadSolverOption(true);
-  const std::string nearest = unknown.empty() ? "" : options::nearest_name(unknown, Names(declared_options));
+  const std::vector<std::string> declared = Names(declared_options);
+  // Under the prefix of a solver this scene has: a typo. Under one it has not (-heat_*
+  // with -heat off, -modes_* without -modes): an options file written for other scenes.
+  std::string unknown, absent;
+  UnreadSolverOptions(declared, true, &unknown, &absent);
+  if (!absent.empty())  // rank 0's list is the one printed
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: %s ignored: no solver of this scene reads them\n", absent.c_str()));
+  const std::string nearest = unknown.empty() ? "" : options::nearest_name(unknown, declared);
   PetscCall(RefuseUnknown(comm, unknown, nearest,
                           "was read by none of the PETSc solvers of this run (misspelt, or for a solver this scene does "
                           "not use)",
@@ -228,9 +246,10 @@ PetscErrorCode CheckSolverOptionsRead(MPI_Comm comm, const std::vector<DeclaredO
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WarnUnreadSolverOptions(MPI_Comm comm) {
+PetscErrorCode WarnUnreadSolverOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared) {
   PetscFunctionBeginUser;
-  std::string unread = FirstUnreadSolverOption(false);
+  std::string unread, absent;  // the absent ones were noted before the steps
+  UnreadSolverOptions(Names(declared), false, &unread, &absent);
   // Rank 0 speaks for all.
   int found = unread.empty() ? 0 : 1;
   PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));

@@ -64,6 +64,12 @@ with tempfile.TemporaryDirectory() as tmp:
               "%s: exit %d, stderr %r" % (" ".join(extra), r.returncode, r.stderr[-300:]))
         check(not os.path.exists(out), "%s: wrote %s" % (" ".join(extra), out))
 
+    # Options for a solver this scene does not have (no heat): noted as ignored, the run goes on.
+    r = run(paper + small + ["-heat", "off", "-heat_free_ts_adapt_type", "basic", "-final_time", "2e-6",
+                             "-output_dir", os.path.join(tmp, "no_heat")], tmp)
+    check(r.returncode == 0 and "-heat_free_ts_adapt_type" in r.stdout and "ignored" in r.stdout,
+          "a heat option without heat: exit %d, %r" % (r.returncode, (r.stdout + r.stderr)[-300:]))
+
     # The README's mesh-file example, with paper.opts (written for a generated specimen).
     r = run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-final_time", "1e-6",
                      "-output_dir", os.path.join(tmp, "mesh_file")], tmp)

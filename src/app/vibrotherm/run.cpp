@@ -249,7 +249,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
   summary.complete = simulation.interrupted_by() == 0;
-  if (summary.complete) PetscCall(WarnUnreadSolverOptions(comm));
+  if (summary.complete) PetscCall(WarnUnreadSolverOptions(comm, declared));
   PetscCall(io::RunLogPublish());  // summary.json, the run's record, comes last
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
