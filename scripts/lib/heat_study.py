@@ -1,9 +1,14 @@
 """The temperature part of scripts/convergence: the crack-centre rise of the full
-paper scene (1 ms of waves, diffusion to 1 s) against
+paper scene (1 ms of waves, diffusion to 1 s) at the output times, and its
+saw-tooth at every wave step of the source periods before 0.1 and 0.2 ms (a run
+to 0.2 ms with -crack_state_every 1 -probe_every 1; crack_sawtooth.py), against
 
   * the continuum: the line-source convolution of the friction power each run
     exchanged (crack_heat.h5, scripts/lib/line_source.py) with the images that
     hold the specimen's edges at T0 — an independent reference for every run;
+  * for the saw-tooth, the continuum of the friction energy at every wave step
+    (crack_state.csv): the worst sample and the mean of each period, relative
+    to the period's mean rise;
   * heat-mesh refinement with the wave side fixed (first layer, length along the
     crack and far size × 2, √2, 1, 1/√2) and heat steps per coupling interval;
   * wave-mesh refinement with the heat side at its default (the friction power
@@ -17,9 +22,11 @@ import sys
 
 import numpy as np
 
+import crack_sawtooth
 import line_source
 
 TIMES = [1e-4, 2e-4, 5e-4, 1e-3, 1e-2, 1.0]
+PERIOD_ENDS, PERIOD = (1e-4, 2e-4), 1e-5  # the saw-tooth's periods (paper scene: 100 kHz)
 
 
 def paper_heat_sizes(paper_option):
@@ -50,12 +57,15 @@ def settings(paper_option):
     return out
 
 
-def run_one(root, build_dir, ranks, out, extra, env, reuse):
+def run_one(root, build_dir, ranks, out, extra, env, reuse, sawtooth=False):
+    """The full scene (output times), or (sawtooth) 0.2 ms recorded at every wave step."""
     summary_path = os.path.join(out, "summary.json")
     if not (reuse and os.path.exists(summary_path)):
+        record = (["-final_time", "%.6g" % (max(PERIOD_ENDS) * 1.00005), "-output_times", "%g" % max(PERIOD_ENDS),
+                   "-crack_state_every", "1", "-probe_every", "1"] if sawtooth else
+                  ["-output_times", ",".join(map(str, TIMES)), "-crack_state_every", "0"])
         command = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm"), "-options_file",
-                   os.path.join(root, "options", "paper.opts"), "-output_times", ",".join(map(str, TIMES)),
-                   "-crack_state_every", "0", "-output_dir", out] + extra
+                   os.path.join(root, "options", "paper.opts"), "-output_dir", out] + record + extra
         result = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
         if result.returncode != 0:
             sys.exit("scripts/convergence: %s failed:\n%s" % (out, result.stderr[-3000:]))
@@ -80,10 +90,21 @@ def measure(out, summary, alpha, rho_c, width, height):
             "field_peak": peak.get("value", float("nan")) if isinstance(peak, dict) else float(peak)}
 
 
+def measure_sawtooth(out, alpha, rho_c):
+    """The crack centre's saw-tooth in the periods before 0.1 and 0.2 ms (crack_sawtooth.period_errors);
+    the run's crack_state.csv (hundreds of MB) is deleted once read."""
+    periods = crack_sawtooth.period_errors(out, 0.5, PERIOD_ENDS, PERIOD, alpha, rho_c)
+    if os.path.exists(os.path.join(out, "crack_state.csv")):
+        os.remove(os.path.join(out, "crack_state.csv"))
+    return periods
+
+
 def table(results, reference):
     """Markdown: errors vs the continuum (and vs the finest wave mesh for wave rows) at each time."""
     head = "| setting | heat dofs | heat steps | heat wall [s] | run wall [s] | " + " | ".join(
-        "%g ms" % (t * 1e3) for t in TIMES) + " |\n|" + "---|" * (5 + len(TIMES)) + "\n"
+        "%g ms" % (t * 1e3) for t in TIMES) + " | " + " | ".join(
+        "saw-tooth %g ms: worst, mean" % (t * 1e3) for t in PERIOD_ENDS) + " |\n|" + "---|" * (
+        5 + len(TIMES) + len(PERIOD_ENDS)) + "\n"
     lines = []
     for name, kind, value, m in results:
         errs = []
@@ -94,6 +115,8 @@ def table(results, reference):
                 errs.append("%+.2f %%" % (100 * (row["rise"] / ref_row["rise"] - 1)))
             else:
                 errs.append("%+.2f %%" % (100 * (row["rise"] / row["continuum"] - 1)))
+        for p in m.get("sawtooth", []):
+            errs.append("%.2f %%, %+.2f %%" % (100 * p["worst"], 100 * p["mean_error"]))
         lines.append("| %s | %d | %d | %.2f | %.1f | %s |" % (name, m["dofs_heat"], m["steps_heat"], m["heat_wall"],
                                                              m["wall"], " | ".join(errs)))
     return head + "\n".join(lines) + "\n"

@@ -50,7 +50,7 @@ const ContactParameterList& mmd_law_parameters() {
   static const ContactParameterList list = {
       real_parameter("-material_nu", &P::nu, "0.33", Range::open(-1.0, 0.5), "",
                      "mmd crack law: the material's Poisson ratio, for Mindlin's theta = (2 - nu)/(2 (1 - nu))"),
-      real_parameter("-crack_mmd_tol", &P::mmd_rel_tol, "1e-9", Range::open(0.0, 1e-2), "",
+      real_parameter("-crack_mmd_tol", &P::mmd_rel_tol, "1e-12", Range::open(0.0, 1e-2), "",
                      "mmd crack law: shortest kept memory-diagram segment, relative to a"),
       integer_parameter("-crack_mmd_max_breakpoints", &P::mmd_max_breakpoints, "1024", Range::between(3, 1e7),
                         "mmd crack law: hard bound on the memory-diagram breakpoints per cell"),

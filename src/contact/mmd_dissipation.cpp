@@ -4,9 +4,14 @@
 // moment τ(α) the edge reaches it to e(α) = min(1, the moment a(t) falls below α).
 // Its friction force is μ (a(t) − α) dN'(α) and its full relative slip rate 2r, so
 //   ΔW = 2μ Σ_edges r ∫ P(α) dN'(α),   P(α) = ∫_τ^e (a(t) − α) dt.
-// On each piece where the old diagram, τ and e are linear in α, P is a quadratic,
-// and ∫ P dN' = [P N' − P' N + P'' M] (integration by parts twice): exact with
-// the law values N, N', M only. The spring at α = 0 carries the atom N'(0+).
+// On each piece where the old diagram, τ and e are affine in α, P is a quadratic,
+// and ∫ P dN' = P(x) m0 + P'(x) m1 + P''(x) m2 / 2 with the law's moments
+// m_k = ∫_x^y (α − x)^k dN' of the piece [x, y]. Every term is bounded by
+// max P · m0 (P >= 0 on the piece), so nothing cancels: a step dissipates what
+// its springs' slips dissipate, to rounding of that amount, however small the
+// step (the antiderivative form [P N' − P' N + P'' M] this replaces subtracted
+// terms of size M/Δa and dissipated 1e-9 J/m² from rounding, issue 23).
+// The spring at α = 0 carries the atom N'(0+) and is counted once, on its own.
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -28,22 +33,22 @@ struct PathStep {
   double r_lo, r_up;  ///< inward speeds of the lower and upper edge (> 0: pushing)
 };
 
-/// P, P', P'' at α, for edge arrival time τ and end time e (both affine).
-struct PValues {
+/// P on one piece, as its value and derivatives at the piece's left end x.
+struct Quadratic {
   double P, dP, ddP;
 };
-PValues p_values(const PathStep& st, double alpha, const Affine& tau, const Affine& e) {
-  const double t = tau(alpha), E = e(alpha), c = st.a1 - alpha;
-  return {c * (E - t) + 0.5 * st.da * (E * E - t * t),
-          -(E - t) + c * (e.d - tau.d) + st.da * (E * e.d - t * tau.d),
-          -2.0 * (e.d - tau.d) + st.da * (e.d * e.d - tau.d * tau.d)};
+Quadratic p_at(const PathStep& st, double x, const Affine& tau, const Affine& e) {
+  const double t = tau(x), E = e(x);
+  const double gap = st.a1 - x + 0.5 * st.da * (E + t);  // mean of a(t) − x over [t, E]
+  const double dgap = -1.0 + 0.5 * st.da * (e.d + tau.d);
+  return {(E - t) * gap, (e.d - tau.d) * gap + (E - t) * dgap, 2.0 * (e.d - tau.d) * dgap};
 }
 
-/// ∫_x^y P dN' by parts: [P N' − P' N + P'' M].
-double integrate(const PathStep& st, const Affine& tau, const Affine& e, double x, const NormalLawValue& lx,
-                 double y, const NormalLawValue& ly) {
-  const PValues px = p_values(st, x, tau, e), py = p_values(st, y, tau, e);
-  return (py.P * ly.dN - py.dP * ly.N + py.ddP * ly.M) - (px.P * lx.dN - px.dP * lx.N + px.ddP * lx.M);
+/// ∫_x^y P dN' for a quadratic P given at x.
+double integrate(const NormalLaw& law, const Quadratic& p, double x, const NormalLawValue& lx, double y,
+                 const NormalLawValue& ly) {
+  const DensityMoments m = law.density_moments(x, lx, y, ly);
+  return p.P * m.m0 + p.dP * m.m1 + 0.5 * p.ddP * m.m2;
 }
 
 /// Contribution of the springs on [l, r] of one old segment (diagram g affine there).
@@ -60,8 +65,10 @@ double segment_work(const PathStep& st, const NormalLaw& law, const Affine& g, d
   // Detachment time (a(t) = α), for springs above a2 when a decreases.
   const Affine detach = st.da < 0.0 ? Affine{l, (st.a1 - l) / -st.da, 1.0 / st.da} : one;
 
-  // Cut [l, r] where the end-time branch or the pushing edge changes or τ crosses e.
-  double cuts[8];
+  // Cut [l, r] where the end-time branch or the pushing edge changes, τ crosses e, or τ
+  // crosses 0 (a point of the diagram outside the wedge by rounding: it rides the edge from t = 0).
+  const Affine zero{l, 0.0, 0.0};
+  double cuts[12];
   int nc = 0;
   cuts[nc++] = l;
   cuts[nc++] = r;
@@ -73,9 +80,10 @@ double segment_work(const PathStep& st, const NormalLaw& law, const Affine& g, d
   if (lo_on && up_on) add_root(tau_lo, tau_up);
   for (const Affine* tau : {&tau_lo, &tau_up}) {
     add_root(*tau, one);
+    add_root(*tau, zero);
     if (st.da < 0.0) add_root(*tau, detach);
   }
-  for (int i = 1; i < nc; ++i)  // insertion sort: at most 8 cuts
+  for (int i = 1; i < nc; ++i)  // insertion sort: at most 12 cuts
     for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) std::swap(cuts[k], cuts[k - 1]);
 
   double work = 0.0;
@@ -85,12 +93,12 @@ double segment_work(const PathStep& st, const NormalLaw& law, const Affine& g, d
     const double c = 0.5 * (x + y);
     const Affine& e = (st.da < 0.0 && c > a2) ? detach : one;
     const bool use_lo = tau_lo(c) <= tau_up(c);
-    const Affine& tau = use_lo ? tau_lo : tau_up;
+    const Affine& tau = (use_lo ? tau_lo : tau_up)(c) < 0.0 ? zero : (use_lo ? tau_lo : tau_up);
     if (!(tau(c) < e(c))) continue;  // the edge never reaches these springs
     const NormalLawValue lx = x == l ? law_l : law.eval(x);
     const NormalLawValue ly = y == r ? law_r : law.eval(y);
-    // Each spring's work is >= 0; clamp the rounding of the by-parts difference.
-    work += (use_lo ? st.r_lo : st.r_up) * std::max(0.0, integrate(st, tau, e, x, lx, y, ly));
+    // Each spring's work is >= 0; clamp the rounding of the sum.
+    work += (use_lo ? st.r_lo : st.r_up) * std::max(0.0, integrate(law, p_at(st, x, tau, e), x, lx, y, ly));
   }
   return work;
 }
@@ -108,14 +116,10 @@ double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& l
   double work = 0.0;
 
   // Springs born during the step (a grows) sit on the pushing edge from birth:
-  // P(α) = (a2 − α)² / (2Δa).
+  // P(α) = (a2 − α)² / (2Δa), i.e. Δa/2, −1, 1/Δa at a1.
   if (da > 0.0) {
     const double r = st.r_lo > 0.0 ? st.r_lo : st.r_up;
-    const NormalLawValue& l2 = tail.apex;
-    const NormalLawValue& l1 = pts[n - 1].law;
-    // At a2: P = P' = 0, so only P''M remains there.
-    const double P1 = 0.5 * da, dP1 = -1.0, ddP = 1.0 / da;
-    work += r * std::max(0.0, ddP * l2.M - (P1 * l1.dN - dP1 * l1.N + ddP * l1.M));
+    work += r * std::max(0.0, integrate(law, {0.5 * da, -1.0, 1.0 / da}, a1, pts[n - 1].law, a2, tail.apex));
   }
 
   // Springs already in contact, walking the old diagram down from a1 to q_final
@@ -140,7 +144,7 @@ double path_dissipation(const Breakpoint* pts, std::size_t n, const NormalLaw& l
     const double t0 = std::max(0.0, std::min(t_lo, t_up));
     if (t0 < 1.0) {
       const Affine tau{0.0, t0, 0.0};
-      work += (use_lo ? st.r_lo : st.r_up) * k0 * p_values(st, 0.0, tau, one).P;
+      work += (use_lo ? st.r_lo : st.r_up) * k0 * p_at(st, 0.0, tau, one).P;
     }
   }
   return 2.0 * cfg.mu * work;

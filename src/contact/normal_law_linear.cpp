@@ -12,6 +12,10 @@ class LinearLaw final : public NormalLaw {
     return {k_ * a, k_, 0.5 * k_ * a * a};
   }
   double stiffness_at_zero() const override { return k_; }
+  /// N'' = 0 for a > 0: the whole bed is the atom at α = 0.
+  DensityMoments density_moments(double, const NormalLawValue&, double, const NormalLawValue&) const override {
+    return {};
+  }
   std::string name() const override { return "linear"; }
 
  private:

@@ -28,6 +28,8 @@ class PowerLaw final : public NormalLaw {
     return {N, p_ * N / a, N * a / (p_ + 1.0)};
   }
   double stiffness_at_zero() const override { return p_ == 1.0 ? C_ : 0.0; }
+  DensityMoments density_moments(double x, const NormalLawValue& at_x, double y,
+                                 const NormalLawValue& at_y) const override;
   std::string name() const override { return name_; }
 
  private:
@@ -36,6 +38,26 @@ class PowerLaw final : public NormalLaw {
   std::string name_;
   Shape shape_;
 };
+
+/// On an interval short against x, N''(x + u) = N''(x) (1 + u/x)^(p−2) as a binomial series:
+/// m_k = N''(x) d^(k+1) Σ_j C(p−2, j) h^j / (k + 1 + j), h = d/x <= kShort. Twelve terms keep
+/// ~1e-19 of the sum there; the values at x give N'' = p(p−1)N/x² without a pow().
+DensityMoments PowerLaw::density_moments(double x, const NormalLawValue& at_x, double y,
+                                         const NormalLawValue& at_y) const {
+  constexpr double kShort = 1e-2;
+  constexpr int kTerms = 12;
+  const double d = y - x;
+  if (shape_ == Shape::Linear) return {};  // N'' = 0: all stiffness sits in the atom at 0
+  if (!(x > 0.0) || !(d < kShort * x)) return NormalLaw::density_moments(x, at_x, y, at_y);
+  const double h = d / x, ddN = p_ * (p_ - 1.0) * at_x.N / (x * x);
+  double sums[3] = {0.0, 0.0, 0.0}, coefficient = 1.0, power = 1.0;  // C(p−2, j), h^j
+  for (int j = 0; j < kTerms; ++j) {
+    for (int k = 0; k < 3; ++k) sums[k] += coefficient * power / (k + 1 + j);
+    coefficient *= (p_ - 2.0 - j) / (j + 1.0);
+    power *= h;
+  }
+  return {ddN * d * sums[0], ddN * d * d * sums[1], ddN * d * d * d * sums[2]};
+}
 
 }  // namespace
 

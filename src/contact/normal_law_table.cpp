@@ -36,6 +36,21 @@ class TableLaw final : public NormalLaw {
             p.M0 + x * (p.y0 + x * (0.5 * p.d0 + x * p.c / 3.0))};
   }
   double stiffness_at_zero() const override { return pieces_.front().d0; }
+  /// Exact: N'' = 2c is constant on each parabola, so each piece adds 2c ∫ (α − x)^k dα.
+  DensityMoments density_moments(double x, const NormalLawValue&, double y, const NormalLawValue&) const override {
+    DensityMoments m;
+    auto it = std::upper_bound(pieces_.begin(), pieces_.end(), x, [](double v, const Piece& p) { return v < p.x0; });
+    for (it = it == pieces_.begin() ? it : it - 1; it != pieces_.end() && it->x0 < y; ++it) {
+      const double lo = std::max(it->x0, x) - x;
+      const double hi = (it + 1 == pieces_.end() ? y : std::min((it + 1)->x0, y)) - x;
+      if (!(hi > lo)) continue;
+      const double w = 2.0 * it->c * (hi - lo);
+      m.m0 += w;
+      m.m1 += w * 0.5 * (hi + lo);
+      m.m2 += w * (hi * hi + hi * lo + lo * lo) / 3.0;
+    }
+    return m;
+  }
   std::string name() const override { return "table"; }
 
  private:

@@ -41,6 +41,8 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, PetscBool final_set, PetscBool 
              o->max_steps);
   PetscCheck(o->heat_substeps >= 1, comm, PETSC_ERR_USER_INPUT, "-heat_substeps must be >= 1, got %" PetscInt_FMT,
              o->heat_substeps);
+  PetscCheck(o->near_field_steps >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-heat_near_field_steps must be >= 1, got %" PetscInt_FMT, o->near_field_steps);
   PetscCheck(o->energy_every >= 1, comm, PETSC_ERR_USER_INPUT, "-energy_every must be >= 1");
   PetscCheck(o->probe_every >= 1, comm, PETSC_ERR_USER_INPUT, "-probe_every must be >= 1");
   PetscCheck(o->quiet_fraction >= 0.0 && o->quiet_fraction < 1.0, comm, PETSC_ERR_USER_INPUT,
@@ -75,6 +77,15 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
                              o->couple_dt, &o->couple_dt, &couple_set));
   PetscCall(PetscOptionsInt("-heat_substeps", "Heat steps per coupling interval, each with the friction energy dissipated within it", nullptr,
                             o->heat_substeps, &o->heat_substeps, nullptr));
+  PetscBool near_field = o->near_field ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscOptionsBool("-heat_near_field",
+                             "Probes within reach of a crack add the friction heat of the last heat steps at wave-step "
+                             "resolution, exactly (the heat mesh smooths the pulses)", nullptr, near_field, &near_field,
+                             nullptr));
+  o->near_field = near_field;
+  PetscCall(PetscOptionsInt("-heat_near_field_steps",
+                            "Heat steps whose friction heat the crack probes take exactly (-heat_near_field)", nullptr,
+                            o->near_field_steps, &o->near_field_steps, nullptr));
   PetscCall(PetscOptionsReal("-max_steps",
                              "Largest number of wave steps a run may take (refused at setup with the estimate)", nullptr,
                              o->max_steps, &o->max_steps, nullptr));

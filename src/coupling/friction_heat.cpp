@@ -197,6 +197,16 @@ PetscErrorCode FrictionHeat::Setup(const interface::CrackInterface& crack, const
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FrictionHeat::AddRates(const std::vector<double>& rates, Vec Q) {
+  PetscFunctionBeginUser;
+  PetscScalar* q;
+  PetscCall(VecGetArray(rate_, &q));
+  std::copy(rates.begin(), rates.end(), q);
+  PetscCall(VecRestoreArray(rate_, &q));
+  PetscCall(MatMultAdd(transfer_, rate_, Q, Q));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FrictionHeat::AddLoad(const std::vector<double>& W, double interval, Vec Q) {
   PetscFunctionBeginUser;
   PetscCheck(W.size() == previous_.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%zu energies for %zu contact cells",
@@ -210,6 +220,21 @@ PetscErrorCode FrictionHeat::AddLoad(const std::vector<double>& W, double interv
   }
   PetscCall(VecRestoreArray(rate_, &q));
   PetscCall(MatMultAdd(transfer_, rate_, Q, Q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::CellResponse(Vec w, std::vector<double>* per_cell) const {
+  PetscFunctionBeginUser;
+  Vec r;
+  PetscCall(VecDuplicate(rate_, &r));
+  PetscCall(MatMultTranspose(transfer_, w, r));
+  const PetscScalar* x;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(r, &n));
+  PetscCall(VecGetArrayRead(r, &x));
+  per_cell->assign(x, x + n);
+  PetscCall(VecRestoreArrayRead(r, &x));
+  PetscCall(VecDestroy(&r));
   PetscFunctionReturn(0);
 }
 

@@ -275,6 +275,12 @@ PetscErrorCode HeatCamera::Finish(io::RunSummary* summary) {
   c.peak_time = start(c.peak_frame) + 0.5 * options_.integration;
   c.peak_snr = options_.netd > 0.0 ? best[0] / options_.netd : std::numeric_limits<double>::infinity();
   c.detectable = c.peak_snr >= options_.detect_snr;
+  double first = -1.0;  // the first frame the camera would see the crack in
+  for (std::size_t k = 0; k < peak_clean_.size() && first < 0.0; ++k)
+    if (options_.netd > 0.0 && peak_clean_[k] / options_.netd >= options_.detect_snr)
+      first = start(static_cast<PetscInt>(k)) + options_.integration;
+  PetscCallMPI(MPI_Bcast(&first, 1, MPI_DOUBLE, 0, comm_));
+  c.detection_time = first;
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,7 @@
 #include "vibrotherm/coupling/heat_component.hpp"
 
+#include <algorithm>
+
 #include "vibrotherm/coupling/thermal_stress.hpp"
 #include "vibrotherm/coupling/thermoelastic_source.hpp"
 #include "vibrotherm/coupling/thermoelastic_transfer.hpp"
@@ -27,6 +29,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
     PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), ncracks));
+    friction_ = friction.get();
     sources_.push_back(std::move(friction));
   }
   if (waves && scene.run.thermoelastic != ThermoelasticChoice::Off) {
@@ -45,6 +48,10 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   std::vector<double> probes = scene.run.probe_points;
   probes.insert(probes.end(), crack_probe_xy_.begin(), crack_probe_xy_.end());
   PetscCall(solver_.SetProbePoints(probes));
+  PetscCall(probe_temperatures_.Setup(&solver_));
+  if (friction_ && scene.run.near_field)
+    PetscCall(probe_temperatures_.SetupNearField(friction_->crack(), friction_->transfer(), probes,
+                                                 scene.run.near_field_steps, scene.couple_dt / scene.run.heat_substeps));
   PetscCall(stage.End(&summary->stages["heat_setup"]));
   PetscFunctionReturn(0);
 }
@@ -69,7 +76,7 @@ PetscErrorCode HeatComponent::SetupThermoelastic(const Scene& scene, WaveCompone
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatComponent::StepTo(double t) {
+PetscErrorCode HeatComponent::StepTo(double t, bool sample_probes) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   if (!sources_.empty()) {
@@ -81,8 +88,16 @@ PetscErrorCode HeatComponent::StepTo(double t) {
     PetscCall(solver_.SetSourceLoad(load_));
   }
   PetscCall(solver_.AdvanceInSteps(t, 1));
+  if (sample_probes) PetscCall(SampleProbes());
   if (thermal_stress_) PetscCall(thermal_stress_->Update(solver_.rise(), t));
   seconds_ += MPI_Wtime() - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::SampleProbes() {
+  PetscFunctionBeginUser;
+  if (friction_ && friction_->replaying()) probe_temperatures_.SampleFriction(solver_.time(), friction_->Dissipated(solver_.time()));
+  PetscCall(probe_temperatures_.AfterHeatStep());
   PetscFunctionReturn(0);
 }
 
@@ -90,9 +105,11 @@ PetscErrorCode HeatComponent::StopSources(const std::string& dir) {
   PetscFunctionBeginUser;
   if (thermal_stress_) PetscCall(thermal_stress_->Detach());
   thermal_stress_.reset();
+  probe_temperatures_.StopNearField();
   if (sources_.empty()) PetscFunctionReturn(0);
   for (auto& source : sources_) PetscCall(source->Finish(dir));
   sources_.clear();
+  friction_ = nullptr;
   PetscCall(VecSet(load_, 0.0));  // nothing heats any more
   PetscCall(solver_.SetSourceLoad(load_));
   PetscFunctionReturn(0);
@@ -131,6 +148,7 @@ PetscErrorCode HeatComponent::Save(io::Checkpoint& checkpoint, const mesh::Speci
   PetscCall(solver_.Save(checkpoint, specimen.heat_origin));
   if (thermal_stress_) PetscCall(thermal_stress_->Save(checkpoint, specimen));
   for (const auto& source : sources_) PetscCall(source->Save(checkpoint, specimen));
+  PetscCall(probe_temperatures_.Save(checkpoint, friction_ ? friction_->CellKeys(specimen) : std::vector<long long>{}));
   PetscFunctionReturn(0);
 }
 
@@ -142,6 +160,54 @@ PetscErrorCode HeatComponent::Restore(const io::Checkpoint& checkpoint, const me
     PetscCall(source->Restore(checkpoint, specimen));
     if (solver_.steps() > 0) deposited_by_source_[source->name()] = source->deposited();
   }
+  PetscCall(probe_temperatures_.Restore(checkpoint, friction_ ? friction_->CellKeys(specimen) : std::vector<long long>{}));
+  PetscFunctionReturn(0);
+}
+
+bool HeatComponent::replayable() const {
+  return !thermal_stress_ &&
+         std::all_of(sources_.begin(), sources_.end(), [](const auto& source) { return source->replayable(); });
+}
+
+PetscErrorCode HeatComponent::StartRecording(double t) {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->StartRecording(t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StopRecording() {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->StopRecording());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::Replay(ReplayMode mode) {
+  PetscFunctionBeginUser;
+  for (auto& source : sources_) PetscCall(source->Replay(mode));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::StepAveraged(double t) {
+  PetscFunctionBeginUser;
+  const double t0 = MPI_Wtime();
+  PetscCall(VecSet(load_, 0.0));
+  for (auto& source : sources_) PetscCall(source->AddAverageLoad(load_));
+  PetscCall(solver_.SetSourceLoad(load_));
+  PetscCall(solver_.AdvanceInSteps(t, 1));
+  seconds_ += MPI_Wtime() - t0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::SolverSnapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Save(*snapshot, specimen.heat_origin));
+  snapshot->IndexLocal();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::RestoreSolver(const io::Checkpoint& snapshot, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  PetscCall(solver_.Restore(snapshot, specimen.heat_origin));
   PetscFunctionReturn(0);
 }
 

@@ -115,26 +115,31 @@ PetscErrorCode Recorder::OnWaveStep(const wave::WaveSolver& w, bool energy_rows)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Recorder::RecordTemperature(const heat::HeatSolver& heat, bool waves_running) {
+PetscErrorCode Recorder::RecordTemperature(HeatComponent& heat, bool waves_running) {
   PetscFunctionBeginUser;
-  bracket_.t0 = bracket_.t1;
-  bracket_.T0 = bracket_.T1;
-  bracket_.t1 = heat.time();
-  PetscCall(heat.ProbeTemperatures(&bracket_.T1));
-  if (bracket_.T0.empty()) bracket_.T0 = bracket_.T1;
-  const double T0 = heat.material().T0;
-  for (std::size_t p = 0; p < bracket_.T1.size(); ++p) {
-    double& peak = summary_->probe_max_temperature_rise[static_cast<int>(p)];
-    peak = std::max(peak, bracket_.T1[p] - T0);
-  }
+  io::TemperatureSeries series;
+  PetscCall(heat.ProbeSeries(&series));
+  PetscCall(RecordTemperature(series, heat.solver().material().T0, waves_running));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Recorder::RecordTemperature(const io::TemperatureSeries& series, double T0, bool waves_running) {
+  PetscFunctionBeginUser;
+  if (series.t.empty()) PetscFunctionReturn(0);
+  last_T_ = series.T.back();
+  for (const std::vector<double>& T : series.T)
+    for (std::size_t p = 0; p < T.size(); ++p) {
+      double& peak = summary_->probe_max_temperature_rise[static_cast<int>(p)];
+      peak = std::max(peak, T[p] - T0);
+    }
   if (waves_running) {
-    probes_.Flush(&bracket_);
+    probes_.Flush(&series);
   } else {
     const std::size_t n = probes_.count();
-    for (std::size_t p = 0; p < bracket_.T1.size(); ++p) {
+    for (std::size_t p = 0; p < last_T_.size(); ++p) {
       const double x = p < n ? probes_.points()[p][0] : crack_probe_xy_[2 * (p - n)];
       const double y = p < n ? probes_.points()[p][1] : crack_probe_xy_[2 * (p - n) + 1];
-      probes_.WriteTemperature(heat.time(), p, x, y, bracket_.T1[p]);
+      probes_.WriteTemperature(series.t.back(), p, x, y, last_T_[p]);
     }
   }
   PetscFunctionReturn(0);
@@ -187,8 +192,7 @@ PetscErrorCode Recorder::WriteFields(double t, WaveComponent* waves, const HeatC
     PetscCall(fields_.WriteField("heat", "temperature_rise", "K", T, k, t));
     PetscCall(VecDestroy(&T));
     std::map<int, double> rises;
-    for (std::size_t p = 0; p < bracket_.T1.size(); ++p)
-      rises[static_cast<int>(p)] = bracket_.T1[p] - heat->material().T0;
+    for (std::size_t p = 0; p < last_T_.size(); ++p) rises[static_cast<int>(p)] = last_T_[p] - heat->material().T0;
     if (!replaying_) summary_->output_temperature_rise.push_back({t, rises});
   }
   if (w) {

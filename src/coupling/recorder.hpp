@@ -46,9 +46,12 @@ class Recorder {
   PetscErrorCode OnWaveStep(const wave::WaveSolver& w, bool energy_rows);
   /// Appends an energy row: the wave columns of `wave_row`, the heat columns of heat (if any).
   PetscErrorCode RecordEnergy(io::EnergyRow row, const HeatComponent* heat);
-  /// Temperatures at every probe at the heat solver's time (collective); writes
-  /// the held wave rows with temperatures interpolated from the last call.
-  PetscErrorCode RecordTemperature(const heat::HeatSolver& heat, bool waves_running);
+  /// The probes' temperatures since the last call (HeatComponent::ProbeSeries: at every
+  /// held row while the waves run, else one sample at the heat's time): writes the
+  /// held wave rows with them, or temperature rows; keeps the probes' peaks.
+  PetscErrorCode RecordTemperature(const io::TemperatureSeries& series, double T0, bool waves_running);
+  /// The same, with the series the heat holds since the last call.
+  PetscErrorCode RecordTemperature(HeatComponent& heat, bool waves_running);
   /// The heat field's views: its peak (always) and the IR camera (null: none), which writes into dir. Collective.
   /// resume: the camera's file is reopened by Restore, not created.
   PetscErrorCode OpenHeatViews(const heat::HeatSolver& heat, HeatCamera* camera, const std::string& dir,
@@ -90,7 +93,7 @@ class Recorder {
   interface::CrackInterface* crack_ = nullptr;
   std::vector<PetscInt> crack_probe_cells_;  ///< owned cell per crack probe (-1 elsewhere)
   std::vector<double> crack_probe_xy_;
-  io::TemperatureBracket bracket_;  ///< probe temperatures at the last two heat times
+  std::vector<double> last_T_;  ///< the probes' temperatures at the last time recorded
   io::EnergyRow waves_at_stop_;
   bool replaying_ = false;
   std::string dir_;

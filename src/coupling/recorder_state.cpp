@@ -1,6 +1,6 @@
 // The recorder in checkpoints: how long each output file was, what the summary
 // has gathered so far (probe peaks, rises at output times, the field peak),
-// the probe temperature bracket and the field outputs written.
+// the probes' last temperatures and the field outputs written.
 #include "recorder.hpp"
 
 #include "vibrotherm/util/errors.hpp"
@@ -30,10 +30,7 @@ PetscErrorCode Recorder::Save(io::Checkpoint& checkpoint) const {
   checkpoint.PutShared("recorder/bytes", {static_cast<double>(probes), static_cast<double>(energy),
                                           static_cast<double>(crack), static_cast<double>(outputs_written_)});
   checkpoint.PutShared("recorder/energy_maxima", energy_.maxima());
-  std::vector<double> bracket = {bracket_.t0, bracket_.t1, static_cast<double>(bracket_.T1.size())};
-  bracket.insert(bracket.end(), bracket_.T0.begin(), bracket_.T0.end());
-  bracket.insert(bracket.end(), bracket_.T1.begin(), bracket_.T1.end());
-  checkpoint.PutShared("recorder/bracket", bracket);
+  checkpoint.PutShared("recorder/last_temperatures", last_T_);
   checkpoint.PutShared("recorder/written_times", written_times_);
   checkpoint.PutShared("recorder/next_output", {static_cast<double>(next_output_)});
   checkpoint.PutShared("recorder/probe_peaks", Flatten(summary_->probe_max_temperature_rise));
@@ -55,11 +52,7 @@ PetscErrorCode Recorder::Restore(const io::Checkpoint& checkpoint, WaveComponent
   std::vector<double> v;
   PetscCall(checkpoint.GetShared("recorder/energy_maxima", &v, 2));
   energy_.set_maxima(v);
-  PetscCall(checkpoint.GetShared("recorder/bracket", &v));
-  const std::size_t n = static_cast<std::size_t>(v.at(2));
-  bracket_.t0 = v[0], bracket_.t1 = v[1];
-  bracket_.T0.assign(v.begin() + 3, v.begin() + 3 + n);
-  bracket_.T1.assign(v.begin() + 3 + n, v.begin() + 3 + 2 * n);
+  PetscCall(checkpoint.GetShared("recorder/last_temperatures", &last_T_));
   PetscCall(checkpoint.GetShared("recorder/probe_peaks", &v));
   summary_->probe_max_temperature_rise = Unflatten(v.data(), v.size());
   PetscCall(checkpoint.GetShared("recorder/output_rises", &v));

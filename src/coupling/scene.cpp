@@ -55,6 +55,26 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
   PetscFunctionReturn(0);
 }
 
+/// A periodic continuation compares and replays whole source periods: the wave step must divide
+/// the heat step, which must divide the period. Off (said once) when the coupling cannot.
+PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
+  PetscFunctionBeginUser;
+  const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
+  if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
+  if (!s->periodic.on) PetscFunctionReturn(0);
+  const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
+  const double per_period = period / heat_dt;
+  if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || s->wave.dt > 0.0) {
+    s->periodic.on = false;
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: %s\n",
+                          s->wave.dt > 0.0 ? "-wave_dt fixes the wave step (it must divide the heat step)"
+                                           : "-couple_dt / -heat_substeps does not divide the source period"));
+    PetscFunctionReturn(0);
+  }
+  s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
@@ -62,14 +82,18 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
+  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));
   PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat));
   PetscCall(ReadCameraOptions(comm, &s->camera));
+  PetscCall(ReadPeriodicOptions(comm, &s->periodic));
   PetscCall(CheckScene(comm, *s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
+  PetscCall(QuantizeForPeriodicity(comm, s));
   // Output times after the end would never be written: say so, and drop them.
   std::vector<double> kept;
   for (double t : s->run.output_times) {

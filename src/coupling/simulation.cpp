@@ -5,6 +5,7 @@
 
 #include "recorder.hpp"
 #include "vibrotherm/coupling/heat_camera.hpp"
+#include "vibrotherm/coupling/periodic_continuation.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -71,8 +72,12 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (heat_ && !control.restart) {  // t = 0
-    PetscCall(recorder.RecordTemperature(heat_->solver(), waves_ != nullptr));
+    PetscCall(recorder.RecordTemperature(*heat_, waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
+  }
+  if (waves_) {
+    periodic_ = std::make_unique<PeriodicContinuation>();
+    PetscCall(periodic_->Setup(*scene_, *specimen_, waves_.get(), heat_.get(), dir, summary, control.restart));
   }
   if (control.restart) PetscCall(Resume(*control.restart, recorder));
   if (waves_) PetscCall(RunCoupled(recorder, summary));
@@ -80,8 +85,10 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
     PetscCall(RunHeatAlone(recorder, summary));
   if (interrupted_by_) {  // the files stay as the checkpoint describes them
     recorder.Keep();
+    if (periodic_) periodic_->Keep();
     PetscFunctionReturn(0);
   }
+  if (periodic_) PetscCall(periodic_->Finish(summary));
   if (heat_) {
     PetscCall(heat_->StopSources(dir));
     PetscCall(heat_->Summarise(summary));
@@ -113,7 +120,10 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
                           heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
   const bool energy_each_step = !heat_;  // with heat, energy rows at intervals (all columns at one time)
-  solver.on_step = [&recorder, energy_each_step](const wave::WaveSolver& w) {
+  const PetscInt probe_every = scene_->run.probe_every;
+  solver.on_step = [this, &recorder, energy_each_step, probe_every](const wave::WaveSolver& w) {
+    // The heat side samples the friction at every wave step, the probes' temperatures at their rows.
+    if (heat_) heat_->AfterWaveStep(w.time(), w.steps() % probe_every == 0);
     return recorder.OnWaveStep(w, energy_each_step);
   };
   recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
@@ -125,10 +135,27 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     PetscCall(recorder.RecordEnergy(row, heat_.get()));
     if (recorder.OutputDue(0.0)) PetscCall(recorder.WriteFields(0.0, waves_.get(), heat_.get()));
   }
+  periodic_->between_steps = [this, &recorder](bool* stop) {
+    PetscFunctionBeginUser;
+    PetscCall(CheckpointIfDue(recorder, false));
+    *stop = interrupted_by_ != 0;
+    PetscFunctionReturn(0);
+  };
   bool quiet = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
   if (quiet) heat_alone_from_ = solver.time();
+  if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
+    bool continued;
+    PetscCall(periodic_->FinishInterrupted(recorder, &continued));
+    PetscCall(waves_->Energy(&row));
+  }
   while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
     PetscCall(Interval(recorder, heat_dt, &row));
+    bool continued;
+    PetscCall(periodic_->AfterInterval(recorder, row, &continued));
+    if (continued) {  // the waves jumped ahead: their energies now, the progress line on from here
+      PetscCall(waves_->Energy(&row));
+      recorder.progress().Start(comm, "wave", solver.time(), expected_end, solver.dt(), false);
+    }
     PetscCall(WavesQuiet(row, &quiet));
     PetscCall(CheckpointIfDue(recorder, quiet));
   }
@@ -149,8 +176,13 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
   wave::WaveSolver& solver = waves_->solver();
   const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
   for (PetscInt k = 0; k < heat_steps && solver.time() < scene_->final_time * (1 - 1e-12); ++k) {
-    // Counted again each time: the contact may have shrunk the wave step.
-    PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
+    // Counted again each time: the contact may have shrunk the wave step. Quantized steps (a periodic
+    // source) land on the heat step's end, where a periodic state is compared and recorded.
+    if (scene_->wave.step_quantum > 0.0)
+      PetscCall(waves_->solver().AdvanceTo(
+          std::min(scene_->final_time, (std::round(solver.time() / heat_dt) + 1.0) * heat_dt)));
+    else
+      PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
     if (!heat_) continue;
     PetscCall(PetscLogStagePush(heat_stage_));
     PetscCall(heat_->StepTo(solver.time()));
@@ -159,7 +191,7 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
   if (heat_) {
-    PetscCall(recorder.RecordTemperature(heat_->solver(), true));
+    PetscCall(recorder.RecordTemperature(*heat_, true));
     PetscCall(recorder.RecordEnergy(*row, heat_.get()));
   } else {
     recorder.FlushProbes();
@@ -174,9 +206,17 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   if (scene_->run.quiet_fraction <= 0.0) PetscFunctionReturn(0);
   // The mechanical energy left bounds the heat still to come: once it is a small
   // fraction of what has been dissipated, stopping the waves loses at most that fraction.
-  const double left = e.kinetic + e.strain + e.interface_stored;
+  // Of it, friction takes at most its share of the losses over the last period (material
+  // damping and radiation heat no crack; friction's share only falls as the waves decay).
   const double t = e.t;
-  recent_.push_back({t, left});
+  double left = e.kinetic + e.strain + e.interface_stored;
+  if (heat_ && !recent_.empty()) {  // the waves stop for the heat's sake: only friction heats
+    const Sample& first = recent_.front();
+    const double friction = e.dissipated - first.dissipated;
+    const double losses = friction + (e.damped - first.damped) + (e.radiated - first.radiated);
+    if (losses > 0.0) left *= std::max(0.0, friction) / losses;
+  }
+  recent_.push_back({t, left, e.dissipated, e.damped, e.radiated});
   peak_mechanical_ = std::max(peak_mechanical_, left);
   // Over a whole source period: kinetic and strain energy trade places within a cycle.
   const double period = 1.0 / scene_->excitation.signal.frequency;
@@ -225,15 +265,15 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
   if (recorder.OutputDue(t_begin)) PetscCall(recorder.WriteFields(t_begin, nullptr, heat_.get()));
-  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver& h) {
+  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver&) {
     PetscFunctionBeginUser;
     bool due;  // no checkpoints here: a signal stops the run, a restart repeats this phase
     PetscCall(schedule_.Poll(&due, &interrupted_by_));
     if (interrupted_by_) heat.RequestStop();
-    PetscCall(recorder.RecordTemperature(h, false));
-    PetscCall(recorder.OnHeatStep(h));
+    PetscCall(recorder.RecordTemperature(*heat_, false));
+    PetscCall(recorder.OnHeatStep(heat));
     PetscCall(recorder.RecordEnergy(recorder.waves_at_stop(), heat_.get()));
-    PetscCall(recorder.progress().Update(h.time(), h.steps()));
+    PetscCall(recorder.progress().Update(heat.time(), heat.steps()));
     PetscFunctionReturn(0);
   };
   // One TSSolve per output segment (or camera window boundary); the step ladder's rung carries over.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "recorder.hpp"
+#include "vibrotherm/coupling/periodic_continuation.hpp"
 #include "vibrotherm/coupling/simulation.hpp"
 
 namespace vibrotherm::coupling {
@@ -55,8 +56,9 @@ PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder, bool waves_quiet)
   PetscCall(waves_->Save(checkpoint, *specimen_));
   if (heat_) PetscCall(heat_->Save(checkpoint, *specimen_));
   PetscCall(recorder.Save(checkpoint));
+  if (periodic_) PetscCall(periodic_->Save(checkpoint));
   std::vector<double> quiet = {peak_mechanical_, mechanical_left_};
-  for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy});
+  for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy, s.dissipated, s.damped, s.radiated});
   checkpoint.PutShared("run/quiet_rule", quiet);
   PetscCall(checkpoint.Write(dir_ + "/checkpoint.h5"));
   PetscFunctionReturn(0);
@@ -71,12 +73,14 @@ PetscErrorCode Simulation::Resume(const io::Checkpoint& checkpoint, Recorder& re
              "-restart: the checkpoint has a heat solver, this scene has none");
   if (heat_) PetscCall(heat_->Restore(checkpoint, *specimen_));
   PetscCall(recorder.Restore(checkpoint, waves_.get(), heat_.get()));
+  if (periodic_) PetscCall(periodic_->Restore(checkpoint));
   std::vector<double> quiet;
   PetscCall(checkpoint.GetShared("run/quiet_rule", &quiet));
   peak_mechanical_ = quiet.at(0);
   mechanical_left_ = quiet.at(1);
   recent_.clear();
-  for (std::size_t i = 2; i + 1 < quiet.size(); i += 2) recent_.push_back({quiet[i], quiet[i + 1]});
+  for (std::size_t i = 2; i + 4 < quiet.size(); i += 5)
+    recent_.push_back({quiet[i], quiet[i + 1], quiet[i + 2], quiet[i + 3], quiet[i + 4]});
   waves_quiet_at_restart_ = checkpoint.Has("run/waves_quiet");
   PetscCall(PetscPrintf(comm, "Restarted from the checkpoint at t = %.6g s (wave step %" PetscInt_FMT ")\n",
                         waves_->solver().time(), waves_->solver().steps()));

@@ -90,6 +90,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
+  if (scene.wave.harmonic_start) PetscCall(solver_->StartHarmonic());
   PetscCall(stage.End(&summary->stages["wave_setup"]));
   PetscCall(solver_->ViewLts());
   summary->derived["wave_dt"] = solver_->dt();
@@ -139,6 +140,7 @@ PetscErrorCode WaveEnergyRow(const wave::WaveSolver& solver, io::EnergyRow* row)
   row->interface_stored = e.interface_stored;
   row->dissipated = e.dissipated;
   row->work_thermal = e.work_body;  // the only body force: the two-way thermal stress
+  row->damped = e.damped;
   PetscFunctionReturn(0);
 }
 
@@ -178,6 +180,32 @@ PetscErrorCode WaveComponent::Restore(const io::Checkpoint& checkpoint, const me
   PetscFunctionBeginUser;
   PetscCall(solver_->Restore(checkpoint, specimen.wave_origin));
   if (crack_) PetscCall(crack_->Restore(checkpoint, specimen.wave_origin));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::Snapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const {
+  PetscFunctionBeginUser;
+  PetscCall(Save(*snapshot, specimen));
+  snapshot->IndexLocal();
+  PetscFunctionReturn(0);
+}
+
+std::vector<double> WaveComponent::Accumulated() const {
+  std::vector<double> values = solver_->Accumulated();
+  if (crack_) {
+    const std::vector<double> crack = crack_->Accumulated();
+    values.insert(values.end(), crack.begin(), crack.end());
+  }
+  return values;
+}
+
+PetscErrorCode WaveComponent::ResumeFrom(const io::Checkpoint& snapshot, const mesh::Specimen& specimen,
+                                         const std::vector<double>& increments) {
+  PetscFunctionBeginUser;
+  PetscCall(Restore(snapshot, specimen));
+  const std::size_t n = solver_->Accumulated().size();
+  PetscCall(solver_->JumpAhead(std::vector<double>(increments.begin(), increments.begin() + n)));
+  if (crack_) crack_->JumpAhead(std::vector<double>(increments.begin() + n, increments.end()));
   PetscFunctionReturn(0);
 }
 

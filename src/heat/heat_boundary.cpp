@@ -3,6 +3,7 @@
 #include <petscdmplex.h>
 #include <petscsf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -136,11 +137,16 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   PetscCall(VecGetArray(sink_local, &sink_mark));
   PetscCall(VecGetArray(h_local, &hw));
   PetscInt counts[3] = {0, 0, 0};
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm));
   for (PetscInt f = fStart; f < fEnd; ++f) {
     // Outer: one cell, and not a face the partition cut (those have their other cell elsewhere).
     PetscInt support;
     PetscCall(DMPlexGetSupportSize(dm, f, &support));
     if (support != 1 || shared[f - chart0]) continue;
+    const PetscInt* cone;
+    PetscCall(DMPlexGetCone(dm, f, &cone));
+    b->outer_faces.push_back({x(cone[0])[0], x(cone[0])[1], x(cone[1])[0], x(cone[1])[1]});
     ThermalEdge kind = ThermalEdge::Insulated;
     PetscInt s = -1, is_sink = -1;
     if (side) PetscCall(DMLabelGetValue(side, f, &s));
@@ -168,6 +174,18 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   b->sink_faces = global_counts[0];
   b->insulated_faces = global_counts[1];
   b->convective_faces = global_counts[2];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DistanceToOuterEdges(MPI_Comm comm, const HeatBoundary& b, double x, double y, double* distance) {
+  PetscFunctionBeginUser;
+  double mine = INFINITY;
+  for (const auto& f : b.outer_faces) {
+    const double dx = f[2] - f[0], dy = f[3] - f[1], l2 = dx * dx + dy * dy;
+    const double s = l2 > 0 ? std::clamp(((x - f[0]) * dx + (y - f[1]) * dy) / l2, 0.0, 1.0) : 0.0;
+    mine = std::min(mine, std::hypot(x - f[0] - s * dx, y - f[1] - s * dy));
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, distance, 1, MPI_DOUBLE, MPI_MIN, comm));
   PetscFunctionReturn(0);
 }
 

@@ -54,6 +54,10 @@ PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o) {
 HeatSolver::~HeatSolver() {
   (void)TSDestroy(&coupled_ts_);
   (void)TSDestroy(&free_ts_);
+  for (ResponseFactor& f : response_factors_) {
+    (void)KSPDestroy(&f.ksp);
+    (void)MatDestroy(&f.J);
+  }
   for (Mat* m : {&M_, &K_}) (void)MatDestroy(m);
   for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) (void)VecDestroy(v);
 }
@@ -340,10 +344,9 @@ PetscErrorCode HeatSolver::Account(double h) {
   // with w = θ of the theta family (1: backward Euler, 1/2: Crank-Nicolson),
   // which makes content = deposited − loss exact for them. BDF has no such
   // weight (w = 1 here): its balance closes only to O(Δθ) per restart.
-  double w = 1.0;
-  PetscBool theta_family;
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)ts_, &theta_family, TSTHETA, TSBEULER, TSCN, ""));
-  if (theta_family) PetscCall(TSThetaGetTheta(ts_, &w));
+  double w;
+  bool theta_family;
+  PetscCall(ThetaWeight(ts_, &theta_family, &w));
   // r = M Δθ + h((K + H)θ_w − Q − G): the residual the sink rows would carry if free.
   Vec r = residual_, mix = mix_;
   PetscCall(VecWAXPY(work_, -1.0, theta_prev_, theta_));
@@ -366,6 +369,17 @@ PetscErrorCode HeatSolver::Account(double h) {
   boundary_loss_ += h * (PetscRealPart(film) - film_total_) - sink;
   PetscCall(VecCopy(theta_, theta_prev_));
   ++steps_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ThetaWeight(TS ts, bool* family, double* w) {
+  PetscFunctionBeginUser;
+  PetscBool theta;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)ts, &theta, TSTHETA, TSBEULER, TSCN, ""));
+  *family = theta;
+  PetscReal weight = 1.0;
+  if (theta) PetscCall(TSThetaGetTheta(ts, &weight));
+  *w = weight;
   PetscFunctionReturn(0);
 }
 
@@ -398,6 +412,14 @@ PetscErrorCode HeatSolver::UseFreeIntegrator() {
   PetscCall(TSGetAdapt(free_ts_, &adapt));
   PetscCall(StepLadderStart(adapt, dt));  // a first segment shorter than dt must not set the rung
   ts_ = free_ts_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::UseCoupledIntegrator() {
+  PetscFunctionBeginUser;
+  if (ts_ == coupled_ts_) PetscFunctionReturn(0);
+  PetscCall(TSSetTime(coupled_ts_, time_));
+  ts_ = coupled_ts_;
   PetscFunctionReturn(0);
 }
 

@@ -8,8 +8,6 @@ namespace vibrotherm::heat {
 
 PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
-  PetscCheck(ts_ == coupled_ts_, PetscObjectComm((PetscObject)dm_), PETSC_ERR_PLIB,
-             "heat checkpoints are taken while the waves run");
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   const PetscScalar* theta;
@@ -28,6 +26,12 @@ PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   checkpoint.PutShared("heat/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps), dt,
                                       deposited_, boundary_loss_, peak_rise_,
                                       shift == last_shift_.end() ? 0.0 : shift->second});
+  // Free: a periodic continuation's steps; the coupled TS's Jacobian shift too (it steps again afterwards).
+  Mat coupled;
+  PetscCall(TSGetIJacobian(coupled_ts_, &coupled, nullptr, nullptr, nullptr));
+  const auto coupled_shift = last_shift_.find(coupled);
+  checkpoint.PutShared("heat/integrator", {free_integrator() ? 1.0 : 0.0,
+                                           coupled_shift == last_shift_.end() ? 0.0 : coupled_shift->second});
   PetscFunctionReturn(0);
 }
 
@@ -38,6 +42,19 @@ PetscErrorCode HeatSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   std::vector<double> theta, clock;
   PetscCall(checkpoint.GetKeyed("heat/theta", keys, 1, &theta));
   PetscCall(checkpoint.GetShared("heat/clock", &clock, 8));
+  std::vector<double> integrator;
+  PetscCall(checkpoint.GetShared("heat/integrator", &integrator, 2));
+  if (integrator[0] == 1.0) {
+    last_step_ = clock[3];
+    PetscCall(UseFreeIntegrator());
+    if (integrator[1] != 0.0) {  // the coupled TS resumes with the Jacobian it held
+      Mat coupled;
+      PetscCall(TSGetIJacobian(coupled_ts_, &coupled, nullptr, nullptr, nullptr));
+      PetscCall(AssembleJacobian(this, integrator[1], coupled));
+    }
+  } else {
+    PetscCall(UseCoupledIntegrator());
+  }
   PetscScalar* x;
   PetscCall(VecGetArray(theta_, &x));
   std::copy(theta.begin(), theta.end(), x);

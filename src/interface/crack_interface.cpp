@@ -130,6 +130,7 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
       dofs.insert(dofs.end(), {off, off + 1});
     }
   PetscCall(BuildTransfer(dofs, lumped_mass));
+  cell_dofs_ = dofs;
   VibrothermCallCpp(comm_, InitialState());
   PetscFunctionReturn(0);
 }
@@ -395,6 +396,28 @@ PetscErrorCode CrackInterface::MaxFrictionExcess(double* excess) const {
   PetscFunctionBeginUser;
   double local = std::isfinite(law_->friction_bound()) ? friction_excess_ : -1.0;
   PetscCallMPI(MPI_Allreduce(&local, excess, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CrackInterface::TangentStiffness(std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
+                                                std::vector<double>* values) const {
+  PetscFunctionBeginUser;
+  // f⁺ = w(N n − T s), δa = −[δu]·n/2, δb = [δu]·s/2: K = (w/2)(k_n n nᵀ + k_t s sᵀ) ⊗ [[1, −1], [−1, 1]].
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const ContactCell& c = cells_[i];
+    const contact::CellStiffness k = law_->stiffness(i, a_[i]);
+    double block[2][2];
+    for (int p = 0; p < 2; ++p)
+      for (int q = 0; q < 2; ++q) block[p][q] = 0.5 * c.weight * (k.normal * c.n[p] * c.n[q] + k.tangential * c.s[p] * c.s[q]);
+    for (int side_r = 0; side_r < 2; ++side_r)
+      for (int side_c = 0; side_c < 2; ++side_c)
+        for (int p = 0; p < 2; ++p)
+          for (int q = 0; q < 2; ++q) {
+            rows->push_back(cell_dofs_[4 * i + 2 * side_r + p]);
+            cols->push_back(cell_dofs_[4 * i + 2 * side_c + q]);
+            values->push_back((side_r == side_c ? 1.0 : -1.0) * block[p][q]);
+          }
+  }
   PetscFunctionReturn(0);
 }
 

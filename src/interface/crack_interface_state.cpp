@@ -58,4 +58,15 @@ PetscErrorCode CrackInterface::Restore(const io::Checkpoint& checkpoint, const m
   PetscFunctionReturn(0);
 }
 
+std::vector<double> CrackInterface::Accumulated() const {
+  std::vector<double> values = W_;
+  values.push_back(dissipated_local_);
+  return values;
+}
+
+void CrackInterface::JumpAhead(const std::vector<double>& increments) {
+  for (std::size_t i = 0; i < W_.size(); ++i) W_[i] += increments.at(i);
+  dissipated_local_ += increments.at(W_.size());
+}
+
 }  // namespace vibrotherm::interface

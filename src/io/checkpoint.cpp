@@ -125,6 +125,40 @@ void Checkpoint::PutText(const std::string& name, const std::string& text) {
   t.text = text;
 }
 
+void Checkpoint::IndexLocal() {
+  PetscMPIInt size;
+  MPI_Comm_size(comm_, &size);
+  writer_ranks_ = size;
+  for (auto& [name, t] : tables_) {
+    t.offset.clear();
+    t.item.clear();
+    std::size_t offset = 0;
+    for (std::size_t i = 0; i < t.keys.size(); ++i) {
+      t.offset[t.keys[i]] = offset;
+      t.item[t.keys[i]] = i;
+      offset += static_cast<std::size_t>(t.counts[i]);
+    }
+  }
+}
+
+void Checkpoint::Nest(const std::string& prefix, const Checkpoint& inner) {
+  for (const auto& [name, t] : inner.tables_) {
+    Table copy = t;
+    copy.offset.clear();
+    copy.item.clear();
+    tables_[prefix + "/" + name] = std::move(copy);
+  }
+}
+
+void Checkpoint::Extract(const std::string& prefix, Checkpoint* inner) const {
+  inner->tables_.clear();
+  inner->writer_ranks_ = writer_ranks_;
+  inner->path_ = path_;
+  const std::string head = prefix + "/";
+  for (const auto& [name, t] : tables_)
+    if (name.compare(0, head.size(), head) == 0) inner->tables_[name.substr(head.size())] = t;
+}
+
 PetscErrorCode Checkpoint::Gathered(const Table& mine, Table* all) const {
   PetscFunctionBeginUser;
   PetscMPIInt rank, size;

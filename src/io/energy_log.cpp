@@ -14,7 +14,8 @@ PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path, long long
     VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
     if (resume_bytes < 0)
       file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
-                       "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic,work_thermal\n";
+                       "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic,work_thermal,"
+                         "damped\n";
   }
   PetscFunctionReturn(0);
 }
@@ -23,7 +24,7 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
   PetscFunctionBeginUser;
   max_work_ = std::max(max_work_, std::abs(r.work_source));
   const double imbalance = r.work_source + r.work_thermal - r.kinetic - r.strain - r.integrator_correction - r.radiated -
-                           r.interface_stored - r.dissipated;
+                           r.interface_stored - r.dissipated - r.damped;
   const double error = max_work_ > 0.0 ? imbalance / max_work_ : 0.0;
   max_imbalance_ = std::max(max_imbalance_, std::abs(imbalance));
   if (budget_error) *budget_error = error;
@@ -31,7 +32,7 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
     file_->stream() << r.t << ',' << r.work_source << ',' << r.kinetic << ',' << r.strain << ',' << r.radiated << ','
                     << r.interface_stored << ',' << r.dissipated << ',' << r.heat_deposited << ',' << r.heat_content
                     << ',' << r.heat_boundary_loss << ',' << error << ',' << r.integrator_correction << ',' << r.heat_friction << ','
-                    << r.heat_thermoelastic << ',' << r.work_thermal << '\n';
+                    << r.heat_thermoelastic << ',' << r.work_thermal << ',' << r.damped << '\n';
   PetscFunctionReturn(0);
 }
 

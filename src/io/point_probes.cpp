@@ -2,6 +2,7 @@
 
 #include <petscdmplex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -9,11 +10,13 @@
 
 namespace vibrotherm::io {
 
-double TemperatureBracket::at(std::size_t probe, double t) const {
-  if (probe >= T1.size()) return NAN;
-  if (t1 <= t0 || probe >= T0.size()) return T1[probe];
-  const double s = std::min(1.0, std::max(0.0, (t - t0) / (t1 - t0)));
-  return (1.0 - s) * T0[probe] + s * T1[probe];
+double TemperatureSeries::at(std::size_t probe, double time) const {
+  if (t.empty() || probe >= T.front().size()) return NAN;
+  const std::size_t k = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), time) - t.begin());
+  if (k == t.size()) return T.back()[probe];
+  if (k == 0 || t[k] == time) return T[k][probe];
+  const double s = (time - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1.0 - s) * T[k - 1][probe] + s * T[k][probe];
 }
 
 PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy,
@@ -82,7 +85,7 @@ void PointProbes::RecordCrack(double t, std::size_t probe, const interface::Crac
   pending_.push_back({t, probe, c.x, c.y, c.ux, c.uy, NAN, NAN, true, c});
 }
 
-void PointProbes::Flush(const TemperatureBracket* temperature) {
+void PointProbes::Flush(const TemperatureSeries* temperature) {
   if (!file_) return;
   std::ostream& out = file_->stream();
   for (const Row& r : pending_) {

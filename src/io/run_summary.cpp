@@ -19,6 +19,7 @@ void WriteHeatView(JsonWriter& json, const RunSummary& s) {
   const CameraSummary& c = s.camera;
   if (c.frames == 0) return;
   json.value("camera_peak_snr", c.peak_snr).value("camera_detectable", c.detectable);
+  json.value("camera_detection_time", c.detection_time);
   json.begin_object("camera");
   json.value("frames", c.frames).value("rows", c.rows).value("cols", c.cols).value("netd", c.netd);
   json.value("peak_rise", c.peak_rise).value("peak_frame", c.peak_frame).value("peak_time", c.peak_time);
@@ -144,6 +145,17 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
           json.begin_object().value("frequency", frequency).value("participation", participation).end_object();
         json.end_array();
       }
+      json.begin_array("periodic");
+      for (const PeriodicSegment& p : s.periodic)
+        json.begin_object()
+            .value("detected", p.detected)
+            .value("suspended", p.suspended)
+            .value("resumed", p.resumed)
+            .value("period_multiple", p.period_multiple)
+            .value("periods_continued", p.periods_continued)
+            .value("change", p.change)
+            .end_object();
+      json.end_array();
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

@@ -35,10 +35,16 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     cracks.push_back({1, gmsh::model::occ::addLine(a, b)});
   }
   // Fragmenting embeds the crack lines in the surface and splits outer edges
-  // where a crack ends on them.
+  // where a crack ends on them, and at a transducer patch's ends (a line on the edge).
+  DimTags tools = cracks;
+  if (g.patch.on) {
+    const auto ends = g.patch_ends();
+    const int a = gmsh::model::occ::addPoint(ends[0][0], ends[0][1], 0), b = gmsh::model::occ::addPoint(ends[1][0], ends[1][1], 0);
+    tools.push_back({1, gmsh::model::occ::addLine(a, b)});
+  }
   DimTags out;
   std::vector<DimTags> produced(1);
-  if (!cracks.empty()) gmsh::model::occ::fragment({{2, rectangle}}, cracks, out, produced);
+  if (!tools.empty()) gmsh::model::occ::fragment({{2, rectangle}}, tools, out, produced);
   gmsh::model::occ::synchronize();
 
   std::vector<std::vector<int>> crack_curves(g.cracks.size());

@@ -112,8 +112,10 @@ void collect_rectangle_edges(const NodeMap& nodes, const SpecimenGeometry& g, Me
     else continue;  // not an outer curve
     const auto edges = curve_edges(nodes, curve, static_cast<int>(side));
     append(mesh.side_edges, edges);
+    const double along = side == Side::Bottom || side == Side::Top ? xm : ym;
+    const bool patch = g.patch.on && g.patch.side == side && along > g.patch.start() && along < g.patch.end();
     for (MeshEdge e : edges) {
-      e.tag = static_cast<int>(g.edges[static_cast<int>(side)]);
+      e.tag = static_cast<int>(patch ? EdgeKind::Source : g.edges[static_cast<int>(side)]);
       mesh.kind_edges.push_back(e);
       mesh.sink_edges.push_back({e.v0, e.v1, 1});  // default thermal condition: all outer edges are sinks
     }

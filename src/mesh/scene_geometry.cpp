@@ -134,6 +134,38 @@ void SpecimenGeometry::validate() const {
       }
     }
   }
+  validate_patch();
+}
+
+void SpecimenGeometry::validate_patch() const {
+  if (!patch.on) return;
+  std::ostringstream msg;
+  const Side side = patch.side;
+  const double length = side == Side::Bottom || side == Side::Top ? width : height;
+  if (!(patch.width > 0.0) || !std::isfinite(patch.width)) {
+    msg << "-source_patch_width must be > 0, got " << patch.width;
+    reject(msg.str());
+  }
+  if (!std::isfinite(patch.center) || patch.start() < -tolerance(*this) || patch.end() > length + tolerance(*this)) {
+    msg << "-source_patch_center " << patch.center << " with -source_patch_width " << patch.width << ": the patch ["
+        << patch.start() << ", " << patch.end() << "] m leaves the " << to_string(side) << " edge [0, " << length << "] m";
+    reject(msg.str());
+  }
+  if (edges[static_cast<int>(side)] == EdgeKind::Source) {
+    msg << "-source_patch_edge " << to_string(side) << ": -edge_" << to_string(side)
+        << " gives the kind of the rest of that edge and cannot be source (free, absorbing, roller, ...)";
+    reject(msg.str());
+  }
+}
+
+std::array<std::array<double, 2>, 2> SpecimenGeometry::patch_ends() const {
+  switch (patch.side) {
+    case Side::Bottom: return {{{patch.start(), 0.0}, {patch.end(), 0.0}}};
+    case Side::Top: return {{{patch.start(), height}, {patch.end(), height}}};
+    case Side::Left: return {{{0.0, patch.start()}, {0.0, patch.end()}}};
+    case Side::Right: return {{{width, patch.start()}, {width, patch.end()}}};
+  }
+  return {};
 }
 
 }  // namespace vibrotherm::mesh

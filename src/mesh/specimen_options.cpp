@@ -24,6 +24,30 @@ PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, Side side, Edg
   PetscFunctionReturn(0);
 }
 
+/// -source_patch_edge (its presence makes the patch), -source_patch_center (default the edge's middle),
+/// -source_patch_width.
+PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g) {
+  PetscFunctionBeginUser;
+  PetscInt side = static_cast<PetscInt>(Side::Top);
+  PetscBool on = PETSC_FALSE;
+  PetscCall(OptionsChoice(PetscOptionsObject, "-source_patch_edge",
+                          "A transducer patch on this edge is the source (the rest of the edge keeps -edge_<side>)",
+                          {"bottom", "right", "top", "left"}, &side, &on));
+  g->patch.on = on;
+  g->patch.side = static_cast<Side>(side);
+  const bool along_x = g->patch.side == Side::Bottom || g->patch.side == Side::Top;
+  g->patch.center = 0.5 * (along_x ? g->width : g->height);
+  PetscBool has_center = PETSC_FALSE, has_width = PETSC_FALSE;
+  PetscCall(PetscOptionsReal("-source_patch_center", "Centre of the patch along its edge [m] (x on bottom/top, y on the "
+                             "sides; default the middle)", nullptr, g->patch.center, &g->patch.center, &has_center));
+  PetscCall(PetscOptionsReal("-source_patch_width", "Width of the transducer patch [m]", nullptr, g->patch.width,
+                             &g->patch.width, &has_width));
+  PetscCheck(on || (!has_center && !has_width), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-source_patch_%s given without -source_patch_edge (the edge the transducer sits on)",
+             has_width ? "width" : "center");
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
@@ -48,6 +72,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, side, &g->edges[static_cast<int>(side)]));
+  PetscCall(ReadSourcePatch(PetscOptionsObject, g));
   PetscOptionsEnd();
   g->quads = cell == 0;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry

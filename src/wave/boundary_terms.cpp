@@ -34,7 +34,8 @@ class TractionLoad final : public BoundaryTerm {
   }
   void Accelerate(const ForceState& s, PetscScalar* acc) override {
     if (s.signal.g == 0.0) return;
-    for (std::size_t k = 0; k < dofs_.size(); ++k) acc[dofs_[k]] += s.signal.g * acceleration_[k];
+    const double g = s.signal.g / s.mass_factor;  // a damped kick moves the mass m (1 + α h/2)
+    for (std::size_t k = 0; k < dofs_.size(); ++k) acc[dofs_[k]] += g * acceleration_[k];
   }
   void AddForce(const ForceState& s, PetscScalar* f) const override {
     if (s.signal.g == 0.0) return;
@@ -64,7 +65,7 @@ class Dashpots final : public BoundaryTerm {
   void Accelerate(const ForceState& s, PetscScalar* acc) override {
     for (const Dashpot& d : dashpots_) {
       const PetscInt i = 2 * d.node;
-      const double m = s.mass[i], vx = s.velocity[i], vy = s.velocity[i + 1];
+      const double m = s.mass[i] * s.mass_factor, vx = s.velocity[i], vy = s.velocity[i + 1];
       const double fx = m * acc[i] - (d.xx * vx + d.xy * vy), fy = m * acc[i + 1] - (d.xy * vx + d.yy * vy);
       if (s.kick_dt > 0.0) {
         // (m I + h/2 C) acc = F − C v: the dashpot acts on the mean velocity of the kick,
@@ -129,7 +130,7 @@ class Constraints final : public BoundaryTerm {
       const Constraint& c = constraints_[k];
       const PetscInt i = 2 * c.node;
       const double target = c.source ? s.signal.ddg : 0.0, along = acc[i] * c.d[0] + acc[i + 1] * c.d[1];
-      reaction_[k] = s.mass[i] * (target - along);  // what the support adds along d
+      reaction_[k] = s.mass[i] * s.mass_factor * (target - along);  // what the support adds along d
       acc[i] += (target - along) * c.d[0];
       acc[i + 1] += (target - along) * c.d[1];
     }

@@ -1,35 +1,104 @@
 #include "vibrotherm/wave/excitation.hpp"
 
 #include "vibrotherm/util/option_choice.hpp"
+#include "vibrotherm/util/option_list.hpp"
 
 #include <cmath>
 #include <string>
 
 namespace vibrotherm::wave {
 
+namespace {
+
+/// The amplitude A(t) and its derivatives: sin² blends from each level to the next.
+void Envelope(const SourceTimeFunction& f, double t, double* a, double* da, double* dda) {
+  *a = f.amplitude, *da = *dda = 0.0;
+  const double blend = f.blend_time(), k = M_PI / (2.0 * blend);
+  for (const SourceTimeFunction::Step& step : f.schedule) {
+    if (t <= step.t) break;
+    const double from = *a, jump = step.amplitude - from, tau = t - step.t;
+    if (tau >= blend) {
+      *a = step.amplitude, *da = *dda = 0.0;
+      continue;
+    }
+    *a = from + jump * std::sin(k * tau) * std::sin(k * tau);
+    *da = jump * k * std::sin(2.0 * k * tau);
+    *dda = jump * 2.0 * k * k * std::cos(2.0 * k * tau);
+  }
+}
+
+}  // namespace
+
+double SourceTimeFunction::ramp_time() const { return std::min(ramp_cycles / frequency, 0.5 * duration); }
+double SourceTimeFunction::blend_time() const { return std::max(ramp_cycles, 1.0) / frequency; }
+
+bool SourceTimeFunction::steady_stretch(double t, double* start, double* end) const {
+  double from = running_at_start ? 0.0 : ramp_time();
+  for (const Step& step : schedule) {
+    if (t < step.t) break;
+    from = step.t + blend_time();
+  }
+  double to = duration - ramp_time();
+  for (const Step& step : schedule)
+    if (step.t >= t) {
+      to = std::min(to, step.t);
+      break;
+    }
+  *start = from, *end = to;
+  return t >= from && t <= to && to > from;
+}
+
 void SourceTimeFunction::evaluate(double t, double* g, double* dg, double* ddg) const {
   *g = *dg = *ddg = 0.0;
   if (t <= 0.0 || t >= duration) return;
   const double w = 2.0 * M_PI * frequency;
-  const double ramp = std::min(ramp_cycles / frequency, 0.5 * duration);
+  const double ramp = ramp_time();
   // Window w(t) and its derivatives: sin²(π τ / (2 T_r)), τ the time from the nearer end.
   double win = 1.0, dwin = 0.0, ddwin = 0.0;
-  if (ramp > 0.0 && (t < ramp || t > duration - ramp)) {
+  if (ramp > 0.0 && ((t < ramp && !running_at_start) || t > duration - ramp)) {
     const bool on = t < ramp;
     const double tau = on ? t : duration - t, sign = on ? 1.0 : -1.0, k = M_PI / (2.0 * ramp);
     win = std::sin(k * tau) * std::sin(k * tau);
     dwin = sign * k * std::sin(2.0 * k * tau);
     ddwin = 2.0 * k * k * std::cos(2.0 * k * tau);
   }
+  // g = A · (s · win): the carrier times the window, then the amplitude's product rule.
   const double s = std::sin(w * t), c = std::cos(w * t);
-  *g = amplitude * s * win;
-  *dg = amplitude * (w * c * win + s * dwin);
-  *ddg = amplitude * (-w * w * s * win + 2.0 * w * c * dwin + s * ddwin);
+  const double h = s * win, dh = w * c * win + s * dwin, ddh = -w * w * s * win + 2.0 * w * c * dwin + s * ddwin;
+  double a, da, dda;
+  Envelope(*this, t, &a, &da, &dda);
+  *g = a * h;
+  *dg = a * dh + da * h;
+  *ddg = a * ddh + 2.0 * da * dh + dda * h;
 }
+
+namespace {
+
+/// -source_schedule pairs in time order, each change after the switch-on and done before the switch-off.
+PetscErrorCode SetSchedule(MPI_Comm comm, const std::vector<double>& values, SourceTimeFunction* f) {
+  PetscFunctionBeginUser;
+  PetscCheck(values.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "-source_schedule needs t,A pairs (got %zu values)", values.size());
+  f->schedule.clear();
+  for (std::size_t i = 0; i < values.size(); i += 2) {
+    const double t = values[i], previous = f->schedule.empty() ? f->ramp_time() : f->schedule.back().t + f->blend_time();
+    PetscCheck(std::isfinite(t) && std::isfinite(values[i + 1]), comm, PETSC_ERR_USER_INPUT,
+               "-source_schedule: pair %zu is not finite", i / 2 + 1);
+    PetscCheck(t >= previous && t + f->blend_time() <= f->duration - f->ramp_time(), comm, PETSC_ERR_USER_INPUT,
+               "-source_schedule: the step at t = %g s must come after the switch-on or the previous step's blend "
+               "(%g s) and end its blend (%g s) before the switch-off at %g s",
+               t, previous, f->blend_time(), f->duration - f->ramp_time());
+    f->schedule.push_back({t, values[i + 1]});
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
 
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscFunctionBeginUser;
   PetscInt type = e->type == SourceType::Displacement ? 0 : 1, component = e->component == SourceComponent::Tangential ? 0 : 1;
+  std::vector<double> schedule;
   PetscOptionsBegin(comm, nullptr, "Excitation on the source edge", nullptr);
   PetscCall(OptionsChoice(PetscOptionsObject, "-source_type", "Source on the source edge", {"displacement", "traction"},
                           &type, nullptr));
@@ -43,12 +112,16 @@ PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
                              &e->signal.duration, nullptr));
   PetscCall(PetscOptionsReal("-source_ramp_cycles", "Cycles of smooth switch-on and switch-off", nullptr,
                              e->signal.ramp_cycles, &e->signal.ramp_cycles, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-source_schedule",
+                            "Amplitude steps t1,A1,t2,A2,...: from t_i [s] on amplitude A_i (blended over "
+                            "max(-source_ramp_cycles, 1) cycles)", &schedule, nullptr));
   PetscOptionsEnd();
   e->type = type == 0 ? SourceType::Displacement : SourceType::Traction;
   e->component = component == 0 ? SourceComponent::Tangential : SourceComponent::Normal;
   PetscCheck(e->signal.frequency > 0.0, comm, PETSC_ERR_USER_INPUT, "-source_frequency must be > 0");
   PetscCheck(e->signal.duration >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_duration must be >= 0");
   PetscCheck(e->signal.ramp_cycles >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_ramp_cycles must be >= 0");
+  PetscCall(SetSchedule(comm, schedule, &e->signal));
   PetscFunctionReturn(0);
 }
 

@@ -69,6 +69,7 @@ PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMa
   excitation_ = excitation;
   omega_dt_max_ = omega_dt_max;
   cfl_ = options.cfl;
+  damping_rate_ = material.damping_rate;
   element_levels_ = levels.levels;
   PetscCall(VecDuplicate(mass, &scratch_));
   PetscCall(VecDuplicate(mass, &work_));
@@ -80,7 +81,7 @@ PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMa
     PetscCall(SetupLevel(l, space, material, levels, touched[l]));
     if (info_[l].omega > 0.0) H_ = std::min(H_, std::ldexp(Limit() / info_[l].omega, static_cast<int>(l)));
   }
-  H_ = StepControl::RoundDown(H_);
+  H_ = StepControl::Quantized(H_, options.step_quantum);
   PetscCall(AssignContactDofs());
   PetscCall(SetupBoundary(boundary));
   PetscFunctionReturn(0);
@@ -121,7 +122,8 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
 PetscErrorCode LtsStepper::AssignContactDofs() {
   PetscFunctionBeginUser;
   // Each dof drifts at the finest rate acting on it: its cells', or the contact's.
-  std::vector<PetscInt> rate(element_finest_);
+  std::vector<PetscInt>& rate = dof_level_;
+  rate = element_finest_;
   for (PetscInt i : contact_dofs_) rate[i] = std::max(rate[i], contact_level_);
   for (std::size_t l = 0; l < level_.size(); ++l) {
     Level& L = *level_[l];
@@ -276,20 +278,29 @@ PetscErrorCode LtsStepper::Kick(PetscInt l, double t, double c, Vec v) {
   PetscScalar* V;
   PetscCall(VecGetArrayRead(L.a, &a));
   PetscCall(VecGetArray(v, &V));
-  if (L.terms.empty()) {  // interior rows only: straight from the level's force
+  if (L.terms.empty() && damping_rate_ == 0.0) {  // interior rows only: straight from the level's force
     for (PetscInt i : L.kick_rows) V[i] += c * a[i];
   } else {
     PetscScalar* s;
     PetscCall(VecGetArray(scratch_, &s));
-    for (PetscInt i : L.kick_rows) s[i] = a[i];
+    // Material damping acts on a dof in the kicks of its own rate (coarser levels only add impulses).
+    const double own_rate = damping_rate_;
+    for (PetscInt i : L.kick_rows) s[i] = DampedAcceleration(a[i], V[i], dof_level_[i] == l ? own_rate : 0.0, c);
     ForceState state;
     state.signal = SignalValues::At(excitation_.signal, t);
     state.kick_dt = c;
+    state.mass_factor = 1.0 + 0.5 * damping_rate_ * c;  // the terms act on their nodes' own level
     state.velocity = V;
     PetscCall(VecGetArrayRead(mass_, &state.mass));
     for (auto& term : L.terms) term->Accelerate(state, s);
+    double damped = 0.0;
+    for (PetscInt i : L.kick_rows) {
+      const double mean = V[i] + 0.5 * c * s[i];
+      if (dof_level_[i] == l) damped += state.mass[i] * mean * mean;
+      V[i] += c * s[i];
+    }
+    damped_ += c * damping_rate_ * damped;
     PetscCall(VecRestoreArrayRead(mass_, &state.mass));
-    for (PetscInt i : L.kick_rows) V[i] += c * s[i];
     PetscCall(VecRestoreArray(scratch_, &s));
   }
   PetscCall(VecRestoreArray(v, &V));

@@ -10,14 +10,21 @@ double StepControl::RoundDown(double raw) {
   return std::floor(raw / scale) * scale;
 }
 
+double StepControl::Quantized(double raw, double q) {
+  const double rounded = RoundDown(raw);
+  if (!(q > 0.0)) return rounded;
+  return q / std::ceil(q / rounded * (1.0 - 1e-12));
+}
+
 double StepControl::Limit(double omega2) const {
   return omega_dt_max_ / std::sqrt(omega_max_ * omega_max_ + omega2);
 }
 
 PetscErrorCode StepControl::Setup(MPI_Comm comm, double omega_max, double omega_dt_max, double cfl, double fixed_dt,
-                                  const char* ts_type) {
+                                  const char* ts_type, double quantum) {
   PetscFunctionBeginUser;
   comm_ = comm;
+  quantum_ = quantum;
   omega_max_ = omega_max;
   omega_dt_max_ = omega_dt_max;
   cfl_ = cfl;
@@ -31,7 +38,7 @@ PetscErrorCode StepControl::Setup(MPI_Comm comm, double omega_max, double omega_
     dt_ = fixed_dt;
   } else {
     // Implicit types: cfl of the explicit limit 2/ω_max, to resolve the fastest waves.
-    dt_ = RoundDown(cfl * (implicit() ? 2.0 / omega_max : stable_dt_));
+    dt_ = Quantized(cfl * (implicit() ? 2.0 / omega_max : stable_dt_), quantum_);
   }
   PetscFunctionReturn(0);
 }
@@ -39,7 +46,7 @@ PetscErrorCode StepControl::Setup(MPI_Comm comm, double omega_max, double omega_
 void StepControl::IncludeContact(double omega2) {
   contact_omega2_ = omega2;
   if (implicit() || fixed_dt_ > 0.0) return;
-  dt_ = std::min(dt_, RoundDown(cfl_ * Limit(omega2)));
+  dt_ = std::min(dt_, Quantized(cfl_ * Limit(omega2), quantum_));
 }
 
 PetscErrorCode StepControl::IncludeBulkStiffness(double omega2, const char* what) {
@@ -50,22 +57,23 @@ PetscErrorCode StepControl::IncludeBulkStiffness(double omega2, const char* what
   PetscCheck(fixed_dt_ <= 0.0 || fixed_dt_ <= stable_dt_, comm_, PETSC_ERR_USER_INPUT,
              "-wave_dt %g s exceeds the stability limit %g s with %s; use -wave_dt <= %g or -wave_cfl", fixed_dt_,
              stable_dt_, what, stable_dt_);
-  if (fixed_dt_ <= 0.0) dt_ = std::min(dt_, RoundDown(cfl_ * stable_dt_));
+  if (fixed_dt_ <= 0.0) dt_ = std::min(dt_, Quantized(cfl_ * stable_dt_, quantum_));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StepControl::Check(double omega2, double time, PetscInt steps, bool* changed) {
+PetscErrorCode StepControl::Check(double omega2, double time, PetscInt steps, bool at_quantum, bool* changed) {
   PetscFunctionBeginUser;
   *changed = false;
   if (implicit()) PetscFunctionReturn(0);
   const double limit = Limit(omega2);
   stable_dt_ = limit;
   if (dt_ <= cfl_ * limit * (1.0 + 1e-12)) PetscFunctionReturn(0);
+  if (quantum_ > 0.0 && !at_quantum && dt_ < limit) PetscFunctionReturn(0);  // still stable: shrink at the boundary
   // Shrink by at least 10 %, with twice the current contact stiffness as
   // headroom: velocity Verlet wants a step that changes rarely (a creeping step
   // was measured to destabilise it), and a contact that just started to bite
   // would otherwise shave off the last digit, step after step.
-  const double reduced = RoundDown(std::min(0.9 * dt_, cfl_ * Limit(2.0 * omega2)));
+  const double reduced = Quantized(std::min(0.9 * dt_, cfl_ * Limit(2.0 * omega2)), quantum_);
   if (reductions_ == 0 && steps > 0)
     PetscCall(PetscPrintf(comm_,
                           "wave: the crack contact stiffened at t = %g s: time step reduced from %g to %g s "

@@ -81,11 +81,13 @@ PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscCall(VecDestroy(&Au));
   PetscCall(VecDestroy(&Mu));
   PetscCall(RestoreFields(&u, &v));
-  double local[3] = {accounted_.radiated, accounted_.work_source, body_work_}, global[3];
-  PetscCallMPI(MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
+  const double lts_damped = lts_active_ ? lts_.damped() : 0.0;
+  double local[4] = {accounted_.radiated, accounted_.work_source, body_work_, accounted_.damped + lts_damped}, global[4];
+  PetscCallMPI(MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm_)));
   e->radiated = global[0];
   e->work_source = global[1];
   e->work_body = global[2];
+  e->damped = global[3];
   e->kinetic = 0.5 * PetscRealPart(kinetic);
   e->strain = -0.5 * PetscRealPart(strain);
   PetscCall(IntegratorTerm(step_.dt(), &e->integrator));

@@ -26,7 +26,8 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
     checkpoint.PutShared("wave/lts", {static_cast<double>(lts_.contact_level()),
                                       static_cast<double>(lts_.contact_refinements()), lts_.macro_step(),
                                       static_cast<double>(lts_.halvings())});
-  std::vector<double> accounts = {accounted_.radiated, accounted_.work_source, body_work_};
+  std::vector<double> accounts = {accounted_.radiated, accounted_.work_source, body_work_, accounted_.damped,
+                                  lts_active_ ? lts_.damped() : 0.0};
   for (const auto& term : terms_)
     for (double value : term->SavedAccount()) accounts.push_back(value);
   checkpoint.PutPerRank("wave/accounts", accounts);
@@ -68,7 +69,9 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   accounted_.radiated = accounts.at(0);
   accounted_.work_source = accounts.at(1);
   body_work_ = accounts.at(2);
-  std::size_t at = 3;
+  accounted_.damped = accounts.at(3);
+  if (lts_active_) lts_.set_damped(accounts.at(4));
+  std::size_t at = 5;
   for (auto& term : terms_) {
     const std::size_t n = term->SavedAccount().size();
     term->RestoreAccount(std::vector<double>(accounts.begin() + at, accounts.begin() + at + n));
@@ -88,6 +91,24 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
   PetscCall(VecRestoreArrayRead(uv, &state.u));
   PetscCall(VecRestoreArrayRead(vv, &state.v));
   PetscCall(RestoreFields(&uv, &vv));
+  PetscFunctionReturn(0);
+}
+
+std::vector<double> WaveSolver::Accumulated() const {
+  return {time_, accounted_.radiated, accounted_.work_source, body_work_, accounted_.damped,
+          lts_active_ ? lts_.damped() : 0.0};
+}
+
+PetscErrorCode WaveSolver::JumpAhead(const std::vector<double>& increments) {
+  PetscFunctionBeginUser;
+  PetscCheck(increments.size() == 6, PetscObjectComm((PetscObject)dm_), PETSC_ERR_ARG_SIZ, "6 increments expected");
+  time_ += increments[0];
+  accounted_.radiated += increments[1];
+  accounted_.work_source += increments[2];
+  body_work_ += increments[3];
+  accounted_.damped += increments[4];
+  if (lts_active_) lts_.set_damped(lts_.damped() + increments[5]);
+  PetscCall(TSSetTime(ts_, time_));
   PetscFunctionReturn(0);
 }
 

@@ -22,6 +22,8 @@ struct DriverOptions {
   double final_time = -1.0;           ///< -final_time [s] (default: the source duration)
   double couple_dt = -1.0;            ///< -couple_dt [s] (default: 1/8 of the source period)
   PetscInt heat_substeps = 3;         ///< -heat_substeps: heat steps per coupling interval (each with its own friction energy)
+  bool near_field = true;             ///< -heat_near_field: probes near a crack add the recent friction heat exactly
+  PetscInt near_field_steps = 8;      ///< -heat_near_field_steps: the window K of that correction [heat steps]
   double quiet_fraction = 1e-2;       ///< -wave_quiet_fraction
   double max_steps = 2e8;             ///< -max_steps: a run whose wave steps would exceed it is refused at setup
   double checkpoint_every_s = 600.0;  ///< -checkpoint_every_s: wall seconds between checkpoints (0: only on signals)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/heat_sources.hpp"
+#include "vibrotherm/coupling/probe_temperatures.hpp"
 #include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/coupling/wave_component.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
@@ -37,7 +38,14 @@ class HeatComponent {
   const heat::HeatSolver& solver() const { return solver_; }
   /// One heat step to t, loaded with what every source deposited since the last step
   /// (two_way: then the thermal stress on the waves follows the new temperatures).
-  PetscErrorCode StepTo(double t);
+  /// sample_probes = false: the caller samples the probes itself (SampleProbes), after shifting the field.
+  PetscErrorCode StepTo(double t, bool sample_probes = true);
+  /// The probes after a heat step (and, while a replay runs, the replayed friction for their near field).
+  PetscErrorCode SampleProbes();
+  /// After every wave step while coupled (row: probes.csv has a row at t).
+  void AfterWaveStep(double t, bool row) { probe_temperatures_.AfterWaveStep(t, row); }
+  /// The probes' temperatures since the last call (probe_temperatures.hpp). Collective.
+  PetscErrorCode ProbeSeries(io::TemperatureSeries* series) { return probe_temperatures_.Collect(series); }
   /// The sources' physics stopped: they write their records into dir and go (and
   /// the thermal stress leaves the waves).
   PetscErrorCode StopSources(const std::string& dir);
@@ -50,6 +58,20 @@ class HeatComponent {
   /// (after the waves have restored theirs).
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
+  // Periodic continuation (periodic_continuation.hpp).
+  /// Whether every source can replay a recorded period (the continuation needs it).
+  bool replayable() const;
+  /// The sources record what they deposit from t on (a heat step's end), until StopRecording ...
+  PetscErrorCode StartRecording(double t);
+  PetscErrorCode StopRecording();
+  /// ... and replay it (phase-locked or averaged) or take the live physics again (off).
+  PetscErrorCode Replay(ReplayMode mode);
+  /// One heat step to t with the sources' averaged load, exchanging and recording nothing
+  /// (the averaged twin of a continuation's phase-resolved start).
+  PetscErrorCode StepAveraged(double t);
+  /// The solver alone into an in-memory snapshot, and back (the twin starts and ends there).
+  PetscErrorCode SolverSnapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const;
+  PetscErrorCode RestoreSolver(const io::Checkpoint& snapshot, const mesh::Specimen& specimen);
   /// Wall time spent stepping the heat [s].
   double seconds() const { return seconds_; }
   void add_seconds(double s) { seconds_ += s; }
@@ -60,6 +82,8 @@ class HeatComponent {
   heat::HeatSolver solver_;
   std::vector<std::unique_ptr<HeatSource>> sources_;
   std::unique_ptr<ThermalStress> thermal_stress_;  ///< -thermoelastic two_way: θ back on the waves
+  ProbeTemperatures probe_temperatures_;          ///< the probes between heat steps
+  FrictionHeatSource* friction_ = nullptr;        ///< among sources_, when friction heats
   Vec load_ = nullptr;
   std::vector<double> crack_probe_xy_;
   std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go

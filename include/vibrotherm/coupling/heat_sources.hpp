@@ -9,6 +9,7 @@
 
 #include "vibrotherm/coupling/crack_heat_record.hpp"
 #include "vibrotherm/coupling/friction_heat.hpp"
+#include "vibrotherm/coupling/periodic_replay.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/io/checkpoint.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
@@ -30,6 +31,16 @@ class HeatSource {
   /// physics it reads (restored before it) does not tell; and back.
   virtual PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const = 0;
   virtual PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) = 0;
+  // Periodic continuation (periodic_continuation.hpp): a source that can replay what its
+  // physics deposits over a recorded period, while that physics is suspended.
+  virtual bool replayable() const { return false; }
+  /// Records from t (a heat step's end) until StopRecording, sampling at every AddLoad ...
+  virtual PetscErrorCode StartRecording(double /*t*/) { return PETSC_ERR_SUP; }
+  virtual PetscErrorCode StopRecording() { return PETSC_ERR_SUP; }
+  /// ... then deposits the recording periodically (phase-locked or averaged), or the live physics again (off).
+  virtual PetscErrorCode Replay(ReplayMode /*mode*/) { return PETSC_ERR_SUP; }
+  /// Q += the averaged replay's constant load [W/m per heat dof], exchanging nothing.
+  virtual PetscErrorCode AddAverageLoad(Vec /*Q*/) { return PETSC_ERR_SUP; }
 };
 
 /// Friction at the crack (crack law dissipation → line density on the crack),
@@ -44,9 +55,23 @@ class FrictionHeatSource final : public HeatSource {
   const char* name() const override { return "friction"; }
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
+  bool replayable() const override { return true; }
+  PetscErrorCode StartRecording(double t) override;
+  PetscErrorCode StopRecording() override;
+  PetscErrorCode Replay(ReplayMode mode) override;
+  PetscErrorCode AddAverageLoad(Vec Q) override;
+  const FrictionHeat& transfer() const { return transfer_; }
+  /// Every owned cell's friction energy so far [J/m²] at t: the interface's, or the replay's.
+  std::vector<double> Dissipated(double t) const;
+  bool replaying() const { return mode_ != ReplayMode::Off; }
+  const interface::CrackInterface& crack() const { return *crack_; }
+  /// Checkpoint keys of this rank's contact cells (their + point's origin).
+  std::vector<long long> CellKeys(const mesh::Specimen& specimen) const;
 
  private:
   interface::CrackInterface* crack_ = nullptr;
+  PeriodicReplay replay_;
+  ReplayMode mode_ = ReplayMode::Off;
   double deposited_ = 0.0;
   FrictionHeat transfer_;
   CrackHeatRecord record_;

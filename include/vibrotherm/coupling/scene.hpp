@@ -7,6 +7,7 @@
 #include "vibrotherm/contact/contact_parameters.hpp"
 #include "vibrotherm/coupling/camera_options.hpp"
 #include "vibrotherm/coupling/driver_options.hpp"
+#include "vibrotherm/coupling/periodic_options.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/wave/excitation.hpp"
@@ -24,6 +25,7 @@ struct Scene {
   interface::ApproachProfile a0;
   heat::HeatOptions heat;
   CameraOptions camera;  ///< -camera*: the IR camera filming the heat field
+  PeriodicOptions periodic;  ///< -periodic*: continuation of a periodic state
   double final_time = 0.0;  ///< -final_time, or the source duration
   double couple_dt = 0.0;   ///< -couple_dt, or 1/8 of the source period
 

@@ -42,6 +42,7 @@ namespace vibrotherm::coupling {
 
 class Recorder;
 class HeatCamera;
+class PeriodicContinuation;
 
 /// How a run starts and what its checkpoints carry.
 struct RunControl {
@@ -92,9 +93,11 @@ class Simulation {
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
+  std::unique_ptr<PeriodicContinuation> periodic_;  ///< -periodic: continuation of a periodic state
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
-    double t, energy;
+    double t, energy;                    ///< energy: the mechanical energy left times friction's share of the losses
+    double dissipated, damped, radiated;  ///< the accounts then
   };
   std::vector<Sample> recent_;
   double peak_mechanical_ = 0.0, mechanical_left_ = 0.0;

@@ -37,6 +37,13 @@ class WaveComponent {
   /// Checkpoints: the wave solver and the crack interface; and back.
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::Specimen& specimen);
+  /// The periodic continuation (periodic_continuation.hpp): the state kept in memory ...
+  PetscErrorCode Snapshot(const mesh::Specimen& specimen, io::Checkpoint* snapshot) const;
+  /// ... what grows over time in it (this rank's: the solver's accounts, then the crack's) ...
+  std::vector<double> Accumulated() const;
+  /// ... and the stored state again, jumped ahead by increments of what grows.
+  PetscErrorCode ResumeFrom(const io::Checkpoint& snapshot, const mesh::Specimen& specimen,
+                            const std::vector<double>& increments);
 
  private:
   std::unique_ptr<wave::WaveSolver> solver_;

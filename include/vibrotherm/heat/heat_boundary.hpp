@@ -10,6 +10,7 @@
 
 #include <petscdm.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,12 @@ struct HeatBoundary {
   std::vector<double> convective_h;
   double T_ext = 0.0;
   PetscInt sink_faces = 0, insulated_faces = 0, convective_faces = 0;  ///< global counts
+  std::vector<std::array<double, 4>> outer_faces;  ///< this rank's outer faces, any kind: x0, y0, x1, y1
 };
 /// Classifies every outer face of space's DM and collects the rows. Collective.
 PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBoundaryOptions& options,
                                  HeatBoundary* boundary);
+/// Distance from (x, y) to the nearest outer edge of the body, on every rank. Collective.
+PetscErrorCode DistanceToOuterEdges(MPI_Comm comm, const HeatBoundary& boundary, double x, double y, double* distance);
 
 }  // namespace vibrotherm::heat

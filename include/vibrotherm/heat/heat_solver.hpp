@@ -71,12 +71,24 @@ class HeatSolver {
   PetscErrorCode SetProbePoints(const std::vector<double>& xy);
   /// Temperatures [K] at the probe points, on every rank. Collective.
   PetscErrorCode ProbeTemperatures(std::vector<double>* T) const;
+  /// Probe p's rise as a linear functional of θ: sets phi (a global vector of
+  /// the heat DM) to the heat basis at the point, φᵀθ = the rise there. Collective.
+  PetscErrorCode ProbeFunctional(std::size_t probe, Vec phi) const;
+  /// What a load does to a functional φᵀθ under the coupled integrator
+  /// (step_responses.cpp): lengths = h_n, h_{n−1}, ... of the last steps, newest
+  /// first; w[k] such that a load Q applied in step n − k adds w[k]ᵀQ to φᵀθ at
+  /// the end of step n, k = 0 .. lengths.size() − 1. supported = false (w empty)
+  /// when the coupled TS is not of the theta family. Collective.
+  PetscErrorCode StepResponses(Vec phi, const std::vector<double>& lengths, std::vector<Vec>* w, bool* supported);
   /// Switches to the TS of free diffusion (prefix -heat_free_; Crank-Nicolson by
   /// default, whose balance closes exactly, on the step ladder from the last
   /// coupled step). With -heat_free_ts_adapt_type basic (error control),
   /// -heat_free_ts_type bdf took 10× fewer steps on meshes much finer than the
   /// diffusion length (Carslaw-Jaeger case) but closes the balance only to ~1 %.
   PetscErrorCode UseFreeIntegrator();
+  /// Back to the coupled phase's TS at the current time (after a periodic continuation's free steps).
+  PetscErrorCode UseCoupledIntegrator();
+  bool free_integrator() const { return ts_ == free_ts_ && free_ts_ != nullptr; }
   /// Advances with the free integrator (its own step schedule) to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
   /// Advances to t_end in `steps` equal steps (coupling intervals: the source
@@ -121,11 +133,15 @@ class HeatSolver {
   /// J = K + shift M with the sink rows, unless it holds that shift already.
   static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
   PetscErrorCode Account(double h);
+  /// w of a theta-family TS (1: backward Euler, 1/2: Crank-Nicolson); family = false (w = 1) for others.
+  static PetscErrorCode ThetaWeight(TS ts, bool* family, double* w);
   // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G; the crack facets.
   PetscErrorCode AssembleMassAndConductivity(bool lumped);
   PetscErrorCode AddConvectiveFilm();
   PetscErrorCode CollectCrackFacets();
   PetscErrorCode ScaleTolerance();
+  /// A solver of J = K + M/(w dt) (sinks as the TS's), factored once per step length dt.
+  PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
 
   DM dm_ = nullptr;
   fe::LagrangeSpace space_;
@@ -155,6 +171,13 @@ class HeatSolver {
   PetscInt steps_ = 0, global_dofs_ = 0;
   bool stop_requested_ = false;
   PetscLogEvent source_event_ = 0;
+  /// StepResponses' own factorisations (the TS's is not disturbed), by shift: the last few step lengths.
+  struct ResponseFactor {
+    double shift;
+    Mat J;
+    KSP ksp;
+  };
+  std::vector<ResponseFactor> response_factors_;
 };
 
 }  // namespace vibrotherm::heat

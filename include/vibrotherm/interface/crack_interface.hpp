@@ -54,6 +54,10 @@ class CrackInterface final : public wave::WaveInterface {
   PetscErrorCode MarkDofs(Vec marker) override;
   PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) override;
   PetscErrorCode Energies(double* stored, double* dissipated) override;
+  /// (w/2)(k_n n nᵀ + k_t s sᵀ) on each cell's ± dof pairs, the law's tangent stiffnesses at the cell's a.
+  PetscErrorCode TangentStiffness(std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
+                                  std::vector<double>* values) const override;
+
 
   /// Owned cells (this rank evaluates them).
   const std::vector<ContactCell>& cells() const { return cells_; }
@@ -75,6 +79,10 @@ class CrackInterface final : public wave::WaveInterface {
   /// the accounts into a checkpoint, keyed by the + point's origin; and back (crack_interface_state.cpp).
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  /// The periodic continuation: what accumulates (W of every owned cell, this rank's dissipated
+  /// energy), and a jump ahead that adds increments of these.
+  std::vector<double> Accumulated() const;
+  void JumpAhead(const std::vector<double>& increments);
   /// Wall time spent evaluating and committing the interface (this rank).
   double seconds() const { return seconds_; }
 
@@ -100,6 +108,7 @@ class CrackInterface final : public wave::WaveInterface {
   std::vector<double> inv_mass_;   ///< 1/m per needed dof
   Vec u_local_ = nullptr, f_local_ = nullptr;
   std::vector<double> a_, b_, power_, W_;
+  std::vector<PetscInt> cell_dofs_;  ///< [u⁺x u⁺y u⁻x u⁻y] global dof numbers per cell
   std::vector<double> initial_stored_;  ///< U of each cell in its initial state
   std::vector<contact::StepResult> last_;
   double dissipated_local_ = 0.0;

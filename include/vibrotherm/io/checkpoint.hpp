@@ -34,6 +34,14 @@ class Checkpoint {
   void PutKeyed(const std::string& name, std::vector<long long> keys, int width, std::vector<double> values);
   void PutText(const std::string& name, const std::string& text);
 
+  /// What this rank put becomes readable by this rank: an in-memory snapshot of the
+  /// same run on the same partition (the periodic continuation's stored state).
+  void IndexLocal();
+  /// Copies every table of `inner` under "prefix/" (this rank's items: Write gathers them as any other).
+  void Nest(const std::string& prefix, const Checkpoint& inner);
+  /// The tables under "prefix/" as a checkpoint of their own, readable as this one is.
+  void Extract(const std::string& prefix, Checkpoint* inner) const;
+
   /// Gathers on rank 0 and writes path atomically. Collective.
   PetscErrorCode Write(const std::string& path) const;
   /// Reads path (rank 0) and shares it with every rank; errors name the file. Collective.

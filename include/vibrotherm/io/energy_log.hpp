@@ -1,9 +1,9 @@
 // energy.csv (J per metre of depth), rank 0, written atomically:
 //   t,work_source,kinetic,strain,radiated,interface_stored,dissipated,
 //   heat_deposited,heat_content,heat_boundary_loss,budget_error,integrator_correction,
-//   heat_friction,heat_thermoelastic,work_thermal   (heat_deposited split by its sources)
+//   heat_friction,heat_thermoelastic,work_thermal,damped   (heat_deposited split by its sources)
 // budget_error = (work_source + work_thermal − kinetic − strain − integrator_correction −
-//                 radiated − interface_stored − dissipated) / max(work_source so far)
+//                 radiated − interface_stored − dissipated − damped) / max(work_source so far)
 // work_thermal: the work of the thermal stress −βθI on the waves (-thermoelastic
 // two_way, else 0): negative when the waves lose mechanical energy to the heat
 // (thermoelastic damping); it also holds the reversible adiabatic exchange, which
@@ -28,6 +28,7 @@ struct EnergyRow {
   double t = 0, work_source = 0, kinetic = 0, strain = 0, radiated = 0, interface_stored = 0, dissipated = 0,
          heat_deposited = 0, heat_content = 0, heat_boundary_loss = 0, integrator_correction = 0;
   double heat_friction = 0, heat_thermoelastic = 0, work_thermal = 0;
+  double damped = 0;  ///< dissipated by material damping (-material_loss_factor)
 };
 
 class EnergyLog {

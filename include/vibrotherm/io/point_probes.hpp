@@ -3,9 +3,9 @@
 // crack probes, a,b,b0,N,T,state,power,W (a column without data is nan). Each
 // point is evaluated by exactly one rank.
 //
-// Rows are held until Flush(): the temperature comes from the heat solver,
-// which only knows it at coupling times, so rows recorded between two coupling
-// times get the temperature interpolated linearly between them.
+// Rows are held until Flush(): the temperature comes from the heat side
+// (coupling/probe_temperatures.hpp), which gives it at every row time; a row
+// at another time reads it interpolated linearly.
 #pragma once
 
 #include <petscvec.h>
@@ -21,11 +21,11 @@
 
 namespace vibrotherm::io {
 
-/// Probe temperatures at two times; rows in between are interpolated.
-struct TemperatureBracket {
-  double t0 = 0, t1 = 0;
-  std::vector<double> T0, T1;  ///< by probe index (point probes, then crack probes)
-  double at(std::size_t probe, double t) const;
+/// Probe temperatures at increasing times; a time in between is interpolated linearly.
+struct TemperatureSeries {
+  std::vector<double> t;
+  std::vector<std::vector<double>> T;  ///< T[k][probe] (point probes, then crack probes)
+  double at(std::size_t probe, double time) const;
 };
 
 class PointProbes {
@@ -43,7 +43,7 @@ class PointProbes {
   /// Holds a crack-probe row (rank 0).
   void RecordCrack(double t, std::size_t probe, const interface::CrackCellRecord& record);
   /// Writes the held rows; temperature from `temperature` (nullptr: nan).
-  void Flush(const TemperatureBracket* temperature);
+  void Flush(const TemperatureSeries* temperature);
   /// Writes a row with only a temperature (after the waves have stopped).
   void WriteTemperature(double t, std::size_t probe, double x, double y, double temperature);
   /// Publishes probes.csv (call once at the end of a successful run).

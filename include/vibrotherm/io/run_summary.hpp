@@ -25,6 +25,16 @@ struct CameraSummary {
   double peak_time = 0.0;  ///< centre of that frame's window [s]
   double peak_snr = 0.0;   ///< peak_rise / NETD
   bool detectable = false; ///< peak_snr >= -camera_detect_snr
+  double detection_time = -1.0;  ///< end of the first frame whose clean peak reaches the SNR [s] (-1: none)
+};
+
+/// One periodic continuation (coupling/periodic_continuation): when the run was found periodic,
+/// when the waves were suspended and resumed, and the periods continued.
+struct PeriodicSegment {
+  double detected = 0.0, suspended = 0.0, resumed = 0.0;  ///< [s]
+  double period_multiple = 0.0;    ///< source periods in the period recorded and replayed
+  double periods_continued = 0.0;  ///< source periods the waves did not simulate
+  double change = 0.0;             ///< the detector's change when it was found periodic
 };
 
 /// The largest rise over every heat dof at every heat step, when and where.
@@ -66,6 +76,7 @@ struct RunSummary {
   CameraSummary camera;         ///< summary.json camera, camera_peak_snr, camera_detectable (frames > 0)
   /// -modes: (frequency [Hz], defect participation) of each mode found.
   std::vector<std::pair<double, double>> modes;
+  std::vector<PeriodicSegment> periodic;  ///< the periodic continuations (summary.json "periodic")
   mesh::MeshSummary mesh;
 };
 

@@ -34,6 +34,18 @@ struct Crack {
 /// Shortest distance between two cracks (0 when they cross).
 double crack_distance(const Crack& a, const Crack& b);
 
+/// A transducer patch: the source acts on [center − width/2, center + width/2] of one
+/// edge (measured along x on the bottom and top edges, along y on the sides); the rest
+/// of that edge keeps the edge's own kind.
+struct SourcePatch {
+  bool on = false;
+  Side side = Side::Top;
+  double center = 0.0, width = 0.0;  ///< [m]
+  /// The patch's ends as positions along its edge.
+  double start() const { return center - 0.5 * width; }
+  double end() const { return center + 0.5 * width; }
+};
+
 struct SpecimenGeometry {
   double width = 0.05, height = 0.1;
   std::vector<Crack> cracks;
@@ -43,11 +55,16 @@ struct SpecimenGeometry {
   bool quads = true;              ///< -mesh_cell quad|tri
   std::array<EdgeKind, 4> edges = {EdgeKind::Absorbing, EdgeKind::Absorbing, EdgeKind::Source,
                                    EdgeKind::Absorbing};  ///< by Side
+  SourcePatch patch;              ///< -source_patch_edge, -source_patch_center, -source_patch_width
+  /// The patch's end points (x, y) on its edge.
+  std::array<std::array<double, 2>, 2> patch_ends() const;
 
   /// Throws std::invalid_argument naming the option: non-positive sizes, a
   /// crack reaching beyond the specimen or lying along an edge, crossing or
   /// touching cracks, a crack with fewer than 2 elements along it.
   void validate() const;
+  /// The patch lies on its edge, has a width, and the rest of its edge is not a source.
+  void validate_patch() const;
   /// Whether end `which` of crack c lies on the outer boundary (within tolerance).
   bool end_on_boundary(const Crack& c, int which) const;
 };

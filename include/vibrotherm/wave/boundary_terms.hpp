@@ -28,6 +28,9 @@ struct ForceState {
   const PetscScalar* mass = nullptr;      ///< lumped mass per dof
   const PetscScalar* velocity = nullptr;
   double kick_dt = 0.0;  ///< > 0: a velocity-Verlet kick of this length (dashpots act on its mean velocity)
+  /// Material damping C = αM on the kick's mean velocity makes every node's mass m (1 + α kick_dt/2)
+  /// for the terms that solve for the kick's acceleration (dashpots) or read a support force.
+  double mass_factor = 1.0;
 };
 
 /// What a term sees after an accepted step from t − h to t.
@@ -42,6 +45,7 @@ struct StepState {
 /// Energy a boundary exchanges with the waves, this rank's share [J/m].
 struct BoundaryEnergy {
   double radiated = 0.0, work_source = 0.0;
+  double damped = 0.0;  ///< dissipated by material damping (material_damping.hpp)
 };
 
 class BoundaryTerm {
@@ -74,6 +78,16 @@ class BoundaryTerm {
   /// ... and what it can: the last step's end state is the state restored (s.u, s.v).
   virtual void Resume(const StepState& /*s*/) {}
 };
+
+/// Material damping C = αM on every dof (material_damping.cpp): first of the terms, on the
+/// kick's mean velocity (unconditionally stable); accounted as `damped` unless `account` is
+/// false (local time stepping accounts it kick by kick). `mass`: lumped, global.
+PetscErrorCode CreateMaterialDamping(double rate, Vec mass, bool account, std::unique_ptr<BoundaryTerm>* term);
+
+/// The kick's acceleration with damping rate α: m a = F − α m (v + kick a/2).
+inline double DampedAcceleration(double interior, double v, double rate, double kick) {
+  return (interior - rate * v) / (1.0 + 0.5 * rate * kick);
+}
 
 /// The terms of a boundary, in the order they act: traction load, dashpots, constraints.
 /// `mass`: the lumped mass (global vector); `displacement_source`: the source prescribes.

@@ -1,13 +1,18 @@
 // The source on the labelled source edge (PHYSICS.md §2):
-//   g(t) = A sin(2π f t) w(t)
+//   g(t) = A(t) sin(2π f t) w(t)
 // with a smooth window w: sin² switch-on over -source_ramp_cycles cycles,
-// plateau, cos² switch-off ending at -source_duration, zero after.
+// plateau, cos² switch-off ending at -source_duration, zero after; and an
+// amplitude A(t) = -source_amplitude, stepped by -source_schedule t1,A1,t2,A2,...
+// (from t_i on A_i, reached by a sin² blend over max(ramp, one period)).
+// Between those changes the source is periodic: its steady stretches.
 // A displacement source prescribes the chosen component (tangential or normal
 // to the edge) and leaves the other free; a traction source applies g(t) [Pa]
 // along that direction.
 #pragma once
 
 #include <petscsys.h>
+
+#include <vector>
 
 namespace vibrotherm::wave {
 
@@ -19,9 +24,18 @@ struct SourceTimeFunction {
   double frequency = 1e5;     ///< [Hz]
   double duration = 1e-3;     ///< [s]
   double ramp_cycles = 3.0;   ///< cycles of switch-on and of switch-off
+  struct Step {
+    double t, amplitude;  ///< from t on, this amplitude (after the blend)
+  };
+  std::vector<Step> schedule;  ///< -source_schedule, by time
+  bool running_at_start = false;  ///< no switch-on: the waves start in the source's steady response
 
   /// g, dg/dt, d²g/dt² at time t.
   void evaluate(double t, double* g, double* dg, double* ddg) const;
+  double ramp_time() const;   ///< length of the switch-on and of the switch-off [s]
+  double blend_time() const;  ///< length of a schedule step's blend [s]
+  /// The steady stretch (constant amplitude, no ramp) holding t: [*start, *end]; false outside any.
+  bool steady_stretch(double t, double* start, double* end) const;
 };
 
 struct Excitation {

@@ -26,6 +26,7 @@ struct LtsOptions {
   PetscInt max_levels = 4;    ///< -wave_lts_max_levels
   double cfl = 0.7;           ///< -wave_lts_cfl: fraction of each level's own stability limit
   double wiggle = 1.0;        ///< -wave_lts_wiggle: SeisSol's λ
+  double step_quantum = 0.0;  ///< the macro step divides it (WaveOptions::step_quantum)
 };
 
 struct LtsLevels {

@@ -76,6 +76,9 @@ class LtsStepper {
   PetscInt contact_level() const { return contact_level_; }
   /// Times the contact moved to a finer level while stepping.
   PetscInt contact_refinements() const { return refinements_; }
+  /// This rank's energy dissipated by material damping (exact per kick: c α Σ m v̄²).
+  double damped() const { return damped_; }
+  void set_damped(double damped) { damped_ = damped; }
   /// The contact's level and moves (a restored checkpoint); call Start after.
   PetscErrorCode set_contact_state(PetscInt level, PetscInt refinements, double macro_step, PetscInt halvings);
   /// Between macro steps: a contact more than one level finer than the crack's
@@ -114,6 +117,7 @@ class LtsStepper {
   std::vector<LtsLevelInfo> info_;
   std::vector<PetscInt> element_finest_;  ///< per owned dof: finest level of its cells
   std::vector<PetscInt> contact_dofs_;    ///< owned dofs the contact acts on
+  std::vector<PetscInt> dof_level_;       ///< per owned dof: the level whose rate it moves at
   Vec mass_ = nullptr, scratch_ = nullptr;  ///< mass: not owned
   Vec work_ = nullptr;                      ///< IntegratorTerm's second vector
   Excitation excitation_;
@@ -123,6 +127,8 @@ class LtsStepper {
   PetscInt crack_level_ = 0;   ///< finest level of the crack's cells
   PetscInt halvings_ = 0;      ///< times H was halved for the contact  ///< the contact's next level, moved to after the current kick
   double H_ = 0.0, omega_dt_max_ = 2.0, cfl_ = 0.7;
+  double damping_rate_ = 0.0;  ///< material damping α (C = αM), applied in every kick
+  double damped_ = 0.0;        ///< this rank's energy dissipated by it, kick by kick
   MPI_Comm comm_ = MPI_COMM_NULL;
 };
 

@@ -11,6 +11,11 @@ struct ElasticMaterial {
   double density = 2700.0;  ///< -material_density [kg/m^3] (aluminium)
   double E = 70e9;          ///< -material_E [Pa]
   double nu = 0.33;         ///< -material_nu
+  /// Material damping C = α M (PHYSICS.md §2): α = η · 2π f_d from -material_loss_factor η at
+  /// -material_damping_frequency f_d (default the source frequency). 0: none.
+  double damping_rate = 0.0;
+  double loss_factor = 0.0;        ///< η as given
+  double damping_frequency = 0.0;  ///< f_d [Hz] it was fitted at
 
   double lambda() const { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }
   double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
@@ -21,5 +26,8 @@ struct ElasticMaterial {
 
 /// Reads -material_density, -material_E, -material_nu (validated, named errors).
 PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* material);
+/// Reads -material_loss_factor and -material_damping_frequency (default: source_frequency) into
+/// the damping rate. Collective.
+PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* material);
 
 }  // namespace vibrotherm::wave

@@ -14,7 +14,9 @@
 //               amplitude beyond its initial approach (the rule before issue 17;
 //               safe but several times smaller than needed in the paper scene).
 // Steps are rounded down to 4 significant digits so that runs on different rank
-// counts (whose eigenvalue solves differ in the last digits) share a time grid.
+// counts (whose eigenvalue solves differ in the last digits) share a time grid;
+// with a quantum q (WaveOptions::step_quantum: the heat step of a periodic
+// source) every step is q/n for a whole n, so that source periods end on steps.
 #pragma once
 
 #include <petscsys.h>
@@ -29,14 +31,17 @@ class StepControl {
  public:
   /// omega_dt_max = 0: an implicit type (no limit). fixed_dt > 0: the user's step.
   PetscErrorCode Setup(MPI_Comm comm, double omega_max, double omega_dt_max, double cfl, double fixed_dt,
-                       const char* ts_type);
+                       const char* ts_type, double quantum = 0.0);
   /// The initial step with the contact stiffness omega2 (rule's state) included.
   void IncludeContact(double omega2);
   /// A stiffness added to the bulk (a body force's, bounded by omega2): ω_bulk² += omega2,
   /// the step shrinks if it must (refused when -wave_dt is given and no longer stable).
   PetscErrorCode IncludeBulkStiffness(double omega2, const char* what);
-  /// After a step, with the contact's current omega2: *changed when the step shrank.
-  PetscErrorCode Check(double omega2, double time, PetscInt steps, bool* changed);
+  /// After a step, with the contact's current omega2: *changed when the step shrank. With a
+  /// quantum, off a quantum boundary (at_quantum false) a step still within the stability limit
+  /// is kept until the boundary, so that quanta stay whole numbers of steps.
+  PetscErrorCode Check(double omega2, double time, PetscInt steps, bool at_quantum, bool* changed);
+  double quantum() const { return quantum_; }
   double dt() const { return dt_; }
   double stable_dt() const { return stable_dt_; }
   double omega_dt_max() const { return omega_dt_max_; }
@@ -51,11 +56,13 @@ class StepControl {
   void UseMacroStep(double H) { dt_ = H; }
   /// Rounded down to 4 significant digits.
   static double RoundDown(double raw);
+  /// The largest q/n (n whole) not above RoundDown(raw); RoundDown(raw) itself when q <= 0.
+  static double Quantized(double raw, double q);
 
  private:
   double Limit(double omega2) const;  ///< (ω dt)_max / √(ω_bulk² + omega2)
   MPI_Comm comm_ = MPI_COMM_NULL;
-  double omega_max_ = 0.0, omega_dt_max_ = 0.0, cfl_ = 0.9, fixed_dt_ = 0.0;
+  double omega_max_ = 0.0, omega_dt_max_ = 0.0, cfl_ = 0.9, fixed_dt_ = 0.0, quantum_ = 0.0;
   double dt_ = 0.0, stable_dt_ = 0.0;
   double contact_omega2_ = 0.0;  ///< the contact's in the initial step (IncludeContact)
   PetscInt reductions_ = 0;

@@ -47,6 +47,12 @@ struct WaveOptions {
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
   StiffnessKernel kernel = StiffnessKernel::kBlocked;        ///< -wave_kernel petsc|blocked
   LtsOptions lts;  ///< -wave_lts on|off, -wave_lts_max_levels, -wave_lts_cfl, -wave_lts_wiggle
+  /// -wave_start harmonic: start from the steady response of the linearized waves to the running
+  /// source (harmonic_start.cpp) instead of rest; the source's switch-on is then skipped.
+  bool harmonic_start = false;
+  /// Every step divides this (0: any step): the heat step of a periodic source (-periodic on),
+  /// so that source periods end on wave steps (set by the scene, not an option).
+  double step_quantum = 0.0;
 };
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
@@ -66,6 +72,10 @@ class WaveInterface {
   virtual PetscErrorCode MarkDofs(Vec marker) = 0;
   /// Energy stored in the interface and dissipated so far [J/m] (global).
   virtual PetscErrorCode Energies(double* stored, double* dissipated) = 0;
+  /// The harmonic start (harmonic_start.cpp): the entries (global dof row, column, value) of the
+  /// interface's tangent stiffness at its committed state (this rank's cells) ...
+  virtual PetscErrorCode TangentStiffness(std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
+                                          std::vector<double>* values) const = 0;
 };
 
 /// Energies of the wave field, J per metre of depth. For velocity Verlet the
@@ -77,6 +87,7 @@ struct WaveEnergy {
   double kinetic = 0, strain = 0, radiated = 0, work_source = 0, integrator = 0;
   double interface_stored = 0, dissipated = 0;  ///< from the WaveInterface, if any
   double work_body = 0;  ///< work of the BodyForce on the waves, if any (two-way thermal stress)
+  double damped = 0;     ///< dissipated by material damping (-material_loss_factor)
 };
 
 class WaveSolver {
@@ -119,6 +130,9 @@ class WaveSolver {
   bool implicit() const { return step_.implicit(); }
   double omega_max() const { return omega_max_; }
   PetscInt dt_reductions() const { return lts_active_ ? lts_.contact_refinements() : step_.reductions(); }
+  /// -wave_start harmonic: u, v at t = 0 the steady response to the source at its frequency, with the
+  /// interface linearized at its initial state (harmonic_start.cpp). After SetInterface. Collective.
+  PetscErrorCode StartHarmonic();
   /// Local time stepping: whether it runs, its levels, and why not when asked for but off.
   bool lts_active() const { return lts_active_; }
   const LtsStepper& lts() const { return lts_; }
@@ -140,6 +154,11 @@ class WaveSolver {
   /// Restore after Setup and SetInterface; the interface restores itself.
   PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
   PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  /// What grows with time rather than repeating in a periodic state (this rank's: the clock,
+  /// radiated, source work, body work, damped), for the periodic continuation ...
+  std::vector<double> Accumulated() const;
+  /// ... which jumps ahead by adding increments of these (after restoring a stored state).
+  PetscErrorCode JumpAhead(const std::vector<double>& increments);
 
  private:
   // Explicit types (wave_solver.cpp).
@@ -163,6 +182,10 @@ class WaveSolver {
   PetscErrorCode CheckMacroStep();
   /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
   PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
+  // The harmonic start (harmonic_start.cpp).
+  PetscErrorCode AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const;
+  /// The state's energy (the stuck springs' with it) as the source's work at t = 0.
+  PetscErrorCode BookInitialEnergy();
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
   PetscErrorCode SetupAlpha2(MPI_Comm comm);
   static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);

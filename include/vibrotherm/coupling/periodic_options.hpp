@@ -1,0 +1,33 @@
+// Periodic continuation's options (-periodic*; periodic_continuation.hpp).
+#pragma once
+
+#include <petscsys.h>
+
+namespace vibrotherm::coupling {
+
+/// -periodic auto|on|off: auto continues when heat runs (the continuation feeds the heat;
+/// without it, continuing would only skip the waves a wave-only run is for).
+enum class PeriodicChoice { Auto, On, Off };
+
+struct PeriodicOptions {
+  PeriodicChoice choice = PeriodicChoice::Auto;
+  bool on = true;             ///< choice is not off, and the coupling can compare whole periods
+  double tol = 3e-3;          ///< -periodic_tol: largest change per period of the state and energies
+  /// -periodic_tol_cells: largest change of the contact cell by cell (memory, friction energy's
+  /// distribution: it wanders by ~0.4 % from window to window in the paper scene while the total
+  /// repeats to 1e-5)
+  double tol_cells = 1e-2;
+  PetscInt max_multiple = 4;  ///< -periodic_max_multiple: longest period sought, in source periods
+  /// -periodic_window: periods (of the period found) whose friction energy is compared with the
+  /// window before, recorded and replayed as one: the contact's period-to-period noise averages out
+  PetscInt window = 4;
+  double refresh = 0.0;       ///< -periodic_refresh [s]: waves re-run after this much continuation (0: never)
+  PetscInt ladder_steps = 16;  ///< -periodic_ladder_steps: heat steps per rung (the step doubles after them)
+  PetscInt fine_periods = 4;   ///< -periodic_fine_periods: phase-resolved heat periods before the ladder
+  PetscInt min_continued = 8;  ///< -periodic_min_continued: fewer periods to skip are simply simulated
+};
+
+/// Reads -periodic*, checked, named errors. Collective.
+PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* options);
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,65 @@
+"""A run with periodic continuation against a fully resolved run of the same scene
+(-periodic_min_continued 1e9: the same quantized wave step, no continuation): the
+figures issue 24 asks for. Used by tests/scene/test_periodic_continuation.py,
+scripts/convergence --study periodic and scripts/bench periodic."""
+import json
+import os
+
+import numpy as np
+
+from run_data import read_csv
+
+
+def summary(out):
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)
+
+
+def relative(a, b):
+    return a / b - 1.0 if b != 0 else (0.0 if a == 0 else float("inf"))
+
+
+def probe_rows(out, probe):
+    p = read_csv(os.path.join(out, "probes.csv"))
+    keep = (p["probe"] == probe) & np.isfinite(p["temperature"])
+    return p["t"][keep], p["temperature"][keep]
+
+
+def at_period_ends(out, ref, probe, period, t0, t1):
+    """The probe's rise at every period end in [t0, t1] where both runs have a row:
+    (times, rise of out, rise of ref)."""
+    T0 = summary(ref)["derived"].get("heat_T0", 293.15)
+    ta, Ta = probe_rows(out, probe)
+    tb, Tb = probe_rows(ref, probe)
+    times, a, b = [], [], []
+    for t, temperature in zip(ta, Ta):
+        k = t / period
+        if t < t0 or t > t1 or abs(k - round(k)) > 1e-6:
+            continue
+        j = np.searchsorted(tb, t)
+        for i in (j - 1, j):
+            if 0 <= i < len(tb) and abs(tb[i] - t) < 1e-6 * period:
+                times.append(t), a.append(temperature - T0), b.append(Tb[i] - T0)
+                break
+    return np.array(times), np.array(a), np.array(b)
+
+
+def compare(out, ref, crack_probe, period, t0=0.0, t1=np.inf):
+    """Errors of `out` against `ref`: dissipated energy, heat content, crack probe rise at period ends
+    (largest over [t0, t1], against the largest rise of the reference), camera peak pixel, wall ratio."""
+    s, r = summary(out), summary(ref)
+    times, a, b = at_period_ends(out, ref, crack_probe, period, t0, t1)
+    result = {
+        "dissipated": relative(s["dissipated_energy"], r["dissipated_energy"]),
+        "heat_content": relative(s["heat_content"], r["heat_content"]),
+        "crack_probe_period_ends": len(times),
+        "crack_probe": float(np.max(np.abs(a - b)) / np.max(np.abs(b))) if len(times) else float("nan"),
+        "wall_ratio": r["wall_time_s"] / s["wall_time_s"],
+        "wall": s["wall_time_s"],
+        "wall_reference": r["wall_time_s"],
+        "continued": s["derived"].get("periodic_periods_continued", 0),
+        "reached_at": s["derived"].get("periodic_reached_at", float("nan")),
+    }
+    if "camera" in s and "camera" in r and r["camera"].get("peak_rise"):
+        result["camera_peak"] = relative(s["camera"]["peak_rise"], r["camera"]["peak_rise"])
+    return result

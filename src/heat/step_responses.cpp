@@ -1,0 +1,101 @@
+// How loads reach a probe through the coupled integrator: the adjoint of its
+// steps (used by coupling/crack_near_field to take the heat mesh's response
+// to the last few heat steps' friction heat out of the crack probes).
+//
+// A theta-family step of length h (w = 1: backward Euler) is
+//   (M/h + wK) θ_n = (M/h − (1−w)K) θ_{n−1} + Q_n   on the free rows, θ = 0 on sinks,
+// i.e. θ_n = P (wJ_n)⁻¹ (B_n θ_{n−1} + Q_n) with J_n = K + M/(w h_n) (the TS's
+// Jacobian, sinks as identity rows with zeroed columns), B_n = M/h_n − (1−w)K and
+// P the projection on the free rows. A load Q in step n − k adds w_kᵀQ to φᵀθ_n,
+//   w_0 = P(wJ_n)⁻¹ φ,  w_k = P(wJ_{n−k})⁻¹ B_{n−k+1} w_{k−1}
+// (J, B symmetric): one solve per lag, with factorisations of its own, kept for
+// the last few step lengths.
+#include "vibrotherm/heat/heat_solver.hpp"
+
+#include <petscdmplex.h>
+
+#include <cmath>
+
+namespace vibrotherm::heat {
+
+PetscErrorCode HeatSolver::ProbeFunctional(std::size_t probe, Vec phi) const {
+  PetscFunctionBeginUser;
+  PetscSection section;
+  PetscCall(DMGetLocalSection(dm_, &section));
+  Vec local;
+  PetscCall(DMGetLocalVector(dm_, &local));
+  PetscCall(VecSet(local, 0.0));
+  const fe::LocatedPoint& p = probes_.at(probe);
+  if (p.cell >= 0) PetscCall(DMPlexVecSetClosure(dm_, section, local, p.cell, p.phi.data(), INSERT_VALUES));
+  PetscCall(VecSet(phi, 0.0));
+  PetscCall(DMLocalToGlobal(dm_, local, ADD_VALUES, phi));
+  PetscCall(DMRestoreLocalVector(dm_, &local));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ResponseSolver(double dt, double w, KSP* ksp) {
+  PetscFunctionBeginUser;
+  const double shift = 1.0 / (w * dt);
+  for (const ResponseFactor& f : response_factors_)
+    if (std::abs(shift - f.shift) <= 1e-10 * shift) {  // as the TS keeps its Jacobian
+      *ksp = f.ksp;
+      PetscFunctionReturn(0);
+    }
+  if (response_factors_.size() == 4) {  // a new step length: the oldest factor goes
+    PetscCall(KSPDestroy(&response_factors_.front().ksp));
+    PetscCall(MatDestroy(&response_factors_.front().J));
+    response_factors_.erase(response_factors_.begin());
+  }
+  ResponseFactor f{shift, nullptr, nullptr};
+  PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &f.J));
+  PetscCall(MatSetOption(f.J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(AssembleJacobian(this, shift, f.J));
+  PetscCall(KSPCreate(PetscObjectComm((PetscObject)dm_), &f.ksp));
+  PetscCall(KSPSetOptionsPrefix(f.ksp, "heat_response_"));
+  PetscCall(ConfigureLinearSolver(f.ksp, global_dofs_ <= kDirectSolveDofs));
+  PetscCall(KSPSetOperators(f.ksp, f.J, f.J));
+  PetscCall(KSPSetFromOptions(f.ksp));
+  response_factors_.push_back(f);
+  *ksp = f.ksp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::StepResponses(Vec phi, const std::vector<double>& lengths, std::vector<Vec>* w,
+                                         bool* supported) {
+  PetscFunctionBeginUser;
+  w->clear();
+  double weight;
+  PetscCall(ThetaWeight(coupled_ts_, supported, &weight));
+  if (!*supported) PetscFunctionReturn(0);
+  Vec rhs, mass;
+  PetscCall(VecDuplicate(theta_, &rhs));
+  PetscCall(VecDuplicate(theta_, &mass));
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(rhs, &rstart, nullptr));
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
+    if (k == 0) {
+      PetscCall(VecCopy(phi, rhs));
+    } else {  // B_{n−k+1} w_{k−1} = (M/h − (1 − w) K) w_{k−1}, h the step after
+      PetscCall(MatMult(K_, w->back(), rhs));
+      PetscCall(VecScale(rhs, -(1.0 - weight)));
+      PetscCall(MatMult(M_, w->back(), mass));
+      PetscCall(VecAXPY(rhs, 1.0 / lengths[k - 1], mass));
+    }
+    KSP ksp;
+    PetscCall(ResponseSolver(lengths[k], weight, &ksp));
+    Vec next;
+    PetscCall(VecDuplicate(theta_, &next));
+    PetscCall(KSPSolve(ksp, rhs, next));
+    PetscCall(VecScale(next, 1.0 / weight));
+    PetscScalar* x;
+    PetscCall(VecGetArray(next, &x));
+    for (PetscInt row : boundary_.sink_rows) x[row - rstart] = 0.0;  // P
+    PetscCall(VecRestoreArray(next, &x));
+    w->push_back(next);
+  }
+  PetscCall(VecDestroy(&rhs));
+  PetscCall(VecDestroy(&mass));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::heat
