@@ -1,7 +1,11 @@
 #include "vibrotherm/coupling/field_peak.hpp"
 
 #include <array>
+#include <cstdio>
+#include <string>
 #include <vector>
+
+#include "vibrotherm/coupling/model_validity.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -52,9 +56,27 @@ PetscErrorCode FieldPeak::Update(const heat::HeatSolver& heat) {
     PetscCall(VecRestoreArrayRead(x_, &x));
     PetscCall(VecRestoreArrayRead(y_, &y));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, place, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)x_)));
+  MPI_Comm comm = PetscObjectComm((PetscObject)x_);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, place, 2, MPI_DOUBLE, MPI_SUM, comm));
+  const bool crossed = rise > kConstantPropertyRise && !(peak_.known && peak_.rise > kConstantPropertyRise);
   peak_ = {true, rise, heat.time(), place[0], place[1]};
+  if (crossed)  // once: a restart past it knows from the restored peak
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: %s\n", ValidityWarning().c_str()));
   PetscFunctionReturn(0);
+}
+
+std::string FieldPeak::ValidityWarning() const {
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "the temperature rise reached %.3g K at t = %.4g s (x = %.4g m, y = %.4g m): the model keeps the "
+                "material properties constant, which holds for rises up to about %g K",
+                peak_.rise, peak_.t, peak_.x, peak_.y, kConstantPropertyRise);
+  return text;
+}
+
+void FieldPeak::Summarise(io::RunSummary* summary) const {
+  summary->field_peak = peak_;
+  if (peak_.known && peak_.rise > kConstantPropertyRise) summary->warnings.push_back(ValidityWarning());
 }
 
 }  // namespace vibrotherm::coupling

@@ -107,11 +107,15 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
   const double heat_dt = scene_->couple_dt / per_interval;
   const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
+  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
+  const double expected_end =
+      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
-                        "omega_max %.4g rad/s), up to %.0f steps to t = %g s\n",
+                        "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
                         solver.dofs(), scene_->wave.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
-                        std::ceil(final_time / solver.dt()), final_time));
+                        std::ceil(expected_end / solver.dt()), expected_end,
+                        expected_end < final_time ? ", where they should be quiet (they stop once they are)" : ""));
   if (heat_)
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
                           heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
@@ -122,9 +126,6 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     if (heat_) heat_->AfterWaveStep(w.time(), w.steps() % probe_every == 0);
     return recorder.OnWaveStep(w, energy_each_step);
   };
-  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
-  const double expected_end =
-      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
   recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(wave_stage_));
@@ -140,7 +141,8 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
     *stop = interrupted_by_ != 0;
     PetscFunctionReturn(0);
   };
-  bool quiet = false;
+  bool quiet = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
+  if (quiet) heat_alone_from_ = solver.time();
   if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
     bool continued;
     PetscCall(periodic_->FinishInterrupted(recorder, &continued));
@@ -255,6 +257,10 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   PetscCall(heat.UseFreeIntegrator());
   const double t_begin = heat.time();
   const PetscInt steps_before = heat.steps();
+  PetscCall(PetscPrintf(comm, "Heat alone from t = %.6g s to %g s: %s\n", t_begin, final_time,
+                        heat_alone_from_ >= 0.0 ? "a stop from here resumes (-restart) where the waves stopped, repeating "
+                                                  "this phase"
+                                                : "not resumable (no checkpoint of this scene): a stop loses the run"));
   recorder.progress().Start(comm, "heat", t_begin, final_time, 0.0, true);
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
@@ -276,10 +282,13 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
     if (recorder.OutputDue(heat.time())) PetscCall(recorder.WriteFields(heat.time(), nullptr, heat_.get()));
   }
   heat.on_step = nullptr;
-  if (interrupted_by_)
+  if (interrupted_by_ && heat_alone_from_ >= 0.0)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
-                                "repeats this phase from the last checkpoint of the waves)\n",
-                          SignalName(interrupted_by_), heat.time()));
+                                "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
+                          SignalName(interrupted_by_), heat.time(), heat_alone_from_));
+  else if (interrupted_by_)
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
+                                "(this scene has none): the run is lost\n", SignalName(interrupted_by_), heat.time()));
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());

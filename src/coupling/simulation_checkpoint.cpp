@@ -27,27 +27,32 @@ PetscErrorCode Simulation::CheckpointIfDue(Recorder& recorder, bool quiet) {
   bool due;
   int signal;
   PetscCall(schedule_.Poll(&due, &signal));
-  // Not when the waves have just gone quiet: a restart would not know they had.
-  if (due && checkpoints_ && !quiet) {
+  // Always where the waves stop (the checkpoint says so): a stop while the heat
+  // runs alone resumes from there, repeating only that phase.
+  const bool stopping_waves = quiet && heat_ && !interrupted_by_;
+  if ((due || stopping_waves) && checkpoints_) {
     PetscCall(PetscLogEventBegin(schedule_.event(), 0, 0, 0, 0));
-    PetscCall(WriteCheckpoint(recorder));
+    PetscCall(WriteCheckpoint(recorder, quiet));
     PetscCall(PetscLogEventEnd(schedule_.event(), 0, 0, 0, 0));
     schedule_.Written();
+    if (stopping_waves) heat_alone_from_ = waves_->solver().time();
   }
   if (!signal) PetscFunctionReturn(0);
   interrupted_by_ = signal;
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: %s\n", SignalName(signal), waves_->solver().time(),
-                        checkpoints_ && !quiet ? "checkpoint written, stopping (continue with -restart <output dir>)"
-                                               : "stopping without a checkpoint"));
+                        checkpoints_ ? "checkpoint written, stopping (continue with -restart <output dir>)"
+                                     : "stopping without a checkpoint"));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder) const {
+PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder, bool waves_quiet) const {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   io::Checkpoint checkpoint(comm);
   checkpoint.PutText("run/fingerprint", control_.fingerprint);
+  // The waves went quiet in the interval just ended: a restart stops them at once.
+  if (waves_quiet) checkpoint.PutShared("run/waves_quiet", {1.0});
   PetscCall(waves_->Save(checkpoint, *specimen_));
   if (heat_) PetscCall(heat_->Save(checkpoint, *specimen_));
   PetscCall(recorder.Save(checkpoint));
@@ -76,6 +81,7 @@ PetscErrorCode Simulation::Resume(const io::Checkpoint& checkpoint, Recorder& re
   recent_.clear();
   for (std::size_t i = 2; i + 4 < quiet.size(); i += 5)
     recent_.push_back({quiet[i], quiet[i + 1], quiet[i + 2], quiet[i + 3], quiet[i + 4]});
+  waves_quiet_at_restart_ = checkpoint.Has("run/waves_quiet");
   PetscCall(PetscPrintf(comm, "Restarted from the checkpoint at t = %.6g s (wave step %" PetscInt_FMT ")\n",
                         waves_->solver().time(), waves_->solver().steps()));
   PetscFunctionReturn(0);

@@ -85,6 +85,10 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   // the matrix is factored once.
   PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, &coupled_ts_));
   ts_ = coupled_ts_;
+  // The free phase's TS now too, not when the waves stop: its options (-heat_free_*)
+  // are read, and a bad one refused, before any step.
+  PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
+  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
   PetscFunctionReturn(0);
 }
 
@@ -402,10 +406,6 @@ PetscErrorCode HeatSolver::UseFreeIntegrator() {
   // proposal, an error estimate's); nothing stepped yet: the TS's initial step.
   PetscReal dt = last_step_;
   if (dt <= 0.0) PetscCall(TSGetTimeStep(ts_, &dt));
-  if (!free_ts_) {
-    PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
-    PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
-  }
   PetscCall(TSSetTime(free_ts_, time_));
   PetscCall(TSSetTimeStep(free_ts_, dt));
   TSAdapt adapt;

@@ -50,10 +50,17 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::commit() {
   out_.flush();
-  if (!out_) throw std::runtime_error("write error on '" + partial_name(path_) + "'");
+  if (!out_) throw std::runtime_error("write error on '" + (published_ ? path_ : partial_name(path_)) + "'");
   out_.close();
-  publish(path_);
+  if (!published_) publish(path_);
   committed_ = true;
+}
+
+void AtomicFile::publish_open() {
+  out_.flush();
+  if (!out_) throw std::runtime_error("write error on '" + partial_name(path_) + "'");
+  publish(path_);
+  published_ = committed_ = true;  // nothing under the .partial name to remove any more
 }
 
 void AtomicFile::publish(const std::string& path) {

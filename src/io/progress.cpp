@@ -2,8 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace vibrotherm::io {
+
+std::string StepCount(long long steps, double t, double t_end, double dt) {
+  char text[160];
+  if (t >= t_end)  // the waves outlast their expected end: no count to show
+    std::snprintf(text, sizeof(text), "step %lld, past the expected end (t = %.4g s): the waves are not quiet yet", steps,
+                  t_end);
+  else
+    std::snprintf(text, sizeof(text), "step %lld/%.0f", steps, static_cast<double>(steps) + std::ceil((t_end - t) / dt));
+  return text;
+}
 
 void Progress::Start(MPI_Comm comm, std::string label, double t_begin, double t_end, double dt, bool log_time) {
   int rank = 0;
@@ -15,7 +26,7 @@ void Progress::Start(MPI_Comm comm, std::string label, double t_begin, double t_
   dt_ = dt;
   log_time_ = log_time && t_begin > 0.0;
   wall_start_ = wall_last_ = MPI_Wtime();
-  steps_start_ = -1;
+  steps_start_ = steps_last_ = -1;
 }
 
 double Progress::Fraction(double t) const {
@@ -27,15 +38,21 @@ double Progress::Fraction(double t) const {
 PetscErrorCode Progress::Update(double t, long long steps) {
   PetscFunctionBeginUser;
   if (steps_start_ < 0) steps_start_ = steps;
+  // The step now, from the last step taken: the contact may have shrunk it since Start.
+  if (steps > steps_last_ && steps_last_ >= 0 && t > t_last_) dt_ = (t - t_last_) / static_cast<double>(steps - steps_last_);
+  steps_last_ = steps, t_last_ = t;
   const double now = MPI_Wtime();
   if (!speaker_ || now - wall_last_ < 2.0) PetscFunctionReturn(0);
   wall_last_ = now;
   const double done = Fraction(t), elapsed = now - wall_start_;
   const double rate = (steps - steps_start_) / elapsed, eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
-  if (dt_ > 0.0)
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR,
-                           "%s: t = %.4g s, step %lld/%.0f (%.1f %%), %.3g steps/s, ETA %.0f s\n", label_.c_str(), t,
-                           steps, std::ceil((t_end_ - t_begin_) / dt_), 100.0 * done, rate, eta));
+  const std::string count = dt_ > 0.0 ? StepCount(steps, t, t_end_, dt_) : "";
+  if (dt_ > 0.0 && t < t_end_)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s (%.1f %%), %.3g steps/s, ETA %.0f s\n",
+                           label_.c_str(), t, count.c_str(), 100.0 * done, rate, eta));
+  else if (dt_ > 0.0)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s, %.3g steps/s\n", label_.c_str(), t,
+                           count.c_str(), rate));
   else
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s (%.1f %%%s), step %lld, ETA %.0f s\n",
                            label_.c_str(), t, 100.0 * done, log_time_ ? " in log time" : "", steps, eta));

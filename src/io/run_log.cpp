@@ -57,6 +57,14 @@ PetscErrorCode RunLogOpen(MPI_Comm comm, const std::string& path) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode RunLogPublish() {
+  PetscFunctionBeginUser;
+  Log& log = TheLog();
+  // Rank 0 writes the log; a failure there ends every rank (a runtime failure).
+  if (log.file) VibrothermCallIo(PETSC_COMM_SELF, log.file->publish_open());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RunLogClose() {
   PetscFunctionBeginUser;
   Log& log = TheLog();

@@ -99,6 +99,9 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("host", s.host).value("command_line", s.command_line);
       json.value("complete", s.complete);
       if (!s.restarted_from.empty()) json.value("restarted_from", s.restarted_from);
+      json.begin_array("warnings");  // where the run left the model's validity (coupling/model_validity.hpp)
+      for (const std::string& w : s.warnings) json.value(nullptr, w);
+      json.end_array();
       json.begin_array("physics_ran");
       for (const std::string& p : s.physics_ran) json.value(nullptr, p);
       json.end_array();

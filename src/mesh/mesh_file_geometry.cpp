@@ -4,7 +4,9 @@
 // unsplit mesh for heat (or takes -heat_mesh_file).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 
 #include "vibrotherm/mesh/mesh_data.hpp"
 
@@ -31,12 +33,24 @@ std::vector<std::pair<int, int>> outer_edges(const MeshData& m) {
 
 }  // namespace
 
-bool rectangle_geometry(const MeshData& m, SpecimenGeometry* g) {
+namespace {
+
+std::string at(Point p) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%.4g, %.4g)", p[0], p[1]);
+  return text;
+}
+
+}  // namespace
+
+bool rectangle_geometry(const MeshData& m, SpecimenGeometry* g, std::string* why) {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
   for (int v = 0; v < m.vertex_count(); ++v) {
     const Point p = vertex(m, v);
     x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
   }
+  const std::string outline = "the specimen is not the rectangle [0, W] x [0, H] (origin at its bottom-left corner)";
+  *why = outline;
   if (std::abs(x0) > 1e-12 || std::abs(y0) > 1e-12) return false;  // the origin is the bottom-left corner
   const double tol = 1e-9 * std::max(x1, y1);
   double longest = 0.0;
@@ -63,16 +77,23 @@ bool rectangle_geometry(const MeshData& m, SpecimenGeometry* g) {
     std::vector<Point> ends;
     for (const auto& [v, d] : degree)
       if (d == 1) ends.push_back(vertex(m, v));
+    *why = m.crack_names[c] + " is not one open line";
     if (ends.size() != 2) return false;
     const double dx = ends[1][0] - ends[0][0], dy = ends[1][1] - ends[0][1], L = std::hypot(dx, dy);
-    for (const auto& [v, d] : degree) {  // straight: every vertex on the line through the ends
+    Point farthest = ends[0];  // straight: every vertex on the line through the ends
+    double off = 0.0;
+    for (const auto& [v, d] : degree) {
       const Point p = vertex(m, v);
-      if (std::abs((p[0] - ends[0][0]) * dy - (p[1] - ends[0][1]) * dx) / L > 1e-9 * L) return false;
+      const double distance = std::abs((p[0] - ends[0][0]) * dy - (p[1] - ends[0][1]) * dx) / L;
+      if (distance > off) off = distance, farthest = p;
     }
+    *why = m.crack_names[c] + " is not straight (it bends at " + at(farthest) + ")";
+    if (off > 1e-9 * L) return false;
     g->cracks.push_back({0.5 * (ends[0][0] + ends[1][0]), 0.5 * (ends[0][1] + ends[1][1]), L,
                          std::atan2(dy, dx) * 180.0 / M_PI});
   }
   g->h_crack = crack_edges > 0 ? crack_edge_length / crack_edges : g->h;
+  why->clear();
   return true;
 }
 

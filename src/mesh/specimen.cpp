@@ -134,6 +134,44 @@ PetscErrorCode ShareGeometry(MPI_Comm comm, bool* usable, SpecimenGeometry* g) {
   PetscFunctionReturn(0);
 }
 
+/// Meshing may take minutes (gmsh's recombination into quads grows faster than the
+/// cells): said before it starts, with the cells to expect and the faster way.
+PetscErrorCode AnnounceMeshing(MPI_Comm comm, const MeshSource& source, const SpecimenGeometry& geometry) {
+  PetscFunctionBeginUser;
+  if (source.from_file) {
+    PetscCall(PetscPrintf(comm, "Meshing: reading %s\n", source.file));
+    PetscFunctionReturn(0);
+  }
+  const double cells = EstimateMemory(geometry, 0, 1, 1).wave_cells;
+  constexpr double kLarge = 1e5;  // cells: gmsh then takes tens of seconds to minutes on one core
+  PetscCall(PetscPrintf(comm, "Meshing with gmsh on rank 0: about %.2g wave cells, then the heat mesh%s\n", cells,
+                        cells > kLarge && source.refinements == 0
+                            ? " (a large mesh: minutes; meshing coarser and -dm_refine 1 is about 4x faster)"
+                            : ""));
+  PetscFunctionReturn(0);
+}
+
+/// A mesh file whose heat mesh cannot be graded to its cracks (ungraded: why, on
+/// rank 0): the heat falls back to the wave mesh, far too coarse at the cracks.
+/// Said loudly, with the cost and the ways out, unless -heat_mesh wave asked for it.
+PetscErrorCode WarnUngradedHeatMesh(MPI_Comm comm, const char* file, const std::string& ungraded, double exchange_length) {
+  PetscFunctionBeginUser;
+  char kind[16] = "";
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-heat_mesh", kind, sizeof(kind), nullptr));
+  if (std::string(kind) == "wave") PetscFunctionReturn(0);
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "vibrotherm: warning: -mesh_file %s: %s, so no heat mesh can be graded to its cracks: the heat "
+                          "runs on the unsplit wave mesh, whose elements at a crack are far thicker than the %.2g m "
+                          "layer friction heats in one exchange (crack temperatures tens of percent low early on: "
+                          "-50 %% at 0.1 ms in the paper scene). Give -heat_mesh_file with a heat mesh graded to the "
+                          "cracks, or -heat_mesh wave to accept this\n",
+                          file, ungraded.c_str(), exchange_length));
+  PetscFunctionReturn(0);
+}
+
 /// The serial heat mesh, or null when the heat uses the unsplit wave mesh:
 /// -heat_mesh_file; else generated and graded (a generated specimen, or a
 /// mesh-file rectangle with straight cracks, its sinks kept from the file).
@@ -149,6 +187,7 @@ PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const Mesh
     if (source.heat_from_file) {
       data = read_mesh_file(source.heat_file);
       check_crack_lines(data, std::string("-heat_mesh_file ") + source.heat_file);
+      check_cracks_apart(data, std::string("-heat_mesh_file ") + source.heat_file);
       if (data.crack_names != names)
         throw std::invalid_argument(std::string("-heat_mesh_file ") + source.heat_file +
                                     ": its crack curves must be those of -mesh_file, in the same order");
@@ -177,17 +216,24 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
   MeshData data;
   bool generate_heat = !source.from_file;
+  PetscCall(AnnounceMeshing(comm, source, geometry));
+  const double t0 = MPI_Wtime();
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
+  std::string ungraded;  // why a mesh file's heat mesh cannot be generated (rank 0)
   PetscCall(RunOnRoot(comm, [&] {
+    const std::string where = source.from_file ? std::string("-mesh_file ") + source.file : "generated mesh";
     data = source.from_file ? read_mesh_file(source.file) : generate_specimen_mesh(geometry);
-    check_crack_lines(data, source.from_file ? std::string("-mesh_file ") + source.file : std::string("generated mesh"));
-    if (source.from_file) generate_heat = rectangle_geometry(data, &geometry);
+    check_crack_lines(data, where);
+    check_cracks_apart(data, where);
+    if (source.from_file) generate_heat = rectangle_geometry(data, &geometry, &ungraded);
   }));
   PetscCall(PetscLogEventEnd(log.generate, 0, 0, 0, 0));
   if (source.from_file) PetscCall(ShareGeometry(comm, &generate_heat, &geometry));
   HeatMeshSizes heat_sizes;
   if (generate_heat) PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
   PetscCall(ShareCrackNames(comm, data, geometry, source.from_file, &s->cracks));
+  if (!generate_heat && !source.heat_from_file && !s->cracks.empty())
+    PetscCall(WarnUngradedHeatMesh(comm, source.file, ungraded, exchange_length));
   s->source = source.from_file ? source.file : "generated";
   std::vector<std::string> names;
   for (const CrackInfo& c : s->cracks) names.push_back(c.name);
@@ -196,6 +242,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(PetscLogEventBegin(log.heat_generate, 0, 0, 0, 0));
   PetscCall(BuildHeatMesh(comm, source, data, geometry, generate_heat, heat_sizes, names, &heat, &s->heat_source));
   PetscCall(PetscLogEventEnd(log.heat_generate, 0, 0, 0, 0));
+  PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
   PetscCall(PetscLogEventBegin(log.build, 0, 0, 0, 0));
   PetscCall(BuildSerialPlex(comm, data, names, source.refinements, &serial));
   data = MeshData{};  // free the arrays
@@ -241,14 +288,39 @@ PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+/// -mesh_file sets the specimen's outline, cracks, mesh and edges: the options of a
+/// generated specimen given with it (an options file written for one, such as
+/// paper.opts) are ignored, said in one note.
+PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
+  PetscFunctionBeginUser;
+  static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
+                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
+                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right"};
+  std::string given;
+  for (const char* name : names) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    if (set) given += std::string(given.empty() ? "" : ", ") + name;
+  }
+  if (!given.empty())
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: -mesh_file %s sets the specimen, its cracks, mesh and edges: %s "
+                                "ignored\n", file, given.c_str()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
 PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length) {
   PetscFunctionBeginUser;
   MeshSource source;
   PetscCall(ReadMeshSource(comm, &source));
   SpecimenGeometry geometry;
-  PetscCall(ReadSpecimenGeometry(comm, &geometry));
-  HeatMeshSizes sizes;
-  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes));
+  PetscCall(ReadSpecimenGeometry(comm, &geometry, !source.from_file));
+  if (source.from_file) PetscCall(NoteIgnoredGeometry(comm, source.file));
+  HeatMeshSizes sizes;  // a mesh file's are derived from the file once read
+  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes, !source.from_file));
   PetscFunctionReturn(0);
 }
 

@@ -50,7 +50,7 @@ PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeo
 
 }  // namespace
 
-PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g) {
+PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
   std::vector<double> centers, lengths, angles;
   PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
@@ -74,8 +74,9 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g) {
     PetscCall(ReadEdgeKind(PetscOptionsObject, side, &g->edges[static_cast<int>(side)]));
   PetscCall(ReadSourcePatch(PetscOptionsObject, g));
   PetscOptionsEnd();
-
   g->quads = cell == 0;
+  if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry
+
   const PetscInt ncenters = static_cast<PetscInt>(centers.size()), nlengths = static_cast<PetscInt>(lengths.size()),
                  nangles = static_cast<PetscInt>(angles.size());
   PetscCheck(ncenters % 2 == 0, comm, PETSC_ERR_USER_INPUT, "-crack_center needs x,y pairs (got %" PetscInt_FMT " values)",
@@ -102,32 +103,38 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g) {
 }
 
 PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
-                                 HeatMeshSizes* sizes) {
+                                 HeatMeshSizes* sizes, bool check) {
   PetscFunctionBeginUser;
   // Defaults from the physics: the first layer resolves the layer one exchange
-  // heats; layers grow to the wave mesh's crack spacing / 2 (the Q2 contact-node spacing).
-  sizes->h_crack = 0.5 * exchange_length;
-  sizes->h_along = 0.5 * g.h_crack;
+  // heats; layers grow to the wave mesh's crack spacing / 2 (the Q2 contact-node
+  // spacing). Each default is capped by the next size: a slow source (1 Hz: a 2 mm
+  // exchange layer) must not fail on sizes the user never set.
   sizes->h = g.h;
+  sizes->h_along = std::min(0.5 * g.h_crack, sizes->h);
+  sizes->h_crack = std::min(0.5 * exchange_length, sizes->h_along);
   sizes->grading = 2.0 * g.grading;  // diffusion smooths: the heat mesh may coarsen faster
+  PetscBool h_crack_set = PETSC_FALSE, h_along_set = PETSC_FALSE;
   PetscInt kind = sizes->graded ? 1 : 0;
   PetscOptionsBegin(comm, nullptr, "Heat mesh (generated specimens)", nullptr);
   PetscCall(OptionsChoice(PetscOptionsObject, "-heat_mesh",
                           "Heat mesh: its own, graded to the cracks, or the unsplit wave mesh", {"wave", "graded"},
                           &kind, nullptr));
   PetscCall(PetscOptionsReal("-heat_mesh_h_crack", "First layer thickness at the cracks [m] (default: half of sqrt(alpha couple_dt))",
-                             nullptr, sizes->h_crack, &sizes->h_crack, nullptr));
+                             nullptr, sizes->h_crack, &sizes->h_crack, &h_crack_set));
   PetscCall(PetscOptionsReal("-heat_mesh_growth", "Thickness ratio of successive layers", nullptr, sizes->growth,
                              &sizes->growth, nullptr));
   PetscCall(PetscOptionsReal("-heat_mesh_h_along", "Element length along the cracks [m] (default: -mesh_h_crack / 2)",
-                             nullptr, sizes->h_along, &sizes->h_along, nullptr));
+                             nullptr, sizes->h_along, &sizes->h_along, &h_along_set));
   PetscCall(PetscOptionsReal("-heat_mesh_h", "Element size away from the cracks [m] (default: -mesh_h)", nullptr,
                              sizes->h, &sizes->h, nullptr));
   PetscCall(PetscOptionsReal("-heat_mesh_grading", "Element size growth per metre away from the crack bands (default: 2 x -mesh_grading)",
                              nullptr, sizes->grading, &sizes->grading, nullptr));
   PetscOptionsEnd();
   sizes->graded = kind == 1;
-  if (sizes->graded) VibrothermCallCpp(comm, sizes->validate());
+  // A default follows the size the user set next to it (a bad one is refused below, naming it).
+  if (!h_along_set && sizes->h > 0.0) sizes->h_along = std::min(sizes->h_along, sizes->h);
+  if (!h_crack_set && sizes->h_along > 0.0) sizes->h_crack = std::min(sizes->h_crack, sizes->h_along);
+  if (sizes->graded && check) VibrothermCallCpp(comm, sizes->validate());
   PetscFunctionReturn(0);
 }
 

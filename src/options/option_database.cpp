@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -73,18 +74,38 @@ void OptionDatabase::insert_tokens(const std::vector<std::string>& tokens, int d
 void OptionDatabase::insert_file(const std::string& path, int depth) {
   const std::string where = "-options_file " + path;
   if (depth > kMaxFileDepth) throw InputError(where + ": files nested more than 8 deep (a file including itself?)");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(where + ": is a directory, not a file of options");
   std::ifstream in(path);
   if (!in) throw InputError(where + ": cannot open the file");
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     const std::vector<std::string> tokens = line_tokens(line);
     if (tokens.empty()) continue;
-    if (!is_option_name(tokens[0]) || tokens.size() > 2 || (tokens.size() == 2 && is_option_name(tokens[1])))
-      throw InputError(where + " line " + std::to_string(number) + ": expected '-name value' or '-name', got '" +
-                       line + "'");
+    const std::string at = where + " line " + std::to_string(number);
+    const bool several = std::count_if(tokens.begin(), tokens.end(), is_option_name) > 1;
+    if (several) throw InputError(at + ": several options on one line ('" + line + "'): one '-name value' per line");
+    if (!is_option_name(tokens[0]) || tokens.size() > 2)
+      throw InputError(at + ": expected '-name value' or '-name', got '" + line + "'");
     insert_tokens(tokens, depth);
   }
   if (in.bad()) throw InputError(where + ": read error");
+}
+
+std::string options_file_error(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != "-options_file") continue;
+    if (i + 1 >= args.size() || is_option_name(args[i + 1])) return "-options_file: needs a file name";
+    const std::string& file = args[i + 1];
+    const bool yaml = file.size() > 4 && (file.rfind(".yml") == file.size() - 4 || file.rfind(".yaml") == file.size() - 5);
+    if (yaml) continue;  // PETSc's YAML reader, not this one
+    try {
+      OptionDatabase({"-options_file", file});
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  }
+  return "";
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {

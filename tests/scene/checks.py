@@ -21,6 +21,15 @@ class Checks:
         sys.exit(1 if self.failures else 0)
 
 
+def one_line_error(check, label, code, err, *words):
+    """A refused input: exit 2 and stderr one line `vibrotherm: error: ...` holding every word."""
+    lines = [l for l in err.splitlines() if l.strip()]
+    check(code == 2 and len(lines) == 1 and lines[0].startswith("vibrotherm: error:"),
+          "%s: one line, exit 2 (exit %d: %s)" % (label, code, err[-400:]))
+    for word in words:
+        check(bool(lines) and word in lines[0], "%s: the line names %s: %s" % (label, word, lines))
+
+
 def run_scene(check, exe, args, out, mpiexec=None, ranks=1):
     """Runs vibrotherm with args into out (through mpiexec on `ranks` ranks when > 1); a
     failed run is a failed check naming out. True when it ran."""

@@ -110,5 +110,16 @@ expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_
 expect_error "-crack_probe_crack must be >= 1" $box $crack -crack_probe 0.5 -crack_probe_crack 0
 expect_error "-probe_points needs x,y pairs, got 3 numbers" $box $crack -probe_points 0.01,0.01,0.02
 
+# Options files (issue 27): PETSc reads them inside PetscInitialize, where its own
+# errors were a 20-line trace, MPI_ABORT's banner and exit 83 or 62.
+expect_error "-options_file $work/missing.opts: cannot open the file" -options_file "$work/missing.opts"
+mkdir -p "$work/a_directory"
+expect_error "-options_file $work/a_directory: is a directory" -options_file "$work/a_directory"
+printf -- '-specimen_width 0.05 -specimen_height 0.1\n' >"$work/two_per_line.opts"
+expect_error "line 1: several options on one line" -options_file "$work/two_per_line.opts"
+printf -- '-options_file %s\n' "$work/two_per_line.opts" >"$work/nested.opts"
+expect_error "-options_file $work/two_per_line.opts line 1: several options" -options_file "$work/nested.opts"
+expect_error "-options_file: needs a file name" $box $crack -options_file
+
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -187,7 +187,7 @@ def coupled(tmp):
              "-source_frequency 1e5 -source_amplitude 1e-7 -source_duration 3e-5 -source_ramp_cycles 1 "
              "-contact_normal_law biwa -contact_biwa_m 0.5 -contact_biwa_C 1e11 -crack_law mmd -contact_mu 1 "
              "-crack_center 0.025,0.05 -crack_length 0.02 -crack_angle 20 -final_time 2e-5 -camera_fps 1e5 "
-             "-camera_integration 5e-6 -camera_pixel 2.5e-4 -camera_window 0.01,0.04,0.04,0.06").split()
+             "-camera_integration 5e-6 -camera_pixel 2.5e-4 -camera_window 0.01,0.04,0.04,0.06 -wave_degree 1").split()
     outs = []
     for ranks in (1, 2):
         out = os.path.join(tmp, "coupled%d" % ranks)

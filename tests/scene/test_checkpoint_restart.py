@@ -6,6 +6,9 @@ crack_state.csv, every dataset of fields.h5, crack_heat.h5 and camera.h5, every 
 identical to rounding on another rank count. A run killed outright (SIGKILL) restarts from
 its last periodic checkpoint just as exactly (files written after it are cut back). A
 restart with other options, or without a checkpoint, is refused with one line, exit 2.
+Issue 27: a stop while the heat runs alone after the waves (SIGUSR1 there) resumes where
+the waves stopped and finishes bit-identical (before: no checkpoint there, with the
+default -checkpoint_every_s the restart was refused and the run lost).
 
 usage: test_checkpoint_restart.py VIBROTHERM MPIEXEC"""
 import json, os, signal, subprocess, sys, tempfile, time
@@ -146,5 +149,32 @@ with tempfile.TemporaryDirectory() as tmp:
     code, _, err = run(2, ["-restart", os.path.join(tmp, "nowhere")])
     check(code == 2 and "checkpoint" in err and not os.path.exists(os.path.join(tmp, "nowhere")),
           "no checkpoint: exit 2 naming it, nothing written (%s)" % err[-300:])
+
+    # A stop in the heat-alone phase (the waves quiet at ~0.9 ms, the heat alone to 10 s), serial.
+    heat_alone = [exe, "-options_file", os.path.join(ROOT, "options", "paper.opts"), "-mesh_h", "0.004",
+                  "-mesh_h_crack", "0.001", "-wave_degree", "1", "-source_duration", "1e-4", "-final_time", "10",
+                  "-output_times", "1e-4,1e-2,10", "-heat_free_ts_adapt_ladder_steps", "64", "-wave_quiet_fraction",
+                  "0.05"]
+    ref, out = os.path.join(tmp, "heat_alone_ref"), os.path.join(tmp, "heat_alone")
+    r = subprocess.run(heat_alone + ["-output_dir", ref], capture_output=True, text=True)
+    check(r.returncode == 0, "heat alone, uninterrupted: exit 0 (%s)" % why(r.stderr))
+    p = subprocess.Popen(heat_alone + ["-output_dir", out], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for line in p.stdout:
+        if line.startswith("Heat alone"):
+            check("resumes" in line, "heat alone: says at its start that a stop resumes: %r" % line)
+            p.send_signal(signal.SIGUSR1)
+            break
+    _, err = p.communicate()
+    check(p.returncode == 128 + signal.SIGUSR1, "heat alone, SIGUSR1: exit %d (%s)" % (p.returncode, why(err)))
+    r = subprocess.run(heat_alone + ["-restart", out], capture_output=True, text=True)
+    check(r.returncode == 0, "heat alone, restart: exit 0 (%s)" % why(r.stderr))
+    if r.returncode == 0:
+        for name in TEXT:
+            same = open(os.path.join(ref, name), "rb").read() == open(os.path.join(out, name), "rb").read()
+            check(same, "heat alone, restart: %s differs from the uninterrupted run" % name)
+        for name in ["fields.h5", "crack_heat.h5"]:
+            a, b = datasets(os.path.join(ref, name)), datasets(os.path.join(out, name))
+            check(a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a),
+                  "heat alone, restart: %s differs from the uninterrupted run" % name)
 
 check.finish()

@@ -6,6 +6,12 @@ and exits 0; a misspelt option is one line naming it with the nearest known name
 (-allow_unknown lets it through with a warning); a non-numeric value is one line naming
 the option, exit 2; -output_times after the end is a warning; a run into a directory
 holding an earlier run's outputs removes them first.
+Issue 27: the default wave elements are Q2 (-help shows <2>); -help lists the PETSc
+solvers' main options (-wave_ts_type, -petscpartitioner_type); a misspelt option is
+refused before meshing; a misspelt PETSc solver option (-wave_ts_rk_typ) and a bad value
+of one PETSc reads (-heat_free_ts_adapt_type) are refused before any step, one line,
+exit 2, nothing written; the README's -mesh_file example with paper.opts runs, with a
+note naming the options the file makes irrelevant; meshing is announced before it starts.
 
 usage: test_first_hour.py VIBROTHERM SOURCE_DIR"""
 import os, subprocess, sys, tempfile
@@ -31,11 +37,13 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 0, "%s: exit %d" % (flag, r.returncode))
         check(os.listdir(empty) == [], "%s wrote %s" % (flag, os.listdir(empty)))
         for option in ("-heat_degree", "-heat_mesh_h_crack", "-modes_n", "-crack_law", "-edge_top", "-physics",
-                       "-heat_substeps", "-max_steps", "-allow_unknown"):
+                       "-heat_substeps", "-max_steps", "-allow_unknown", "-wave_ts_type", "-petscpartitioner_type",
+                       "-heat_free_ts_adapt_type", "-overwrite", "-debug"):
             check(option in r.stdout, "%s does not list %s" % (flag, option))
         check("-crack_center <now none" in r.stdout or "-crack_center <none" in r.stdout,
               "-crack_center's default is not 'none'")
         check("(all|wave|heat)" in r.stdout, "-physics does not list its values")
+        check("-wave_degree <2" in r.stdout or "-wave_degree <now 2 " in r.stdout, "the default wave degree is not 2 (Q2)")
     r = run(["-version"], tmp)
     check(r.returncode == 0 and "vibrotherm 0." in r.stdout, "-version: exit %d, %r" % (r.returncode, r.stdout[-200:]))
 
@@ -45,6 +53,28 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 2 and len(lines) == 1 and "-crak_angle" in lines[0] and "did you mean -crack_angle" in lines[0],
           "misspelt option: exit %d, stderr %r" % (r.returncode, r.stderr[-300:]))
     check(not os.path.exists(out), "misspelt option left %s" % out)
+    check("Mesh (" not in r.stdout, "misspelt option: refused only after meshing")
+
+    # PETSc's options: checked against what its solvers read, before any step.
+    for extra, words in [(["-wave_ts_type", "rk", "-wave_ts_rk_typ", "4"], ["-wave_ts_rk_typ", "did you mean -wave_ts_rk_type"]),
+                         (["-heat_free_ts_adapt_type", "foo"], ["-heat_free_ts_adapt_type", "unknown value 'foo'"])]:
+        r = run(paper + small + extra + ["-final_time", "2e-5", "-output_dir", out], tmp)
+        lines = [l for l in r.stderr.splitlines() if l.strip()]
+        check(r.returncode == 2 and len(lines) == 1 and all(w in lines[0] for w in words),
+              "%s: exit %d, stderr %r" % (" ".join(extra), r.returncode, r.stderr[-300:]))
+        check(not os.path.exists(out), "%s: wrote %s" % (" ".join(extra), out))
+
+    # Options for a solver this scene does not have (no heat): noted as ignored, the run goes on.
+    r = run(paper + small + ["-heat", "off", "-heat_free_ts_adapt_type", "basic", "-final_time", "2e-6",
+                             "-output_dir", os.path.join(tmp, "no_heat")], tmp)
+    check(r.returncode == 0 and "-heat_free_ts_adapt_type" in r.stdout and "ignored" in r.stdout,
+          "a heat option without heat: exit %d, %r" % (r.returncode, (r.stdout + r.stderr)[-300:]))
+
+    # The README's mesh-file example, with paper.opts (written for a generated specimen).
+    r = run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-final_time", "1e-6",
+                     "-output_dir", os.path.join(tmp, "mesh_file")], tmp)
+    check(r.returncode == 0, "-mesh_file with paper.opts: exit %d, %r" % (r.returncode, r.stderr[-300:]))
+    check("-crack_angle" in r.stdout and "ignored" in r.stdout, "-mesh_file: no note on the options it ignores")
     r = run(paper + small + ["-crak_angle", "45", "-allow_unknown", "-mesh_only", "-output_dir", out], tmp)
     check(r.returncode == 0 and "warning" in r.stdout + r.stderr, "-allow_unknown: exit %d" % r.returncode)
 
@@ -68,4 +98,7 @@ with tempfile.TemporaryDirectory() as tmp:
                              os.path.join(tmp, "late")], tmp)
     check(r.returncode == 0 and "-output_times 0.005 s is after the end of the run" in r.stdout,
           "late output time: exit %d, %r" % (r.returncode, r.stdout[-400:]))
+    # Meshing says what it does before it starts (large scenes take minutes).
+    before = r.stdout.split("Mesh (generated)")[0]
+    check("Meshing with gmsh" in before and "wave cells" in before, "no word before meshing: %r" % before[-300:])
 check.finish()

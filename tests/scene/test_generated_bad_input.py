@@ -42,7 +42,8 @@ NOT_TESTED = {"-help", "-h", "-version", "-options_file"}
 
 # The scene every vibrotherm case runs: small, one crack, a few wave steps.
 SCENE = ["-specimen_width", "0.02", "-specimen_height", "0.02", "-mesh_h", "0.004", "-mesh_h_crack", "0.002",
-         "-crack_center", "0.01,0.01", "-crack_length", "0.006", "-crack_angle", "20", "-final_time", "2e-6"]
+         "-crack_center", "0.01,0.01", "-crack_length", "0.006", "-crack_angle", "20", "-final_time", "2e-6",
+         "-wave_degree", "1"]
 # Options read only in some scenes: the case adds what makes the option count, so
 # an ignored value cannot pass for a checked one.
 CONTEXT = {
@@ -87,6 +88,7 @@ ALLOWED = {
     "-mesh_only": {"0", ""}, "-modes": {"0", ""}, "-allow_unknown": {"0", ""}, "-heat_lumped_mass": {"0", ""},
     # The camera switch and -force are booleans; any integer seeds the noise; 0 fps: no camera.
     "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
+    "-debug": {"0", ""}, "-overwrite": {"0", ""},
     # NETD 0: a noise-free camera (the clean frames).
     "-camera_netd": {"0"},
     # 0: checkpoints only when a signal stops the run.

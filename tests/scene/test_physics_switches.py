@@ -15,7 +15,7 @@ exe = sys.argv[1]
 check = Checks("physics switches")
 scene = ("-specimen_width 0.05 -specimen_height 0.1 -mesh_h 0.004 -mesh_h_crack 0.001 -edge_top source "
          "-source_frequency 1e5 -source_amplitude 1e-7 -source_duration 3e-5 -source_ramp_cycles 1 "
-         "-contact_normal_law biwa -contact_biwa_m 0.5 -contact_biwa_C 1e11 -crack_law mmd").split()
+         "-contact_normal_law biwa -contact_biwa_m 0.5 -contact_biwa_C 1e11 -crack_law mmd -wave_degree 1").split()
 crack = "-crack_center 0.025,0.05 -crack_length 0.02 -crack_angle 20".split()
 
 

@@ -7,11 +7,16 @@ a failed case in its row.
   * a two-crack scene (meshes/plate_two_cracks.msh) covers both cracks under the
     mesh's names (crack_a, crack_b) and draws its temperature maps;
   * a -modes run draws modes.png and skips the rest;
+  * (issue 27) temperature_maps.png shows, below each map, the rise across the crack
+    through its hottest point, zoomed to the heated band (a band of µm to mm is
+    invisible at the crack's scale); an interrupted run's plots say it is incomplete
+    (and draw what its .partial files hold); the two-crack scene runs with paper.opts
+    without -allow_unknown;
   * a sweep of 2 tiny cases, one with a bad value: exit 1, sweep.csv has one row per
     case, a column per option, and the failed case's row holds vibrotherm's error line.
 
 usage: test_plots_sweep.py VIBROTHERM SOURCE_DIR"""
-import csv, importlib.machinery, importlib.util, os, subprocess, sys, tempfile
+import csv, importlib.machinery, importlib.util, os, signal, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks
@@ -47,7 +52,7 @@ with tempfile.TemporaryDirectory() as tmp:
          ["temperature_maps", "modes"])
 
     two = os.path.join(tmp, "two")
-    run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-allow_unknown", "-wave_degree",
+    run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-wave_degree",
                  "1", "-final_time", "1e-4", "-source_duration", "1e-4", "-output_times", "5e-5,1e-4",
                  "-crack_probe_crack", "2"], two)
     plot(two, ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget", "crack_spacetime"],
@@ -61,6 +66,29 @@ with tempfile.TemporaryDirectory() as tmp:
     check(sorted(series) == [1, 2], "traction loops of cracks %s, expected 1 and 2" % sorted(series))
     check(sorted(module.crack_polylines(r2)) == [1, 2], "temperature maps draw cracks %s"
           % sorted(module.crack_polylines(r2)))
+    figure = module.plot_temperature_maps(r2)
+    profiles = [ax for ax in figure.axes if ax.get_xlabel().startswith("distance across the crack")]
+    check(len(profiles) == 2, "temperature maps: a profile across the crack below each map (%d)" % len(profiles))
+    for ax in profiles:  # the crack is 12 mm long: the heated band of 0.1 ms is ~0.1 mm thick
+        low, high = ax.get_xlim()
+        span = (high - low) * (1e-6 if "[µm]" in ax.get_xlabel() else 1e-3)
+        check(span < 2e-3, "the profile zooms to the heated band: %s from %g to %g" % (ax.get_xlabel(), low, high))
+
+    interrupted = os.path.join(tmp, "interrupted")
+    p = subprocess.Popen([exe] + paper + coarse + ["-final_time", "5e-4", "-checkpoint_every_s", "0",
+                                                  "-output_dir", interrupted], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while not os.path.exists(os.path.join(interrupted, "crack_state.csv.partial")) and time.time() < deadline:
+        time.sleep(0.05)
+    time.sleep(1.0)  # a few periods of rubbing
+    p.send_signal(signal.SIGUSR1)
+    p.communicate()
+    r = subprocess.run(["/usr/bin/python3", plot_script, interrupted], capture_output=True, text=True)
+    check(r.returncode == 0 and "INCOMPLETE RUN" in r.stdout and "-restart" in r.stdout,
+          "plot of an interrupted run: says it is incomplete (exit %d, %r)" % (r.returncode, r.stdout[-500:]))
+    check(os.path.exists(os.path.join(interrupted, "energy_budget.png")),
+          "plot of an interrupted run: draws what its .partial files hold")
 
     modes = os.path.join(tmp, "modes")
     run(paper + coarse + ["-modes", "-modes_n", "4"], modes)

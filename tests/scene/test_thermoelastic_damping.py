@@ -45,7 +45,7 @@ M, beta, k = lam + 2 * G, (3 * lam + 2 * G) * alpha_L, np.pi / L
 omega0 = np.sqrt(M / rho) * k                  # isothermal fundamental
 kappa = omega0 * rho * c / k ** 2             # omega0 tau = 1
 f0, t_free = omega0 / (2 * np.pi), 6e-5       # the fit starts a period after the source
-scene = ["-specimen_width", "0.002", "-specimen_height", str(L), "-mesh_h", "5e-4", "-heat_mesh", "wave",
+scene = ["-specimen_width", "0.002", "-specimen_height", str(L), "-mesh_h", "5e-4", "-heat_mesh", "wave", "-wave_degree", "1",
          "-edge_top", "source", "-source_component", "normal", "-edge_bottom", "fixed", "-edge_left", "roller",
          "-edge_right", "roller", "-source_frequency", "%.6g" % f0, "-source_duration", "5e-5",
          "-source_ramp_cycles", "2", "-final_time", "1.5e-4", "-heat_bc", "insulated", "-wave_quiet_fraction", "0",

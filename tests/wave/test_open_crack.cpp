@@ -11,7 +11,7 @@ namespace {
 
 const std::string kScene =
     "-specimen_width 0.05 -specimen_height 0.06 -mesh_h 1e-3 -mesh_h_crack 5e-4 -source_frequency 2e5 "
-    "-source_amplitude 1e-7 -source_duration 1.5e-5 -source_ramp_cycles 1 ";
+    "-source_amplitude 1e-7 -source_duration 1.5e-5 -source_ramp_cycles 1 -wave_degree 1 ";
 const std::string kCrack = "-crack_center 0.025,0.03 -crack_length 0.03 -crack_angle 0 ";
 
 /// u_x history at a point below the crack, and the largest crack-face jump seen.

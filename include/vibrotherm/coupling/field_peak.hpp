@@ -18,14 +18,17 @@ class FieldPeak {
   ~FieldPeak();
   /// The heat dofs' coordinates as global vectors (to say where the peak is). Collective.
   PetscErrorCode Setup(const fe::LagrangeSpace& space);
-  /// One VecMax of the rise; the place is looked up only when the peak grows. Collective.
+  /// One VecMax of the rise; the place is looked up only when the peak grows. A
+  /// warning when it first exceeds the constant-property range (model_validity.hpp). Collective.
   PetscErrorCode Update(const heat::HeatSolver& heat);
-  void Summarise(io::RunSummary* summary) const { summary->field_peak = peak_; }
+  /// The peak, and the warning when it left the constant-property range.
+  void Summarise(io::RunSummary* summary) const;
   /// The peak so far (checkpoints).
   const io::FieldPeakSummary& peak() const { return peak_; }
   void set_peak(const io::FieldPeakSummary& peak) { peak_ = peak; }
 
  private:
+  std::string ValidityWarning() const;
   Vec x_ = nullptr, y_ = nullptr;
   io::FieldPeakSummary peak_;
 };

@@ -16,8 +16,9 @@
 // Checkpoints (simulation_checkpoint.cpp): between coupling intervals, every
 // -checkpoint_every_s and on SIGTERM/SIGINT/SIGUSR1 (the run then stops); a
 // restart restores every component and the recorder and goes on as if never
-// stopped. The heat running alone is not checkpointed: a signal there stops
-// the run, and a restart repeats it from the last checkpoint of the waves.
+// stopped. One more checkpoint is written where the waves stop: the heat
+// running alone is not checkpointed itself, so a signal there stops the run and
+// a restart resumes where the waves stopped, repeating that phase (seconds).
 // Only what the scene needs is built: no crack (or an open crack law) → no
 // interface; nothing that can dissipate → no heat (unless -heat on);
 // -physics heat → no waves (prescribed -heat_crack_power on the cracks).
@@ -73,7 +74,8 @@ class Simulation {
   // Checkpoints (simulation_checkpoint.cpp).
   /// Between coupling intervals: a checkpoint when due; a signal stops the run.
   PetscErrorCode CheckpointIfDue(Recorder& recorder, bool quiet);
-  PetscErrorCode WriteCheckpoint(Recorder& recorder) const;
+  /// waves_quiet: the waves went quiet in the interval just ended (they stop now).
+  PetscErrorCode WriteCheckpoint(Recorder& recorder, bool waves_quiet) const;
   /// Every component and the recorder back to the checkpoint's state.
   PetscErrorCode Resume(const io::Checkpoint& checkpoint, Recorder& recorder);
   /// Whether this scene's state can be checkpointed (says why not, once).
@@ -85,6 +87,8 @@ class Simulation {
   RunControl control_;
   CheckpointSchedule schedule_;
   bool checkpoints_ = false;  ///< this scene's state can be checkpointed
+  bool waves_quiet_at_restart_ = false;  ///< the checkpoint restarted from was written as the waves stopped
+  double heat_alone_from_ = -1.0;  ///< where a stop in the heat-alone phase resumes (< 0: no checkpoint there)
   int interrupted_by_ = 0;
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;

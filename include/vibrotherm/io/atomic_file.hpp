@@ -24,6 +24,9 @@ class AtomicFile {
   std::ofstream& stream() { return out_; }
   /// Flushes and renames onto the final path; throws on I/O failure.
   void commit();
+  /// Flushes and renames onto the final path, the stream staying open to write
+  /// more (an open file survives its rename); commit() then only closes it.
+  void publish_open();
   /// Its length so far, flushed [bytes] (what a checkpoint records).
   long long bytes();
   /// Flushes and leaves the .partial file for a restart instead of removing it.
@@ -38,6 +41,7 @@ class AtomicFile {
   std::string path_;
   std::ofstream out_;
   bool committed_ = false;
+  bool published_ = false;  ///< renamed by publish_open()
 };
 
 /// A new AtomicFile, or (resume_bytes >= 0) the interrupted run's cut back to resume_bytes.

@@ -18,7 +18,10 @@ namespace vibrotherm::io {
 PetscErrorCode RunLogInstall();
 /// The output directory exists: write what was held, and the rest as it comes.
 PetscErrorCode RunLogOpen(MPI_Comm comm, const std::string& path);
-/// Publishes the log and restores PETSc's printer.
+/// Renames the log onto its final name now, writing on into it: a run says
+/// "complete" in summary.json only once its log is in place.
+PetscErrorCode RunLogPublish();
+/// Publishes the log (unless done) and restores PETSc's printer.
 PetscErrorCode RunLogClose();
 
 }  // namespace vibrotherm::io

@@ -48,6 +48,7 @@ struct RunSummary {
   /// True only for a run that reached its end (false: stopped by a signal, see checkpoint.h5).
   bool complete = false;
   std::string restarted_from;  ///< the checkpoint a restarted run continued from
+  std::vector<std::string> warnings;  ///< where the run left the model's validity (strain, resolution, heating)
   std::vector<OptionRecord> option_values;  ///< every option the program declared
   std::map<std::string, double> derived;    ///< values the program chose (dt, intervals, sizes)
   std::map<std::string, std::string> derived_rules;  ///< how it chose them

@@ -42,12 +42,16 @@ MeshData read_mesh_file(const std::string& path);
 
 namespace vibrotherm::mesh {
 /// Whether a mesh file's specimen is the rectangle [0, W] × [0, H] with straight
-/// cracks; fills geometry (sizes: longest outer edge, mean crack edge) if so.
-bool rectangle_geometry(const MeshData& mesh, SpecimenGeometry* geometry);
+/// cracks; fills geometry (sizes: longest outer edge, mean crack edge) if so,
+/// else says why not in *why ("crack_b bends at (x, y)").
+bool rectangle_geometry(const MeshData& mesh, SpecimenGeometry* geometry, std::string* why);
 /// Keeps the outer edges of a generated heat mesh that lie on a sink edge of `file`.
 void keep_sinks_of(const MeshData& file, MeshData* heat);
 
 /// Every crack must be one open, unbranched line of edges; throws
 /// std::invalid_argument naming the crack otherwise.
 void check_crack_lines(const MeshData& mesh, const std::string& where);
+/// No two cracks may meet (a shared node, or edges that cross): throws
+/// std::invalid_argument naming both cracks and where they meet.
+void check_cracks_apart(const MeshData& mesh, const std::string& where);
 }  // namespace vibrotherm::mesh

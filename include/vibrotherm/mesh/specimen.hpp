@@ -45,17 +45,22 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
                               const LtsWeighting& lts = {});
 PetscErrorCode SpecimenDestroy(Specimen* specimen);
 
-/// Reads (declares, for -help) every mesh option without building anything. Collective.
+/// Reads (declares, for -help and the check of the command line before meshing)
+/// every mesh option and checks the values without building anything; with
+/// -mesh_file, the generated-specimen options given are noted as ignored (the
+/// file sets the specimen) instead of checked. Collective.
 PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
 /// Prints the memory estimate of a generated specimen (memory_estimate.hpp) and
 /// refuses, naming the options, one beyond the memory available unless -force.
 PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree);
 
-/// Reads the generated-specimen options into geometry (used by SpecimenCreate).
-PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry);
+/// Reads the generated-specimen options into geometry (used by SpecimenCreate);
+/// check: refuse a specimen that cannot be meshed (false: declare them only).
+PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry, bool check = true);
 /// Reads -heat_mesh, -heat_mesh_h_crack, -heat_mesh_growth, -heat_mesh_h_along,
-/// -heat_mesh_h (defaults from the wave mesh sizes and exchange_length).
+/// -heat_mesh_h (defaults from the wave mesh sizes and exchange_length, each
+/// capped by the next size); check: refuse sizes that do not nest.
 PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
-                                 HeatMeshSizes* sizes);
+                                 HeatMeshSizes* sizes, bool check = true);
 
 }  // namespace vibrotherm::mesh

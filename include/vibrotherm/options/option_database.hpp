@@ -39,6 +39,13 @@ class OptionDatabase {
 /// True for "-name" tokens (option names), false for values such as "-1".
 bool is_option_name(const std::string& token);
 
+/// The first problem with the -options_file files of a command line (args
+/// without the program name; nested files too), "" when they read: a missing
+/// file, a directory, several options on one line. For programs whose options
+/// PETSc reads: PETSc would stop at these with a trace, before any handler of
+/// the program's could turn it into one line.
+std::string options_file_error(const std::vector<std::string>& args);
+
 /// Levenshtein distance (insertions, deletions, substitutions).
 std::size_t edit_distance(const std::string& a, const std::string& b);
 

@@ -9,11 +9,17 @@
 #include <petscsys.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace vibrotherm {
 
-/// Installs the handler; call right after PetscInitialize.
+/// Installs the handler; call right after PetscInitialize. -debug (read here)
+/// adds PETSc's trace to every error and leaves HDF5's own diagnostics on.
 PetscErrorCode PushUserErrorHandler(const char* program);
+
+/// "<program>: error: <message>" from rank 0 of MPI_COMM_WORLD, for errors
+/// found before PETSc runs (MPI initialised).
+void PrintOneLineError(const char* program, const std::string& message);
 
 /// The process exit code for the error code a run returned (0 on success).
 int ExitCode(PetscErrorCode ierr);

@@ -25,11 +25,29 @@ struct DeclaredOption {
 PetscErrorCode OptionAuditBegin(bool echo);
 /// Stops listening; declared: every option printed meanwhile, by name (rank 0; empty elsewhere).
 PetscErrorCode OptionAuditEnd(std::vector<DeclaredOption>* declared);
+/// The options declared so far, while listening (rank 0; empty elsewhere).
+void OptionAuditDeclared(std::vector<DeclaredOption>* declared);
 
 /// Options given but never read that are neither declared nor under a PETSc solver
 /// prefix of the program (-wave_ts_*, -heat_ksp_*, ...) nor PETSc's own: an error
-/// naming the first with the nearest declared name, or (allow_unknown) a warning. Collective.
-PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared, bool allow_unknown);
+/// naming the first with the nearest declared name, or (allow_unknown) a warning.
+/// likely_typos_only: only names close to a declared one (before meshing, when
+/// PETSc's objects have not declared theirs yet). Collective.
+PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared, bool allow_unknown,
+                                   bool likely_typos_only = false);
+
+/// Options under the prefixes of vibrotherm's PETSc objects (-wave_ts_*,
+/// -heat_ksp_*, -heat_free_*, -modes_eps_*, -petscpartitioner_*, ...) that no
+/// object read once every solver is set up: under the prefix of a solver the
+/// scene has, an error naming the first with the nearest declared name (PETSc's
+/// printed options included), or (allow_unknown) a warning; under one it has not
+/// (no heat, no -modes), a note that they are ignored. Viewers and convergence
+/// reasons, read only while solving, are left to PETSc. Collective; call before
+/// the first step.
+PetscErrorCode CheckSolverOptionsRead(MPI_Comm comm, const std::vector<DeclaredOption>& declared, bool allow_unknown);
+/// After a run: a warning naming a solver option that nothing read even while
+/// solving (those CheckSolverOptionsRead leaves to the solves). Collective.
+PetscErrorCode WarnUnreadSolverOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared);
 
 /// A declared option given without a value ("-mesh_h" or "-mesh_h ''"), which
 /// PETSc's readers take as not given: an error "<name>: needs a value" (flags,

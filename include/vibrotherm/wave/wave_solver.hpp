@@ -41,7 +41,7 @@ namespace vibrotherm::wave {
 enum class StiffnessKernel { kPetsc, kBlocked };
 
 struct WaveOptions {
-  PetscInt degree = 1;   ///< -wave_degree 1|2
+  PetscInt degree = 2;   ///< -wave_degree 1|2 (Q2/P2 by default: Q1 is 32 % off in dissipated energy on the paper mesh)
   double cfl = 0.9;      ///< -wave_cfl: fraction of the stability limit
   double dt = 0.0;       ///< -wave_dt: explicit step (0: cfl × limit)
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case

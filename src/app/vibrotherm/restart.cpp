@@ -8,7 +8,7 @@ namespace {
 /// Options that may change between a run and its restart.
 bool MayChangeOnRestart(const std::string& name) {
   for (const char* prefix : {"-restart", "-output_dir", "-checkpoint_every_s", "-log_", "-help", "-force",
-                             "-allow_unknown", "-options_left"})
+                             "-allow_unknown", "-options_left", "-debug", "-overwrite"})
     if (name.rfind(prefix, 0) == 0) return true;
   return false;
 }

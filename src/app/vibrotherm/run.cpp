@@ -6,80 +6,32 @@
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
-#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/model_validity.hpp"
 #include "vibrotherm/coupling/scene.hpp"
 #include "vibrotherm/coupling/simulation.hpp"
 #include "vibrotherm/io/mesh_output.hpp"
 #include "vibrotherm/io/run_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
+#include "vibrotherm/mesh/metis_partitioner.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/util/option_audit.hpp"
 #include "vibrotherm/util/version.hpp"
+#include "output_directory.hpp"
 #include "restart.hpp"
 
 namespace vibrotherm::app {
 namespace {
 
-/// Everything a run (and scripts/plot after it) writes into its output directory.
-const std::vector<std::string>& RunOutputFiles() {
-  static const std::vector<std::string> files = {
-      "summary.json", "mesh.h5", "mesh.xmf", "fields.h5", "fields_wave.xmf", "fields_heat.xmf", "fields_cracks.xmf",
-      "fields.xmf" /* before fields_<grid>.xmf */, "probes.csv", "energy.csv", "checkpoint.h5",
-      "crack_state.csv", "crack_heat.h5", "camera.h5", "camera.xmf", "modes.csv", "modes.h5", "modes.xmf",
-      "vibrotherm.log", "traction_loop.png", "crack_temperature.png", "temperature_maps.png", "energy_budget.png",
-      "crack_spacetime.png", "camera.png", "modes.png"};
-  return files;
-}
-
-/// Creates the output directory on rank 0 and removes an earlier run's outputs
-/// there (with their .partial leftovers), so no old file sits beside new ones.
-/// A restart keeps what its checkpoint continues: the checkpoint, the .partial
-/// files, and the interrupted run's log as vibrotherm.before-restart.log.
-/// A failure is an error on every rank.
-PetscErrorCode MakeOutputDirectory(MPI_Comm comm, const std::string& dir, bool restart) {
-  PetscFunctionBeginUser;
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  int failed = 0, removed = 0;
-  if (rank == 0) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    failed = !std::filesystem::is_directory(dir);
-    if (restart) std::filesystem::rename(dir + "/vibrotherm.log", dir + "/vibrotherm.before-restart.log", ec);
-    ec.clear();
-    for (const std::string& name : RunOutputFiles()) {
-      if (restart && name == "checkpoint.h5") continue;
-      const std::string file = dir + "/" + name;
-      if (!failed && std::filesystem::remove(file, ec)) ++removed;
-      if (!failed && !restart && std::filesystem::remove(file + ".partial", ec)) ++removed;
-    }
-    failed = failed || static_cast<bool>(ec);
-  }
-  PetscCallMPI(MPI_Bcast(&failed, 1, MPI_INT, 0, comm));
-  PetscCheck(!failed, comm, PETSC_ERR_FILE_OPEN, "-output_dir %s: cannot create the directory or remove its old outputs",
-             dir.c_str());
-  if (removed) PetscCall(PetscPrintf(comm, "removed %d outputs of an earlier run from %s\n", removed, dir.c_str()));
-  PetscFunctionReturn(0);
-}
-
-/// A complete run needs no checkpoint: removed, so that no -restart repeats its end.
-PetscErrorCode RemoveCheckpoint(MPI_Comm comm, const std::string& dir) {
-  PetscFunctionBeginUser;
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  std::error_code ec;
-  if (rank == 0) std::filesystem::remove(dir + "/checkpoint.h5", ec);
-  PetscFunctionReturn(0);
-}
-
 struct AppOptions {
   PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
+  PetscBool overwrite = PETSC_FALSE;  ///< -overwrite: discard an interrupted run's checkpoint in -output_dir
   PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
+  PetscBool debug = PETSC_FALSE;  ///< read by the error handler (util/errors.hpp); declared here
   char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
   char restart[PETSC_MAX_PATH_LEN] = "";  ///< -restart DIR: continue the run whose checkpoint is in DIR
 };
@@ -97,22 +49,65 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
                                "Continue the interrupted run whose outputs and checkpoint.h5 are in this directory "
                                "(the same options; it becomes the output directory)",
                                nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
+  PetscCall(PetscOptionsBool("-overwrite",
+                             "Write into an -output_dir that holds an interrupted run's checkpoint, discarding it "
+                             "(without it such a run is refused: continue it with -restart)",
+                             nullptr, o->overwrite, &o->overwrite, nullptr));
   PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
                              nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
+  PetscCall(PetscOptionsBool("-debug", "Errors with PETSc's full trace after the one line, MPI_Abort's banner and HDF5's "
+                             "diagnostics", nullptr, o->debug, &o->debug, nullptr));
   PetscOptionsEnd();
   PetscBool dir_set = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output_dir", &dir_set));
   if (o->restart[0]) {
-    PetscCheck(!dir_set || std::string(o->output_dir) == o->restart, comm, PETSC_ERR_USER_INPUT,
-               "-restart %s writes into that directory: -output_dir %s differs", o->restart, o->output_dir);
+    PetscCheck(!dir_set || SameDirectory(o->output_dir, o->restart), comm, PETSC_ERR_USER_INPUT,
+               "-restart %s writes into that directory: -output_dir %s is another one", o->restart, o->output_dir);
     PetscCheck(!o->modes && !o->mesh_only, comm, PETSC_ERR_USER_INPUT, "-restart continues a time run, not -modes or -mesh_only");
     PetscCall(PetscStrncpy(o->output_dir, o->restart, sizeof(o->output_dir)));
   }
   PetscFunctionReturn(0);
 }
 
-/// -help: the options of every module, whatever the scene, then nothing else.
-PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
+/// -help: the main options of the PETSc objects under vibrotherm's prefixes (a
+/// run reads them from the objects themselves, with every other option of
+/// theirs, and refuses one none of them read).
+PetscErrorCode ListSolverOptions(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  PetscCall(mesh::RegisterMetisPartitioner());
+  PetscPartitioner partitioner;  // prints -petscpartitioner_type with the types and the default of this build
+  PetscCall(PetscPartitionerCreate(comm, &partitioner));
+  PetscCall(PetscPartitionerSetFromOptions(partitioner));
+  PetscCall(PetscPartitionerDestroy(&partitioner));
+  struct Entry {
+    const char* name;
+    std::string value;
+    const char* text;
+  };
+  const Entry entries[] = {
+      {"-wave_ts_type", "velocityverlet",
+       "Wave TS: velocityverlet (vibrotherm's own), basicsymplectic, rk, ssp or alpha2 (implicit)"},
+      {"-wave_ts_rk_type", "4", "-wave_ts_type rk: 1fe, 2a, 3 or 4 (fixed steps)"},
+      {"-heat_ts_type", "beuler", "Heat TS while the waves run (fixed steps; -heat_ksp_*, -heat_pc_*: its linear solver)"},
+      {"-heat_free_ts_type", "cn", "Heat TS after the waves (-heat_free_ksp_*, -heat_free_pc_*: its linear solver)"},
+      {"-heat_free_ts_adapt_type", "ladder",
+       "Its steps: ladder (doubling every -heat_free_ts_adapt_ladder_steps steps, ratio "
+       "-heat_free_ts_adapt_ladder_ratio) or basic (PETSc's error control)"}};
+  PetscOptionsBegin(comm, nullptr,
+                    "PETSc solvers (any option of -wave_ts_*, -heat_ts_*, -heat_free_ts_*, -heat_ksp_*, -heat_pc_*, "
+                    "-modes_eps_*, -modes_st_*, -petscpartitioner_*; refused when none of them reads it)", nullptr);
+  for (const Entry& e : entries) {
+    char value[64];
+    PetscCall(PetscStrncpy(value, e.value.c_str(), sizeof(value)));
+    PetscCall(PetscOptionsString(e.name, e.text, nullptr, value, value, sizeof(value), nullptr));
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+/// Every option of every module, whatever the scene (-help lists them, and a run
+/// checks the command line against them before meshing), with their values checked.
+PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionBeginUser;
   PetscCall(mesh::DeclareSpecimenOptions(comm, scene.exchange_length()));
   modes::ModesOptions modes;
@@ -120,8 +115,22 @@ PetscErrorCode ListOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionReturn(0);
 }
 
-/// Builds what the options describe (all input checked, nothing written), then
-/// checks that every option given was one the program knows.
+/// Before meshing (which may take minutes): no likely typo of a vibrotherm option,
+/// every value there, and an output directory this run may use.
+PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene) {
+  PetscFunctionBeginUser;
+  PetscCall(DeclareOptions(comm, scene));
+  std::vector<DeclaredOption> declared;
+  OptionAuditDeclared(&declared);
+  // Likely typos now (PETSc's objects declare their options later); -allow_unknown's warning comes once, after.
+  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, declared, false, true));
+  PetscCall(CheckMissingValues(comm, declared));
+  // Another run there, or an interrupted run's checkpoint, is refused now.
+  PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
+  PetscFunctionReturn(0);
+}
+
+/// Builds what the options describe (all input checked, nothing written).
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
@@ -133,7 +142,10 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
   if (app.modes && !app.mesh_only) PetscCall(modes_run->Setup(*specimen, scene, summary));
-  else if (!app.mesh_only) PetscCall(simulation->Setup(*specimen, scene, summary));
+  if (app.modes || app.mesh_only) PetscFunctionReturn(0);
+  if (scene.run.physics != coupling::PhysicsChoice::Heat)
+    PetscCall(coupling::CheckSourceValidity(comm, scene, summary->mesh.h_max, summary));
+  PetscCall(simulation->Setup(*specimen, scene, summary));
   PetscFunctionReturn(0);
 }
 
@@ -196,18 +208,21 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   PetscCall(coupling::ReadScene(comm, &scene));
   std::vector<DeclaredOption> declared;
   if (app.help) {
-    PetscCall(ListOptions(comm, scene));
+    PetscCall(DeclareOptions(comm, scene));
+    PetscCall(ListSolverOptions(comm));
     PetscCall(OptionAuditEnd(&declared));
     PetscFunctionReturn(io::RunLogClose());
   }
+  PetscCall(CheckBeforeMeshing(comm, app, scene));
   io::RunSummary summary;
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
   PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
+  // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, declared, app.allow_unknown));
-  PetscCall(CheckMissingValues(comm, declared));
+  PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
   RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
@@ -220,7 +235,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
     control.restart = &checkpoint;
     summary.restarted_from = dir + "/checkpoint.h5";
   }
-  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr));
+  io::OutputLock lock;  // the directory is this run's until Run returns
+  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr, &lock));
   PetscCall(io::RunLogOpen(comm, dir + "/vibrotherm.log"));
   PetscLogStage output_stage;
   PetscCall(PetscLogStageRegister("Output", &output_stage));
@@ -233,6 +249,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
   summary.complete = simulation.interrupted_by() == 0;
+  if (summary.complete) PetscCall(WarnUnreadSolverOptions(comm, declared));
+  PetscCall(io::RunLogPublish());  // summary.json, the run's record, comes last
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
   PetscCall(PetscPrintf(comm, "outputs in %s%s\n", dir.c_str(), summary.complete ? "" : " (incomplete: summary.json says \"complete\": false)"));

@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""Requirement (issue 27): a user's work in an output directory is never lost.
+
+- Two runs into one directory: the second is refused at once, in one line naming the
+  first (pid and host), exit 2, and touches nothing; the first finishes complete. (Before:
+  the second deleted the first's .partial files, the first renamed the second's outputs
+  as its own and both exited 0.) The first run is held still with SIGSTOP while the
+  second tries, so the test does not depend on timing.
+- A crashed run's lock (a dead pid on this host) is taken over with a note; a lock from
+  another host is refused, naming the file to remove.
+- A run without -restart into a directory holding an interrupted run's checkpoint is
+  refused in one line (exit 2) and deletes nothing; -restart continues it, with the
+  directory spelt relative in -restart and absolute in -output_dir; -overwrite discards a
+  checkpoint on purpose.
+
+usage: test_output_directory.py VIBROTHERM"""
+import json, os, signal, socket, subprocess, sys, tempfile, time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks, one_line_error
+
+exe = os.path.abspath(sys.argv[1])
+check = Checks("output_directory")
+# A small cracked square (heat runs): about a second.
+SCENE = ["-specimen_width", "0.02", "-specimen_height", "0.02", "-mesh_h", "0.002", "-mesh_h_crack", "0.001",
+         "-crack_center", "0.01,0.01", "-crack_length", "0.006", "-crack_angle", "20", "-final_time", "3e-4",
+         "-wave_degree", "1"]
+LOCK = "vibrotherm.lock"
+
+
+def run(args, cwd=None):
+    r = subprocess.run([exe] + SCENE + args, capture_output=True, text=True, cwd=cwd, timeout=300)
+    return r.returncode, r.stdout, r.stderr
+
+
+def one_line_refusal(label, code, err, *words):
+    one_line_error(check, label, code, err, *words)
+
+
+def wait_for(path, process, seconds=60):
+    deadline = time.time() + seconds
+    while not os.path.exists(path) and process.poll() is None and time.time() < deadline:
+        time.sleep(0.01)
+    return os.path.exists(path)
+
+
+def complete(out):
+    try:
+        return json.load(open(os.path.join(out, "summary.json")))["complete"] is True
+    except (OSError, ValueError, KeyError):
+        return False
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    # --- two runs into one directory ---------------------------------------------------------
+    out = os.path.join(tmp, "shared")
+    first = subprocess.Popen([exe] + SCENE + ["-output_dir", out], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+    if wait_for(os.path.join(out, LOCK), first):
+        first.send_signal(signal.SIGSTOP)  # holds the directory, mid-run
+        before = sorted(os.listdir(out))
+        code, _, err = run(["-output_dir", out])
+        one_line_refusal("second run", code, err, "pid %d" % first.pid, socket.gethostname())
+        check(sorted(os.listdir(out)) == before, "second run: the directory untouched (%s -> %s)"
+              % (before, sorted(os.listdir(out))))
+        first.send_signal(signal.SIGCONT)
+    else:
+        check.fail("first run: no %s while it runs" % LOCK)
+    _, err = first.communicate(timeout=300)
+    check(first.returncode == 0 and complete(out), "first run: exit 0, complete (%s)" % err[-300:])
+    check(not os.path.exists(os.path.join(out, LOCK)), "first run: its lock removed at the end")
+
+    # --- a crashed run's lock: taken over; another host's: refused ------------------------------
+    dead = subprocess.Popen(["true"])
+    dead.wait()  # its pid is free now
+    with open(os.path.join(out, LOCK), "w") as f:
+        f.write("%d %s\n" % (dead.pid, socket.gethostname()))
+    code, stdout, err = run(["-output_dir", out])
+    check(code == 0 and complete(out), "stale lock: the run goes on (%s)" % err[-300:])
+    check("no longer runs" in stdout and "taken over" in stdout, "stale lock: a note says it was taken over")
+    check(not os.path.exists(os.path.join(out, LOCK)), "stale lock: no lock left after the run")
+    with open(os.path.join(out, LOCK), "w") as f:
+        f.write("4242 another-host.example\n")
+    code, _, err = run(["-output_dir", out])
+    one_line_refusal("another host's lock", code, err, "another-host.example", os.path.join(out, LOCK))
+    os.remove(os.path.join(out, LOCK))
+
+    # --- a run without -restart after an interruption ------------------------------------------
+    out = os.path.join(tmp, "interrupted")
+    p = subprocess.Popen([exe] + SCENE + ["-output_dir", out, "-checkpoint_every_s", "0"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    if wait_for(os.path.join(out, "energy.csv.partial"), p):
+        time.sleep(0.2)  # the waves are running
+        p.send_signal(signal.SIGUSR1)
+    p.communicate(timeout=300)
+    check(p.returncode == 128 + signal.SIGUSR1 and os.path.exists(os.path.join(out, "checkpoint.h5")),
+          "interrupted run: exit %d with a checkpoint" % p.returncode)
+    before = {n: os.path.getsize(os.path.join(out, n)) for n in os.listdir(out)}
+    code, _, err = run(["-output_dir", out])
+    one_line_refusal("run without -restart", code, err, "checkpoint", "-restart", "-overwrite")
+    after = {n: os.path.getsize(os.path.join(out, n)) for n in os.listdir(out)}
+    check(after == before, "run without -restart: nothing deleted or changed (%s)" % sorted(set(before) ^ set(after)))
+    # The same directory spelt two ways: relative to the working directory, and absolute.
+    code, _, err = run(["-restart", "interrupted", "-output_dir", os.path.abspath(out)], cwd=tmp)
+    check(code == 0 and complete(out), "restart, relative and absolute spellings: exit 0, complete (%s)" % err[-300:])
+    check(not os.path.exists(os.path.join(out, "checkpoint.h5")), "restart: the complete run removed its checkpoint")
+
+    out = os.path.join(tmp, "overwritten")
+    p = subprocess.Popen([exe] + SCENE + ["-output_dir", out, "-checkpoint_every_s", "0"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    if wait_for(os.path.join(out, "energy.csv.partial"), p):
+        time.sleep(0.2)
+        p.send_signal(signal.SIGUSR1)
+    p.communicate(timeout=300)
+    code, _, err = run(["-output_dir", out, "-overwrite"])
+    check(code == 0 and complete(out) and not os.path.exists(os.path.join(out, "checkpoint.h5")),
+          "-overwrite: the new run replaces the interrupted one (%s)" % err[-300:])
+
+check.finish()
