@@ -107,12 +107,27 @@ PetscErrorCode CrackNearField::ClearOfEdges(const std::array<double, 2>& x, doub
 void CrackNearField::AfterWaveStep(double t) { SampleEnergies(t, crack_->dissipated_per_area()); }
 
 void CrackNearField::SampleEnergies(double t, const std::vector<double>& W) {
-  if (any()) fine_.push_back({t, W});
+  if (any() && !paused_) fine_.push_back({t, W});
+}
+
+void CrackNearField::Pause(double t) {
+  paused_ = true;
+  ends_ = {t};
+  density_.clear();
+  fine_.clear();
+  for (Probe& p : probes_) p.terms.clear(), p.jumps.clear();
+}
+
+void CrackNearField::Restart(double t) {
+  if (!paused_) return;
+  Pause(t);
+  paused_ = false;
+  fine_.push_back({t, crack_->dissipated_per_area()});
 }
 
 PetscErrorCode CrackNearField::AfterHeatStep(double t) {
   PetscFunctionBeginUser;
-  if (!any()) PetscFunctionReturn(0);
+  if (!any() || paused_) PetscFunctionReturn(0);
   PetscCall(PetscLogEventBegin(step_event_, 0, 0, 0, 0));
   ends_.push_back(t);
   density_.push_back(friction_->density());

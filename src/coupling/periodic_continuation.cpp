@@ -137,6 +137,7 @@ PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, Pet
     if (fine < n) {
       phase_ = Phase::kLadder;
       PetscCall(heat_->Replay(ReplayMode::Averaged));
+      heat_->PauseNearField();
       PetscCall(AddNearField(ladder_.t, -1.0));  // the solver steps the smooth part θ − D
       PetscCall(heat_->solver().UseFreeIntegrator());
     }
@@ -148,6 +149,7 @@ PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, Pet
 PetscErrorCode PeriodicContinuation::FinishInterrupted(Recorder& recorder, bool* continued) {
   PetscFunctionBeginUser;
   if (phase_ == Phase::kLadder) {
+    heat_->PauseNearField();  // again after a restart inside the ladder (it holds no window there)
     bool stopped;
     PetscCall(Ladder(recorder, &stopped));
     if (stopped) PetscFunctionReturn(0);  // a signal: the checkpoint holds the ladder
@@ -156,6 +158,7 @@ PetscErrorCode PeriodicContinuation::FinishInterrupted(Recorder& recorder, bool*
   }
   if (heat_) PetscCall(heat_->Replay(ReplayMode::Off));
   PetscCall(Resume());
+  if (heat_) heat_->RestartNearField();
   phase_ = Phase::kWatch;
   detector_.Reset();
   *continued = true;

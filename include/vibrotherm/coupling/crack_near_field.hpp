@@ -66,6 +66,11 @@ class CrackNearField {
   void SampleEnergies(double t, const std::vector<double>& W);
   /// After every heat step (ending at t): keeps the step's density per cell. Collective.
   PetscErrorCode AfterHeatStep(double t);
+  /// A periodic continuation's heat ladder (other integrator, averaged power over whole periods,
+  /// spread far beyond the crack's layers): the probes read the field alone; the window restarts
+  /// empty at t when the waves come back (D and E then cover the same steps again).
+  void Pause(double t);
+  void Restart(double t);
   /// This rank's part of D for probe p at the ends of the last three heat steps
   /// (j = 0: t_n, 1: t_{n−1}, 2: t_{n−2}), all for the window of step n.
   std::array<double, 3> Discrete(std::size_t probe) const;
@@ -105,6 +110,7 @@ class CrackNearField {
   std::vector<Probe> probes_;
   PetscInt steps_ = 24;
   double alpha_ = 1.0, rho_c_ = 1.0, tau_max_ = 0.0;
+  bool paused_ = false;
   double equal_step_ = 0.0;                 ///< heat step length of the probes' g (0: none yet)
   std::deque<double> ends_;                 ///< heat step ends t_{n−K} .. t_n
   std::deque<std::vector<double>> density_; ///< q̄ of steps n−K+1 .. n

@@ -40,6 +40,9 @@ class HeatComponent {
   /// (two_way: then the thermal stress on the waves follows the new temperatures).
   /// sample_probes = false: the caller samples the probes itself (SampleProbes), after shifting the field.
   PetscErrorCode StepTo(double t, bool sample_probes = true);
+  /// The crack probes' near field paused over a continuation's heat ladder, restarted after it.
+  void PauseNearField() { probe_temperatures_.PauseNearField(); }
+  void RestartNearField() { probe_temperatures_.RestartNearField(); }
   /// The probes after a heat step (and, while a replay runs, the replayed friction for their near field).
   PetscErrorCode SampleProbes();
   /// After every wave step while coupled (row: probes.csv has a row at t).

@@ -33,6 +33,13 @@ class ProbeTemperatures {
   const CrackNearField* near_field() const { return near_.get(); }
   /// After every wave step (ending at t); row: probes.csv has a row at t.
   void AfterWaveStep(double t, bool row);
+  /// CrackNearField::Pause/Restart at the heat's time.
+  void PauseNearField() {
+    if (near_) near_->Pause(heat_->time());
+  }
+  void RestartNearField() {
+    if (near_) near_->Restart(heat_->time());
+  }
   /// The friction energies at t while a replay stands in for the waves (the near field's samples).
   void SampleFriction(double t, const std::vector<double>& W) {
     if (near_) near_->SampleEnergies(t, W);
