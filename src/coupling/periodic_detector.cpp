@@ -60,8 +60,7 @@ void PeriodicDetector::Free(Snapshot& s) const {
 
 void PeriodicDetector::Reset() {
   for (Snapshot& s : samples_) Free(s);
-  samples_.clear();
-  last_change_ = INFINITY;
+  samples_.clear();  // last_change_ stays: the summary reports the change the last sample saw
 }
 
 PetscErrorCode PeriodicDetector::Take(WaveComponent& waves, const io::EnergyRow& row, Snapshot* s) const {

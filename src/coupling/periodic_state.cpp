@@ -155,6 +155,7 @@ PetscErrorCode PeriodicDetector::Save(io::Checkpoint& checkpoint, const std::str
     checkpoint.PutKeyed(item + "_cells", cells, 4, per_cell);
   }
   checkpoint.PutShared(name, times);
+  checkpoint.PutShared(name + "_last_change", {last_change_});
   PetscFunctionReturn(0);
 }
 
@@ -165,6 +166,9 @@ PetscErrorCode PeriodicDetector::Restore(const io::Checkpoint& checkpoint, const
   std::vector<double> times;
   PetscCall(checkpoint.GetShared(name, &times));
   PetscCheck(mass_ != nullptr || times.empty(), comm_, PETSC_ERR_ORDER, "periodic detector: restore after setup");
+  std::vector<double> last;
+  PetscCall(checkpoint.GetShared(name + "_last_change", &last, 1));
+  last_change_ = last[0];
   for (std::size_t k = 0; (k + 1) * (kRowValues + 1) <= times.size(); ++k) {
     const std::string item = name + "_" + std::to_string(k);
     Snapshot s;

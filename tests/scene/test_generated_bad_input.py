@@ -86,6 +86,7 @@ ALLOWED = {
     "-source_ramp_cycles": {"0"}, "-mesh_grading": {"0"}, "-heat_mesh_grading": {"0"},
     # Booleans: 0 is false; a bare flag ("") is true.
     "-mesh_only": {"0", ""}, "-modes": {"0", ""}, "-allow_unknown": {"0", ""}, "-heat_lumped_mass": {"0", ""},
+    "-heat_near_field": {"0", ""},
     # The camera switch and -force are booleans; any integer seeds the noise; 0 fps: no camera.
     "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
     "-debug": {"0", ""}, "-overwrite": {"0", ""},
