@@ -179,8 +179,7 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
     // Counted again each time: the contact may have shrunk the wave step. Quantized steps (a periodic
     // source) land on the heat step's end, where a periodic state is compared and recorded.
     if (scene_->wave.step_quantum > 0.0)
-      PetscCall(waves_->solver().AdvanceTo(
-          std::min(scene_->final_time, (std::round(solver.time() / heat_dt) + 1.0) * heat_dt)));
+      PetscCall(waves_->AdvanceTo(std::min(scene_->final_time, (std::round(solver.time() / heat_dt) + 1.0) * heat_dt)));
     else
       PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
     if (!heat_) continue;

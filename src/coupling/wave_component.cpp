@@ -111,8 +111,10 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
   }
   PetscCall(WarnAboutTheSource(specimen.wave, scene, solver_->dt()));
   // Refused now, not after hours: the step count the run would need (the waves may stop earlier when quiet).
+  // A periodic continuation may skip nearly all of them: then the steps taken are counted instead.
   const double steps = std::ceil(scene.final_time / solver_->dt());
-  PetscCheck(steps <= scene.run.max_steps, comm, PETSC_ERR_USER_INPUT,
+  if (scene.periodic.on) max_steps_ = scene.run.max_steps;
+  PetscCheck(scene.periodic.on || steps <= scene.run.max_steps, comm, PETSC_ERR_USER_INPUT,
              "the run needs up to %.3g wave steps (dt = %g s to -final_time %g s), more than -max_steps %.3g: shorten "
              "-final_time, soften the contact law or raise -max_steps",
              steps, solver_->dt(), scene.final_time, scene.run.max_steps);
@@ -124,6 +126,25 @@ PetscErrorCode WaveComponent::Advance(PetscInt steps, double t_end) {
   PetscFunctionBeginUser;
   if (solver_->StepsUntil(t_end) <= steps) PetscCall(solver_->AdvanceTo(t_end));
   else PetscCall(solver_->AdvanceSteps(steps));
+  PetscCall(CheckStepBudget());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::AdvanceTo(double t_end) {
+  PetscFunctionBeginUser;
+  PetscCall(solver_->AdvanceTo(t_end));
+  PetscCall(CheckStepBudget());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::CheckStepBudget() const {
+  PetscFunctionBeginUser;
+  PetscCheck(max_steps_ == 0.0 || solver_->steps() <= max_steps_, PetscObjectComm((PetscObject)solver_->space().dm()),
+             PETSC_ERR_USER_INPUT,
+             "the run has taken %" PetscInt_FMT " wave steps, more than -max_steps %.3g (the waves have not become "
+             "periodic; periodic.csv has the change per period): shorten -final_time, loosen -periodic_tol or raise "
+             "-max_steps",
+             solver_->steps(), max_steps_);
   PetscFunctionReturn(0);
 }
 

@@ -30,6 +30,23 @@ expect_error() {  # expected-substring, then vibrotherm options
   fi
 }
 
+# Refused while running (after the mesh is written): one line, exit 2, nothing that looks complete.
+expect_error_while_running() {  # expected-substring, then vibrotherm options
+  local expected=$1
+  shift
+  local out="$work/out$((passed + failed))"
+  "$exe" -output_dir "$out" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$?
+  if [ "$code" -eq 2 ] && grep -qF -- "$expected" "$work/stderr" && [ "$(grep -c . "$work/stderr")" -eq 1 ] &&
+     [ ! -e "$out/summary.json" ] && [ ! -e "$out/energy.csv" ]; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAILED: vibrotherm $* -> exit $code, expected 2, one line with: $expected, no summary.json" >&2
+    sed 's/^/  stderr: /' "$work/stderr" >&2
+  fi
+}
+
 expect_error "crack 1 reaches beyond the specimen" $box -crack_center 0.045,0.05 -crack_length 0.02 -crack_angle 0
 expect_error "cracks 1 and 2 cross" $box -crack_center 0.025,0.05,0.025,0.05 -crack_length 0.02 -crack_angle 0,90
 expect_error "-mesh_h must be > 0" $box $crack -mesh_h 0
@@ -92,7 +109,10 @@ expect_error "-material_E must be finite, got inf" $box $crack -material_E inf
 expect_error "-crack_a0 must be finite, got nan" $box $crack -crack_a0 nan
 expect_error "-wave_ts_type beuler is not supported for waves" $box $crack -wave_ts_type beuler
 expect_error "-wave_ts_rk_type 3bs is not supported for waves" $box $crack -wave_ts_type rk -wave_ts_rk_type 3bs
-expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 30
+expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 30 -periodic off
+# With a continuation possible the steps taken are counted: a scene that never becomes periodic stops there.
+expect_error_while_running "more than -max_steps 2e+03 (the waves have not become periodic" $box $crack -final_time 30 \
+  -source_duration 30 -periodic_tol 1e-12 -max_steps 2000
 expect_error "-max_steps must be >= 1" $box $crack -max_steps 0
 expect_error "-max_steps must be <= 2.14748e+09" $box $crack -max_steps 1e12
 expect_error "more than the" $box $crack -mesh_h 2e-6 -mesh_h_crack 2e-6

@@ -29,6 +29,8 @@ class WaveComponent {
   interface::CrackInterface* crack() { return crack_.get(); }
   /// `steps` constant steps, or fewer landing exactly on t_end when it comes first.
   PetscErrorCode Advance(PetscInt steps, double t_end);
+  /// Steps to t_end exactly (quantized steps land there).
+  PetscErrorCode AdvanceTo(double t_end);
   /// Wave and interface columns of energy.csv now (collective).
   PetscErrorCode Energy(io::EnergyRow* row) const { return WaveEnergyRow(*solver_, row); }
   /// Fills the wave and contact parts of the summary and frees the solvers.
@@ -46,8 +48,11 @@ class WaveComponent {
                             const std::vector<double>& increments);
 
  private:
+  /// With a continuation possible, -max_steps counts the steps taken (refused where they pass it).
+  PetscErrorCode CheckStepBudget() const;
   std::unique_ptr<wave::WaveSolver> solver_;
   std::unique_ptr<interface::CrackInterface> crack_;
+  double max_steps_ = 0.0;  ///< -max_steps, checked while stepping when a continuation may skip most steps
 };
 
 }  // namespace vibrotherm::coupling
