@@ -35,7 +35,7 @@ def run_one(root, build_dir, ranks, out, options, env, reuse):
         return
     cmd = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm")] + options + ["-output_dir", out]
     print("run:", " ".join(cmd[3:]), flush=True)
-    subprocess.run(cmd, env=env, check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(cmd, env=env, check=True, stdout=subprocess.DEVNULL, cwd=root)  # options files include others by relative path
 
 
 def study(root, build_dir, ranks, output, env, duration, reuse):

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "vibrotherm/coupling/damping_heat_source.hpp"
 #include "vibrotherm/coupling/thermal_stress.hpp"
 #include "vibrotherm/coupling/thermoelastic_source.hpp"
 #include "vibrotherm/coupling/thermoelastic_transfer.hpp"
@@ -37,6 +38,14 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
     // two_way: the thermal stress's stiffness may have shortened the wave step set up before.
     summary->derived["wave_dt"] = waves->solver().dt();
     summary->derived["wave_stable_dt"] = waves->solver().stable_dt();
+  }
+  if (waves && scene.material.damping_heat) {
+    Mat D;
+    PetscCall(AssembleDampingTransfer(waves->solver().space(), solver_.space(), &D));
+    auto damping = std::make_unique<DampingHeatSource>();
+    PetscCall(damping->Setup(&waves->solver(), D));
+    PetscCall(MatDestroy(&D));
+    sources_.push_back(std::move(damping));
   }
   PetscCall(DMCreateGlobalVector(specimen.heat, &load_));
   for (double s : scene.run.crack_probes) {
@@ -124,6 +133,7 @@ PetscErrorCode HeatComponent::Energy(io::EnergyRow* row) const {
   };
   row->heat_friction = by("friction");
   row->heat_thermoelastic = by("thermoelastic");
+  row->heat_damping = by("damping");
   row->heat_boundary_loss = solver_.boundary_loss();
   PetscCall(solver_.HeatContent(&row->heat_content));
   PetscFunctionReturn(0);

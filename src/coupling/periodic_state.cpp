@@ -11,12 +11,13 @@
 namespace vibrotherm::coupling {
 namespace {
 
-constexpr std::size_t kRowValues = 15;
+constexpr std::size_t kRowValues = 16;
 
 std::vector<double> Flatten(const io::EnergyRow& r) {
   return {r.t,          r.work_source,  r.kinetic,      r.strain,         r.radiated,
           r.interface_stored, r.dissipated, r.heat_deposited, r.heat_content, r.heat_boundary_loss,
-          r.integrator_correction, r.heat_friction, r.heat_thermoelastic, r.work_thermal, r.damped};
+          r.integrator_correction, r.heat_friction, r.heat_thermoelastic, r.work_thermal, r.damped,
+          r.heat_damping};
 }
 
 io::EnergyRow Unflatten(const double* v) {
@@ -24,7 +25,7 @@ io::EnergyRow Unflatten(const double* v) {
   r.t = v[0], r.work_source = v[1], r.kinetic = v[2], r.strain = v[3], r.radiated = v[4];
   r.interface_stored = v[5], r.dissipated = v[6], r.heat_deposited = v[7], r.heat_content = v[8];
   r.heat_boundary_loss = v[9], r.integrator_correction = v[10], r.heat_friction = v[11];
-  r.heat_thermoelastic = v[12], r.work_thermal = v[13], r.damped = v[14];
+  r.heat_thermoelastic = v[12], r.work_thermal = v[13], r.damped = v[14], r.heat_damping = v[15];
   return r;
 }
 

@@ -30,7 +30,8 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
     waves_ = std::make_unique<WaveComponent>();
     PetscCall(waves_->Setup(specimen, scene, summary));
   }
-  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) || run.thermoelastic != ThermoelasticChoice::Off);
+  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
+                                   run.thermoelastic != ThermoelasticChoice::Off || scene.material.damping_heat);
   const bool heat_needed = run.physics == PhysicsChoice::Heat ||
                            (run.physics == PhysicsChoice::All &&
                             (run.heat == HeatChoice::On || (run.heat == HeatChoice::Auto && can_heat)));
@@ -205,15 +206,17 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   if (scene_->run.quiet_fraction <= 0.0) PetscFunctionReturn(0);
   // The mechanical energy left bounds the heat still to come: once it is a small
   // fraction of what has been dissipated, stopping the waves loses at most that fraction.
-  // Of it, friction takes at most its share of the losses over the last period (material
-  // damping and radiation heat no crack; friction's share only falls as the waves decay).
+  // Of it, the heating losses take at most their share of the losses over the last period
+  // (friction; material damping only with -material_damping_heat; radiation heats nothing).
   const double t = e.t;
+  const bool damping_heats = scene_->material.damping_heat;
   double left = e.kinetic + e.strain + e.interface_stored;
-  if (heat_ && !recent_.empty()) {  // the waves stop for the heat's sake: only friction heats
+  if (heat_ && !recent_.empty()) {  // the waves stop for the heat's sake
     const Sample& first = recent_.front();
-    const double friction = e.dissipated - first.dissipated;
-    const double losses = friction + (e.damped - first.damped) + (e.radiated - first.radiated);
-    if (losses > 0.0) left *= std::max(0.0, friction) / losses;
+    const double friction = e.dissipated - first.dissipated, damped = e.damped - first.damped;
+    const double heating = friction + (damping_heats ? damped : 0.0);
+    const double losses = friction + damped + (e.radiated - first.radiated);
+    if (losses > 0.0) left *= std::max(0.0, heating) / losses;
   }
   recent_.push_back({t, left, e.dissipated, e.damped, e.radiated});
   peak_mechanical_ = std::max(peak_mechanical_, left);
@@ -223,7 +226,8 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   if (t < scene_->excitation.signal.duration + period) PetscFunctionReturn(0);
   double most = 0.0;
   for (const Sample& s : recent_) most = std::max(most, s.energy);
-  const double reference = heat_ && e.dissipated > 0.0 ? e.dissipated : peak_mechanical_;
+  const double heated = e.dissipated + (damping_heats ? e.damped : 0.0);
+  const double reference = heat_ && heated > 0.0 ? heated : peak_mechanical_;
   *quiet = most <= scene_->run.quiet_fraction * reference;
   mechanical_left_ = most;
   PetscFunctionReturn(0);

@@ -56,8 +56,8 @@ PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<doubl
 
 }  // namespace
 
-PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat, double beta_T0,
-                                             Mat* transfer) {
+PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
+                                  const WaveToHeatKernel& kernel, Mat* transfer) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave.dm());
   std::vector<double> points;
@@ -110,9 +110,9 @@ PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, cons
     values.assign(rows_here.size() * nc, 0.0);
     for (std::size_t h = 0; h < rows_here.size(); ++h)
       for (int a = 0; a < nb; ++a)
-        for (int k = 0; k < 2; ++k) {  // ∂φ_a/∂x_k: the divergence of the dof (node a, component k)
+        for (int k = 0; k < 2; ++k) {  // ∂φ_a/∂x_k of the dof (node a, component k)
           const double d = dphi[2 * a] * iJ[k] + dphi[2 * a + 1] * iJ[2 + k];
-          values[h * nc + 2 * a + k] = -beta_T0 * p[2] * p[3 + kMaxHeatNodes + h] * d;
+          values[h * nc + 2 * a + k] = p[2] * p[3 + kMaxHeatNodes + h] * kernel(phi[a], d);
         }
     PetscCall(MatSetValues(B, static_cast<PetscInt>(rows_here.size()), rows_here.data(), nc, cols_here.data(),
                            values.data(), ADD_VALUES));
@@ -120,6 +120,34 @@ PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, cons
   PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
   *transfer = B;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat, double beta_T0,
+                                             Mat* transfer) {
+  return AssembleWaveToHeat(wave, heat, [beta_T0](double, double d) { return -beta_T0 * d; }, transfer);
+}
+
+PetscErrorCode AssembleDampingTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat, Mat* transfer) {
+  PetscFunctionBeginUser;
+  Mat T;
+  PetscCall(AssembleWaveToHeat(wave, heat, [](double phi, double) { return phi; }, &T));
+  // Each wave dof's energy all into the heat mesh: columns scaled to sum 1 (∫ψ_h summed over h is ∫φ_j,
+  // up to the heat cells' quadrature of a wave basis function).
+  Vec ones, sums;
+  PetscCall(MatCreateVecs(T, &sums, &ones));
+  PetscCall(VecSet(ones, 1.0));
+  PetscCall(MatMultTranspose(T, ones, sums));
+  PetscScalar* s;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(sums, &n));
+  PetscCall(VecGetArray(sums, &s));
+  for (PetscInt i = 0; i < n; ++i) s[i] = s[i] != 0.0 ? 1.0 / s[i] : 0.0;
+  PetscCall(VecRestoreArray(sums, &s));
+  PetscCall(MatDiagonalScale(T, nullptr, sums));
+  PetscCall(VecDestroy(&ones));
+  PetscCall(VecDestroy(&sums));
+  *transfer = T;
   PetscFunctionReturn(0);
 }
 

@@ -15,7 +15,7 @@ PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path, long long
     if (resume_bytes < 0)
       file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
                        "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic,work_thermal,"
-                         "damped\n";
+                         "damped,heat_damping\n";
   }
   PetscFunctionReturn(0);
 }
@@ -32,7 +32,7 @@ PetscErrorCode EnergyLog::Record(const EnergyRow& r, double* budget_error) {
     file_->stream() << r.t << ',' << r.work_source << ',' << r.kinetic << ',' << r.strain << ',' << r.radiated << ','
                     << r.interface_stored << ',' << r.dissipated << ',' << r.heat_deposited << ',' << r.heat_content
                     << ',' << r.heat_boundary_loss << ',' << error << ',' << r.integrator_correction << ',' << r.heat_friction << ','
-                    << r.heat_thermoelastic << ',' << r.work_thermal << ',' << r.damped << '\n';
+                    << r.heat_thermoelastic << ',' << r.work_thermal << ',' << r.damped << ',' << r.heat_damping << '\n';
   PetscFunctionReturn(0);
 }
 

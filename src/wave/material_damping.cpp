@@ -33,15 +33,24 @@ class MaterialDamping final : public BoundaryTerm {
     for (std::size_t i = 0; i < mass_.size(); ++i) {
       const double mean = 0.5 * (s.v[i] + v_prev_[i]);
       work += mass_[i] * mean * mean;
+      if (!taken_.empty()) taken_[i] += s.h * rate_ * mass_[i] * mean * mean;
       v_prev_[i] = s.v[i];
     }
     e->damped += s.h * rate_ * work;
+  }
+  bool KeepDofEnergy() override {
+    if (account_ && taken_.empty()) taken_.assign(mass_.size(), 0.0);
+    return account_;
+  }
+  void TakeDofEnergy(PetscScalar* e) override {
+    for (std::size_t i = 0; i < taken_.size(); ++i) e[i] += taken_[i], taken_[i] = 0.0;
   }
   void Resume(const StepState& s) override { v_prev_.assign(s.v, s.v + v_prev_.size()); }
 
  private:
   double rate_;
   std::vector<double> mass_, v_prev_;  ///< owned lumped masses, and velocities at the last step
+  std::vector<double> taken_;          ///< per dof since the last TakeDofEnergy (empty: not kept)
   bool account_;
 };
 

@@ -26,6 +26,11 @@ PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, Elast
                              nullptr, m->loss_factor, &m->loss_factor, nullptr));
   PetscCall(PetscOptionsReal("-material_damping_frequency", "Frequency the loss factor holds at [Hz] (default: "
                              "-source_frequency)", nullptr, m->damping_frequency, &m->damping_frequency, &frequency_set));
+  PetscBool heat = m->damping_heat ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscOptionsBool("-material_damping_heat", "The energy material damping takes heats the specimen where it "
+                             "is taken (a volume heat source; off: only the crack's friction heats)", nullptr, heat,
+                             &heat, nullptr));
+  m->damping_heat = heat;
   PetscOptionsEnd();
   PetscCheck(m->loss_factor >= 0.0 && m->loss_factor < 1.0, comm, PETSC_ERR_USER_INPUT,
              "-material_loss_factor must be in [0, 1), got %g", m->loss_factor);
@@ -33,6 +38,8 @@ PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, Elast
   // so an unusable -source_frequency is refused under its own name.
   PetscCheck((!frequency_set && m->loss_factor == 0.0) || (m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency)), comm,
              PETSC_ERR_USER_INPUT, "-material_damping_frequency must be > 0 and finite, got %g", m->damping_frequency);
+  PetscCheck(!m->damping_heat || m->loss_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-material_damping_heat needs material damping (-material_loss_factor > 0)");
   m->damping_rate = m->loss_factor * 2.0 * M_PI * m->damping_frequency;
   PetscFunctionReturn(0);
 }

@@ -426,6 +426,23 @@ PetscErrorCode TouchState(Vec x) {
 
 }  // namespace
 
+PetscErrorCode WaveSolver::KeepDampingEnergy(bool* kept) {
+  PetscFunctionBeginUser;
+  *kept = false;
+  for (const auto& term : terms_) *kept = term->KeepDofEnergy() || *kept;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::TakeDampingEnergy(Vec e) {
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(e, 0.0));
+  PetscScalar* a;
+  PetscCall(VecGetArray(e, &a));
+  for (const auto& term : terms_) term->TakeDofEnergy(a);
+  PetscCall(VecRestoreArray(e, &a));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode WaveSolver::GetFields(Vec* u, Vec* v) const {
   PetscFunctionBeginUser;
   // The TS changed X_ behind the views' backs: no cached norm of a view may survive.

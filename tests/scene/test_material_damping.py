@@ -5,10 +5,13 @@ its top edge and rings: every mode of a mass-proportionally damped body loses en
 alpha, so the mechanical energy decays as exp(-alpha t) (closed form), with the global step and
 with local time stepping (damping in the kicks of each dof's own level); the energy budget with
 its damping column closes to 1e-6 (global step); without
-damping the same ring conserves its energy.
+damping the same ring conserves its energy. With -material_damping_heat (insulated edges)
+the heat deposited and the heat content equal the waves' own `damped` account to rounding
+(two independent sums: the waves' per step, the heat's per heat step through the transfer),
+the heat starting without a crack; refused without damping and with local time stepping.
 
 usage: test_material_damping.py VIBROTHERM"""
-import json, math, os, sys, tempfile
+import json, math, os, subprocess, sys, tempfile
 
 import numpy as np
 
@@ -61,4 +64,24 @@ with tempfile.TemporaryDirectory() as tmp:
         late = e["t"] > 6e-5
         check(np.ptp(mech[late]) < 1e-5 * mech[late].max() and e["damped"][-1] == 0.0,
               "without damping the ring keeps its energy (spread %g)" % (np.ptp(mech[late]) / mech[late].max()))
+    # The damping heats the specimen: every joule the waves' account books arrives in the heat.
+    heated = os.path.join(tmp, "heated")
+    damping = ["-material_loss_factor", str(eta), "-material_damping_frequency", str(f_d)]
+    if run_scene(check, exe, scene[:-2] + damping + ["-material_damping_heat", "-heat_bc", "insulated"], heated):
+        e = np.genfromtxt(os.path.join(heated, "energy.csv"), delimiter=",", names=True)
+        s = json.load(open(os.path.join(heated, "summary.json")))
+        deposited = s["heat_deposited_by"].get("damping", 0.0)
+        print("damping heat: deposited %.12g, damped %.12g, heat content %.12g J/m" %
+              (deposited, e["damped"][-1], s["heat_content"]))
+        check("heat" in s["physics_ran"], "the damping heat starts the heat solver without a crack")
+        check(abs(deposited / e["damped"][-1] - 1) < 1e-9 and abs(e["heat_damping"][-1] / deposited - 1) < 1e-12,
+              "heat deposited %r = the waves' damped energy %r" % (deposited, e["damped"][-1]))
+        check(abs(s["heat_content"] / deposited - 1) < 1e-9, "insulated: heat content %r = deposited" % s["heat_content"])
+    for label, extra, name in (("without damping", [], "-material_loss_factor"),
+                               ("with local time stepping", damping + graded + ["-wave_lts", "on"], "-wave_lts")):
+        r = subprocess.run([exe] + scene[:-2] + extra + ["-material_damping_heat", "-output_dir",
+                                                         os.path.join(tmp, "refused")], capture_output=True, text=True)
+        lines = r.stderr.strip().splitlines()
+        check(r.returncode == 2 and len(lines) == 1 and name in lines[0],
+              "-material_damping_heat %s: one line naming %s, exit 2 (%d: %s)" % (label, name, r.returncode, r.stderr))
 check.finish()

@@ -10,12 +10,24 @@
 
 #include <petscmat.h>
 
+#include <functional>
+
 #include "vibrotherm/fe/lagrange_space.hpp"
 
 namespace vibrotherm::coupling {
 
+/// The value at a quadrature point of ψ_h times this, for wave dof (node a, component k):
+/// kernel(φ_a, ∂φ_a/∂x_k). Integrated over the heat mesh's cells (their points located in the wave mesh).
+using WaveToHeatKernel = std::function<double(double phi, double dphi_dxk)>;
+PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
+                                  const WaveToHeatKernel& kernel, Mat* transfer);
+
 /// B with beta_T0 = T0 β [Pa]. Collective over both meshes.
 PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
                                              double beta_T0, Mat* transfer);
+
+/// The damping heat's transfer D (heat dofs × wave dofs): D_hj = ∫ψ_h φ_a / Σ_h ∫ψ_h φ_a for dof j of
+/// node a, so that a wave dof's energy E_j arrives whole as the load D E (material damping heat). Collective.
+PetscErrorCode AssembleDampingTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat, Mat* transfer);
 
 }  // namespace vibrotherm::coupling

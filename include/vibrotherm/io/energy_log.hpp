@@ -1,7 +1,7 @@
 // energy.csv (J per metre of depth), rank 0, written atomically:
 //   t,work_source,kinetic,strain,radiated,interface_stored,dissipated,
 //   heat_deposited,heat_content,heat_boundary_loss,budget_error,integrator_correction,
-//   heat_friction,heat_thermoelastic,work_thermal,damped   (heat_deposited split by its sources)
+//   heat_friction,heat_thermoelastic,work_thermal,damped,heat_damping   (heat_deposited split by its sources)
 // budget_error = (work_source + work_thermal − kinetic − strain − integrator_correction −
 //                 radiated − interface_stored − dissipated − damped) / max(work_source so far)
 // work_thermal: the work of the thermal stress −βθI on the waves (-thermoelastic
@@ -29,6 +29,7 @@ struct EnergyRow {
          heat_deposited = 0, heat_content = 0, heat_boundary_loss = 0, integrator_correction = 0;
   double heat_friction = 0, heat_thermoelastic = 0, work_thermal = 0;
   double damped = 0;  ///< dissipated by material damping (-material_loss_factor)
+  double heat_damping = 0;  ///< heat deposited by it (-material_damping_heat)
 };
 
 class EnergyLog {

@@ -77,6 +77,11 @@ class BoundaryTerm {
   virtual void RestoreAccount(const std::vector<double>& /*values*/) {}
   /// ... and what it can: the last step's end state is the state restored (s.u, s.v).
   virtual void Resume(const StepState& /*s*/) {}
+  /// The energy this term takes from each owned dof (material damping: its heat), kept from now on
+  /// (false: the term keeps none) ...
+  virtual bool KeepDofEnergy() { return false; }
+  /// ... added to e (owned dofs) and forgotten: what was taken since the last call.
+  virtual void TakeDofEnergy(PetscScalar* /*e*/) {}
 };
 
 /// Material damping C = αM on every dof (material_damping.cpp): first of the terms, on the

@@ -16,6 +16,7 @@ struct ElasticMaterial {
   double damping_rate = 0.0;
   double loss_factor = 0.0;        ///< η as given
   double damping_frequency = 0.0;  ///< f_d [Hz] it was fitted at
+  bool damping_heat = false;       ///< -material_damping_heat: the damped energy heats the specimen
 
   double lambda() const { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }
   double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }

@@ -141,6 +141,11 @@ class WaveSolver {
   PetscErrorCode ViewLts() const;
   PetscInt dofs() const { return global_dofs_; }
   const fe::LagrangeSpace& space() const { return space_; }
+  /// The material damping's energy per dof kept from now on (the damping heat); kept: false when
+  /// there is no damping term or it is accounted elsewhere (local time stepping) ...
+  PetscErrorCode KeepDampingEnergy(bool* kept);
+  /// ... and into e (a global vector of the DM): what it took since the last call.
+  PetscErrorCode TakeDampingEnergy(Vec e);
   /// Displacement and velocity (global vectors of the DM; views on the state's
   /// memory, valid until RestoreFields; writes through them change the state).
   PetscErrorCode GetFields(Vec* u, Vec* v) const;
