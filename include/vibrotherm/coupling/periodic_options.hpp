@@ -12,7 +12,7 @@ enum class PeriodicChoice { Auto, On, Off };
 struct PeriodicOptions {
   PeriodicChoice choice = PeriodicChoice::Auto;
   bool on = true;             ///< choice is not off, and the coupling can compare whole periods
-  double tol = 3e-3;          ///< -periodic_tol: largest change per period of the state and energies
+  double tol = 3e-4;          ///< -periodic_tol: largest change per period of the state and energies
   /// -periodic_tol_cells: largest change of the contact cell by cell (memory, friction energy's
   /// distribution: it wanders by ~0.4 % from window to window in the paper scene while the total
   /// repeats to 1e-5)
