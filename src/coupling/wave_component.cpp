@@ -90,7 +90,19 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
-  if (scene.wave.harmonic_start) PetscCall(solver_->StartHarmonic());
+  if (scene.wave.harmonic_start) {
+    // Linearized about its rest state, a crack whose faces carry no load (a0 <= 0) has no stiffness:
+    // the steady response would let the faces pass through each other.
+    double most = -INFINITY, global;
+    if (crack_)
+      for (const interface::ContactCell& c : crack_->cells()) most = std::max(most, c.a0);
+    PetscCallMPI(MPI_Allreduce(&most, &global, 1, MPI_DOUBLE, MPI_MAX, comm));
+    PetscCheck(!crack_ || global > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-wave_start harmonic: the crack is not pre-closed (-crack_a0 %g): the linearized contact of an "
+               "unloaded crack lets its faces pass through each other; start at rest or pre-close it (-crack_a0 > 0)",
+               global);
+    PetscCall(solver_->StartHarmonic());
+  }
   PetscCall(stage.End(&summary->stages["wave_setup"]));
   PetscCall(solver_->ViewLts());
   summary->derived["wave_dt"] = solver_->dt();

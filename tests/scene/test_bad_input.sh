@@ -110,6 +110,7 @@ expect_error "-crack_a0 must be finite, got nan" $box $crack -crack_a0 nan
 expect_error "-wave_ts_type beuler is not supported for waves" $box $crack -wave_ts_type beuler
 expect_error "-wave_ts_rk_type 3bs is not supported for waves" $box $crack -wave_ts_type rk -wave_ts_rk_type 3bs
 expect_error "more than -max_steps" $box $crack -final_time 30 -source_duration 30 -periodic off
+expect_error "-wave_start harmonic: the crack is not pre-closed" $box $crack -wave_start harmonic
 # With a continuation possible the steps taken are counted: a scene that never becomes periodic stops there.
 expect_error_while_running "more than -max_steps 2e+03 (the waves have not become periodic" $box $crack -final_time 30 \
   -source_duration 30 -periodic_tol 1e-12 -max_steps 2000
