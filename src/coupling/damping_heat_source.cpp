@@ -25,10 +25,7 @@ PetscErrorCode DampingHeatSource::AddLoad(double, double interval, Vec Q) {
   PetscFunctionBeginUser;
   PetscCall(waves_->TakeDampingEnergy(energy_));
   PetscCall(MatMult(D_, energy_, work_));
-  PetscScalar energy;
-  PetscCall(VecSum(work_, &energy));
-  deposited_ += PetscRealPart(energy);
-  PetscCall(VecAXPY(Q, 1.0 / interval, work_));
+  PetscCall(AddEnergyLoad(work_, interval, Q, &deposited_));
   PetscFunctionReturn(0);
 }
 

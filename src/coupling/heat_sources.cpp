@@ -2,6 +2,15 @@
 
 namespace vibrotherm::coupling {
 
+PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited) {
+  PetscFunctionBeginUser;
+  PetscScalar energy;
+  PetscCall(VecSum(E, &energy));
+  *deposited += PetscRealPart(energy);
+  PetscCall(VecAXPY(Q, 1.0 / interval, E));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FrictionHeatSource::Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
                                          const fe::LagrangeSpace& heat_space, PetscInt ncracks) {
   PetscFunctionBeginUser;

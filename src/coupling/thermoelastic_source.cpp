@@ -30,10 +30,7 @@ PetscErrorCode ThermoelasticSource::AddLoad(double, double interval, Vec Q) {
   PetscCall(MatMult(B_, u_prev_, work_));
   PetscCall(VecCopy(u, u_prev_));
   PetscCall(waves_->RestoreFields(&u, &v));
-  PetscScalar energy;
-  PetscCall(VecSum(work_, &energy));
-  deposited_ += PetscRealPart(energy);
-  PetscCall(VecAXPY(Q, 1.0 / interval, work_));
+  PetscCall(AddEnergyLoad(work_, interval, Q, &deposited_));
   PetscFunctionReturn(0);
 }
 

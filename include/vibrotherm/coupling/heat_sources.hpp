@@ -16,6 +16,10 @@
 
 namespace vibrotherm::coupling {
 
+/// A heat step's energy load E (heat dofs, J/m per dof) into Q as the rate E / interval, and its
+/// total into *deposited. Collective.
+PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited);
+
 class HeatSource {
  public:
   virtual ~HeatSource() = default;
