@@ -82,6 +82,39 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
   json.end_object();
 }
 
+/// The probes' labels and temperature extremes, and the rises at the output times.
+void WriteProbeTemperatures(JsonWriter& json, const RunSummary& s) {
+  json.begin_object("probe_labels");
+  for (const auto& [k, label] : s.probe_labels) json.value(std::to_string(k).c_str(), label);
+  json.end_object();
+  json.begin_object("probe_max_temperature_rise");
+  for (const auto& [k, rise] : s.probe_max_temperature_rise) json.value(std::to_string(k).c_str(), rise);
+  json.end_object();
+  json.begin_array("output_temperature_rise");
+  for (const auto& [t, rises] : s.output_temperature_rise) {
+    json.begin_object();
+    json.value("t", t);
+    for (const auto& [k, rise] : rises) json.value(std::to_string(k).c_str(), rise);
+    json.end_object();
+  }
+  json.end_array();
+}
+
+/// The periodic continuation's segments (coupling/periodic_continuation.hpp).
+void WritePeriodic(JsonWriter& json, const RunSummary& s) {
+  json.begin_array("periodic");
+  for (const PeriodicSegment& p : s.periodic)
+    json.begin_object()
+        .value("detected", p.detected)
+        .value("suspended", p.suspended)
+        .value("resumed", p.resumed)
+        .value("period_multiple", p.period_multiple)
+        .value("periods_continued", p.periods_continued)
+        .value("change", p.change)
+        .end_object();
+  json.end_array();
+}
+
 }  // namespace
 
 PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const RunSummary& s) {
@@ -124,20 +157,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.begin_object("heat_deposited_by");
       for (const auto& [name, energy] : s.heat_deposited_by) json.value(name.c_str(), energy);
       json.end_object();
-      json.begin_object("probe_labels");
-      for (const auto& [k, label] : s.probe_labels) json.value(std::to_string(k).c_str(), label);
-      json.end_object();
-      json.begin_object("probe_max_temperature_rise");
-      for (const auto& [k, rise] : s.probe_max_temperature_rise) json.value(std::to_string(k).c_str(), rise);
-      json.end_object();
-      json.begin_array("output_temperature_rise");
-      for (const auto& [t, rises] : s.output_temperature_rise) {
-        json.begin_object();
-        json.value("t", t);
-        for (const auto& [k, rise] : rises) json.value(std::to_string(k).c_str(), rise);
-        json.end_object();
-      }
-      json.end_array();
+      WriteProbeTemperatures(json, s);
       WriteHeatView(json, s);
       if (!s.modes.empty()) {
         json.begin_array("modes");
@@ -145,17 +165,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
           json.begin_object().value("frequency", frequency).value("participation", participation).end_object();
         json.end_array();
       }
-      json.begin_array("periodic");
-      for (const PeriodicSegment& p : s.periodic)
-        json.begin_object()
-            .value("detected", p.detected)
-            .value("suspended", p.suspended)
-            .value("resumed", p.resumed)
-            .value("period_multiple", p.period_multiple)
-            .value("periods_continued", p.periods_continued)
-            .value("change", p.change)
-            .end_object();
-      json.end_array();
+      WritePeriodic(json, s);
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

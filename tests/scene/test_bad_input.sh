@@ -12,40 +12,29 @@ crack="-crack_center 0.025,0.05 -crack_length 0.02 -crack_angle 20"
 passed=0
 failed=0
 
-expect_error() {  # expected-substring, then vibrotherm options
-  local expected=$1
-  shift
+# One line on stderr with the expected text, exit 2, and, refused at setup: no output directory;
+# refused while running (after the mesh is written): nothing that looks complete.
+refused() {  # when (setup|running), expected-substring, then vibrotherm options
+  local when=$1 expected=$2
+  shift 2
   local out="$work/out$((passed + failed))"
   "$exe" -output_dir "$out" "$@" >"$work/stdout" 2>"$work/stderr"
   local code=$?
-  local lines
-  lines=$(grep -c . "$work/stderr")
-  if [ "$code" -eq 2 ] && grep -qF -- "$expected" "$work/stderr" && [ "$lines" -eq 1 ] && [ ! -e "$out" ]; then
+  local clean
+  if [ "$when" = setup ]; then [ ! -e "$out" ] && clean=1; else
+    [ ! -e "$out/summary.json" ] && [ ! -e "$out/energy.csv" ] && clean=1; fi
+  if [ "$code" -eq 2 ] && grep -qF -- "$expected" "$work/stderr" && [ "$(grep -c . "$work/stderr")" -eq 1 ] &&
+     [ -n "$clean" ]; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))
-    echo "FAILED: vibrotherm $* -> exit $code, expected 2 and one line with: $expected" >&2
+    echo "FAILED: vibrotherm $* -> exit $code, expected 2 and one line with: $expected (refused at $when)" >&2
     sed 's/^/  stderr: /' "$work/stderr" >&2
     [ -e "$out" ] && echo "  output left behind: $(ls "$out")" >&2
   fi
 }
-
-# Refused while running (after the mesh is written): one line, exit 2, nothing that looks complete.
-expect_error_while_running() {  # expected-substring, then vibrotherm options
-  local expected=$1
-  shift
-  local out="$work/out$((passed + failed))"
-  "$exe" -output_dir "$out" "$@" >"$work/stdout" 2>"$work/stderr"
-  local code=$?
-  if [ "$code" -eq 2 ] && grep -qF -- "$expected" "$work/stderr" && [ "$(grep -c . "$work/stderr")" -eq 1 ] &&
-     [ ! -e "$out/summary.json" ] && [ ! -e "$out/energy.csv" ]; then
-    passed=$((passed + 1))
-  else
-    failed=$((failed + 1))
-    echo "FAILED: vibrotherm $* -> exit $code, expected 2, one line with: $expected, no summary.json" >&2
-    sed 's/^/  stderr: /' "$work/stderr" >&2
-  fi
-}
+expect_error() { refused setup "$@"; }
+expect_error_while_running() { refused running "$@"; }
 
 expect_error "crack 1 reaches beyond the specimen" $box -crack_center 0.045,0.05 -crack_length 0.02 -crack_angle 0
 expect_error "cracks 1 and 2 cross" $box -crack_center 0.025,0.05,0.025,0.05 -crack_length 0.02 -crack_angle 0,90
