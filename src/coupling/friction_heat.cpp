@@ -130,7 +130,7 @@ PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_spa
   PetscCall(DMGetGlobalSection(dm, &global));
   PetscInt chart0, fStart, fEnd;
   PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(mesh::FacetRange(dm, &fStart, &fEnd));
   for (PetscInt k = 0; k < ncracks; ++k) {
     mesh::CrackLine line;
     PetscCall(line.Setup(dm, k));

@@ -125,7 +125,7 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   PetscCall(SharedPoints(dm, &shared));
   PetscInt chart0, fStart, fEnd;
   PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(mesh::FacetRange(dm, &fStart, &fEnd));
   // Marks go through local vectors and an ADD to the global one: a vertex shared
   // by two ranks gets the contribution of an outer face only one of them holds.
   Vec sink_local, h_local;

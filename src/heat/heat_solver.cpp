@@ -154,7 +154,7 @@ PetscErrorCode HeatSolver::CollectCrackFacets() {
   PetscCall(mesh::GhostPoints(dm_, &ghost));
   PetscInt chart0, fStart, fEnd;
   PetscCall(DMPlexGetChart(dm_, &chart0, nullptr));
-  PetscCall(DMPlexGetDepthStratum(dm_, 1, &fStart, &fEnd));
+  PetscCall(mesh::FacetRange(dm_, &fStart, &fEnd));
   facets_.clear();
   for (PetscInt f = fStart; f < fEnd && cracks; ++f) {
     PetscInt crack;

@@ -23,7 +23,7 @@ PetscErrorCode CrackLine::Setup(DM dm, PetscInt crack) {
   PetscCall(x.Setup(dm));
   PetscInt chart0, fStart, fEnd;
   PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(FacetRange(dm, &fStart, &fEnd));
   // Per owned facet of this crack: id, x0, y0, x1, y1. On a split mesh both
   // faces carry the id; they have the same coordinates, so duplicates are harmless.
   std::vector<double> mine;

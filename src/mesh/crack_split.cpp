@@ -4,6 +4,7 @@
 #include "vibrotherm/mesh/crack_split.hpp"
 
 #include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/mesh/plex_access.hpp"
 
 namespace vibrotherm::mesh {
 
@@ -14,7 +15,7 @@ PetscErrorCode SplitCracks(DM dm, DM* split) {
   PetscCall(DMGetLabel(dm, labels::crack, &crack));
   PetscCall(DMGetLabel(dm, labels::crack_tip, &tips));
   PetscInt fStart, fEnd, nfaces = 0, total = 0;
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(FacetRange(dm, &fStart, &fEnd));
 
   DMLabel fault;
   PetscCall(DMLabelCreate(PETSC_COMM_SELF, "vibrotherm_fault", &fault));

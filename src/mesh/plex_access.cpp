@@ -44,6 +44,20 @@ PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, st
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FacetRange(DM dm, PetscInt* fStart, PetscInt* fEnd) {
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetHeightStratum(dm, 1, fStart, fEnd));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode IsFacet(DM dm, PetscInt p, bool* facet) {
+  PetscFunctionBeginUser;
+  PetscInt height;
+  PetscCall(DMPlexGetPointHeight(dm, p, &height));
+  *facet = height == 1;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost) {
   PetscFunctionBeginUser;
   PetscInt pStart, pEnd, nleaves;

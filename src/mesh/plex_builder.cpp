@@ -68,7 +68,7 @@ PetscErrorCode LabelCrackFacetsAndTips(DM dm, const std::vector<std::string>& cr
   PetscCall(DMCreateLabel(dm, labels::crack_tip));
   PetscCall(DMGetLabel(dm, labels::crack_tip, &tip));
   PetscInt fStart, fEnd;
-  PetscCall(DMPlexGetDepthStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(FacetRange(dm, &fStart, &fEnd));
   VertexCoordinates x;
   PetscCall(x.Setup(dm));
   PetscInt next_id = 0;

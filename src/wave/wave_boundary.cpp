@@ -82,9 +82,9 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
   PetscCall(VecGetArray(local->xy, &axy));
   PetscCall(VecGetArray(local->sum, &asum));
   for (PetscInt i = 0; i < nf; ++i) {
-    PetscInt depth;
-    PetscCall(DMPlexGetPointDepth(dm, f[i], &depth));
-    if (depth != 1) continue;
+    bool facet;
+    PetscCall(mesh::IsFacet(dm, f[i], &facet));
+    if (!facet) continue;
     double n[2], s[2], L;
     PetscCall(FaceFrame(dm, x, f[i], n, s));
     PetscCall(space.FaceNodes(f[i], &offsets, &weights, &L));

@@ -25,6 +25,12 @@ PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, st
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);
 
+/// The facets of a DMPlex: the points of height 1 (edges in 2D, faces in 3D).
+PetscErrorCode FacetRange(DM dm, PetscInt* fStart, PetscInt* fEnd);
+
+/// Whether point p is a facet (height 1).
+PetscErrorCode IsFacet(DM dm, PetscInt p, bool* facet);
+
 /// Whether cell c is a cohesive (crack) cell.
 PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive);
 
