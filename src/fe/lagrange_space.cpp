@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::fe {
 

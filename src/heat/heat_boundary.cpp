@@ -7,8 +7,8 @@
 #include <cmath>
 #include <map>
 
-#include "vibrotherm/mesh/labels.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::heat {

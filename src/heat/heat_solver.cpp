@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "vibrotherm/heat/step_ladder.hpp"
-#include "vibrotherm/mesh/labels.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::heat {
 

@@ -6,7 +6,7 @@
 
 namespace vibrotherm::heat {
 
-PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
+PetscErrorCode HeatSolver::Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
@@ -35,7 +35,7 @@ PetscErrorCode HeatSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+PetscErrorCode HeatSolver::Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
   PetscFunctionBeginUser;
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));

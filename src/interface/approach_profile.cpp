@@ -7,7 +7,7 @@
 #include "vibrotherm/contact/contact_parameters.hpp"
 #include "vibrotherm/contact/csv_rows.hpp"
 #include "vibrotherm/util/errors.hpp"
-#include "vibrotherm/util/option_choice.hpp"
+#include "vibrotherm/options/petsc/option_choice.hpp"
 
 namespace vibrotherm::interface {
 

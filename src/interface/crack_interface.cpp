@@ -7,8 +7,8 @@
 #include <map>
 
 #include "vibrotherm/interface/contact_geometry.hpp"
-#include "vibrotherm/mesh/labels.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::interface {

@@ -11,7 +11,7 @@ namespace {
 constexpr int kCellValues = 8;  // a, b, power, W, last N, T, dW, state
 }
 
-PetscErrorCode CrackInterface::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
+PetscErrorCode CrackInterface::Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
   std::vector<long long> keys, counts;
   std::vector<double> cells, memory;
@@ -32,7 +32,7 @@ PetscErrorCode CrackInterface::Save(io::Checkpoint& checkpoint, const mesh::Poin
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CrackInterface::Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+PetscErrorCode CrackInterface::Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
   PetscFunctionBeginUser;
   std::vector<long long> keys, counts;
   for (const ContactCell& c : cells_) keys.push_back(origin[c.plus]);

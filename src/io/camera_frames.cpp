@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <stdexcept>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 
 namespace vibrotherm::io {
 namespace {
@@ -47,7 +47,7 @@ void CameraFrames::Open(const std::string& h5_path, const CameraGrid& grid,
                         const std::map<std::string, double>& attributes) {
   path_ = h5_path;
   grid_ = grid;
-  file_ = H5Fcreate(AtomicFile::partial_name(h5_path).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  file_ = H5Fcreate(store::AtomicFile::partial_name(h5_path).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) throw std::runtime_error(h5_path + ": cannot create the file");
   group_ = H5Gcreate2(file_, "camera", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (group_ < 0) throw std::runtime_error(h5_path + ": cannot create the group /camera");
@@ -92,9 +92,9 @@ void CameraFrames::Reopen(const std::string& h5_path, const CameraGrid& grid, in
   path_ = h5_path;
   grid_ = grid;
   times_ = times;
-  H5E_BEGIN_TRY { file_ = H5Fopen(AtomicFile::partial_name(h5_path).c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }
+  H5E_BEGIN_TRY { file_ = H5Fopen(store::AtomicFile::partial_name(h5_path).c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }
   H5E_END_TRY;
-  if (file_ < 0) throw std::runtime_error("-restart: cannot resume '" + AtomicFile::partial_name(h5_path) + "'");
+  if (file_ < 0) throw std::runtime_error("-restart: cannot resume '" + store::AtomicFile::partial_name(h5_path) + "'");
   group_ = H5Gopen2(file_, "camera", H5P_DEFAULT);
   if (group_ < 0) throw std::runtime_error(h5_path + ": no group /camera");
   // Frames the interrupted run wrote after its checkpoint are written again.
@@ -123,7 +123,7 @@ void CameraFrames::Finish() {
   const herr_t status = H5Fclose(file_);
   file_ = -1;
   Check(status, path_, "the file");
-  AtomicFile::publish(path_);
+  store::AtomicFile::publish(path_);
   WriteXdmf();
 }
 
@@ -131,7 +131,7 @@ void CameraFrames::WriteXdmf() const {
   const std::filesystem::path h5(path_);
   const std::string xmf = (h5.parent_path() / h5.stem()).string() + ".xmf";
   const std::string file = h5.filename().string();
-  AtomicFile out(xmf);
+  store::AtomicFile out(xmf);
   std::ostream& s = out.stream();
   s << std::setprecision(17);
   s << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"

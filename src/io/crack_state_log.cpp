@@ -11,7 +11,7 @@ PetscErrorCode CrackStateLog::Open(MPI_Comm comm, const std::string& path, long 
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
+  VibrothermCallCpp(PETSC_COMM_SELF, file_ = store::OpenAtomicFile(path, resume_bytes));
   if (resume_bytes < 0) file_->stream() << "t,crack,xi,x,y,a,b,N,T,state,power,W\n";
   PetscFunctionReturn(0);
 }

@@ -11,7 +11,7 @@ PetscErrorCode EnergyLog::Open(MPI_Comm comm, const std::string& path, long long
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
+    VibrothermCallCpp(PETSC_COMM_SELF, file_ = store::OpenAtomicFile(path, resume_bytes));
     if (resume_bytes < 0)
       file_->stream() << "t,work_source,kinetic,strain,radiated,interface_stored,dissipated,heat_deposited,"
                        "heat_content,heat_boundary_loss,budget_error,integrator_correction,heat_friction,heat_thermoelastic,work_thermal,"

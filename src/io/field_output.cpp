@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::io {
@@ -19,7 +19,7 @@ PetscErrorCode FieldFile::Open(MPI_Comm comm, const std::string& h5_path, XdmfLa
   path_ = h5_path;
   layout_ = layout;
   axis_ = axis;
-  const std::string partial = AtomicFile::partial_name(h5_path);
+  const std::string partial = store::AtomicFile::partial_name(h5_path);
   PetscCheck(!append || std::filesystem::exists(partial), comm, PETSC_ERR_FILE_OPEN,
              "-restart: cannot resume '%s': missing", partial.c_str());
   PetscCall(PetscViewerHDF5Open(comm, partial.c_str(), append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &viewer_));
@@ -251,7 +251,7 @@ PetscErrorCode FieldFile::Finish() {
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  VibrothermCallIo(PETSC_COMM_SELF, AtomicFile::publish(path_));
+  VibrothermCallIo(PETSC_COMM_SELF, store::AtomicFile::publish(path_));
   PetscCall(WriteXdmf());
   PetscFunctionReturn(0);
 }
@@ -263,7 +263,7 @@ PetscErrorCode FieldFile::WriteXdmf() const {
   auto series = [&](const Grid& g, const std::string& xmf_path) {
     std::vector<XdmfStep> steps;
     for (const auto& [k, attributes] : g.outputs) steps.push_back({times_.at(k), attributes});
-    AtomicFile xmf(xmf_path);
+    store::AtomicFile xmf(xmf_path);
     WriteXdmfSeries(xmf.stream(), g.xdmf, steps);
     xmf.commit();
   };
@@ -271,7 +271,7 @@ PetscErrorCode FieldFile::WriteXdmf() const {
     std::vector<XdmfGrid> grids;
     for (const std::string& name : order_) grids.push_back(grids_.at(name).xdmf);
     VibrothermCallCpp(PETSC_COMM_SELF, {
-      AtomicFile xmf(stem + ".xmf");
+      store::AtomicFile xmf(stem + ".xmf");
       WriteXdmfCollection(xmf.stream(), h5.stem().string(), grids);
       xmf.commit();
     });

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 
 namespace vibrotherm::io {
 namespace {
@@ -28,7 +28,7 @@ void WriteUnits(hid_t dataset, const std::string& units, const std::string& path
 }  // namespace
 
 void WriteH5Tables(const std::string& path, const std::map<std::string, H5Table>& tables) {
-  const std::string partial = AtomicFile::partial_name(path);
+  const std::string partial = store::AtomicFile::partial_name(path);
   const hid_t file = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error(path + ": cannot create the file");
   for (const auto& [name, table] : tables) {
@@ -47,7 +47,7 @@ void WriteH5Tables(const std::string& path, const std::map<std::string, H5Table>
     }
   }
   Check(H5Fclose(file), path, "the file");
-  AtomicFile::publish(path);
+  store::AtomicFile::publish(path);
 }
 
 }  // namespace vibrotherm::io

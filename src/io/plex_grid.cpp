@@ -2,7 +2,7 @@
 
 #include <petscdmplex.h>
 
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::io {
 namespace {

@@ -37,7 +37,7 @@ PetscErrorCode PointProbes::Setup(const fe::LagrangeSpace& space, const std::vec
     points_.push_back({xy[2 * i], xy[2 * i + 1]});
   }
   if (rank == 0) {
-    VibrothermCallCpp(PETSC_COMM_SELF, file_ = OpenAtomicFile(path, resume_bytes));
+    VibrothermCallCpp(PETSC_COMM_SELF, file_ = store::OpenAtomicFile(path, resume_bytes));
     // 12 significant digits (2-rank runs equal serial ones to 1e-10 of the amplitude),
     // the temperature 17 (a rise of 1e-7 K on 293 K); a third smaller than all at 17.
     file_->stream().precision(12);

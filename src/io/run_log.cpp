@@ -5,7 +5,7 @@
 #include <fstream>
 #include <memory>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::io {
@@ -14,7 +14,7 @@ namespace {
 struct Log {
   PetscErrorCode (*original)(FILE*, const char[], va_list) = nullptr;
   std::string held;
-  std::unique_ptr<AtomicFile> file;
+  std::unique_ptr<store::AtomicFile> file;
 };
 Log& TheLog() {
   static Log log;
@@ -51,7 +51,7 @@ PetscErrorCode RunLogOpen(MPI_Comm comm, const std::string& path) {
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
   Log& log = TheLog();
-  VibrothermCallCpp(PETSC_COMM_SELF, log.file = std::make_unique<AtomicFile>(path));
+  VibrothermCallCpp(PETSC_COMM_SELF, log.file = std::make_unique<store::AtomicFile>(path));
   log.file->stream() << log.held << std::flush;
   log.held.clear();
   PetscFunctionReturn(0);

@@ -1,6 +1,6 @@
 #include "vibrotherm/io/run_summary.hpp"
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/io/json_writer.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/version.hpp"
@@ -125,7 +125,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
   PetscCall(PetscOptionsGetAll(nullptr, &options));  // collective
   if (rank == 0) {
     VibrothermCallIo(PETSC_COMM_SELF, {
-      AtomicFile file(path);
+      store::AtomicFile file(path);
       JsonWriter json(file.stream());
       json.begin_object();
       json.value("version", version()).value("git_commit", s.git_commit).value("date", s.date);

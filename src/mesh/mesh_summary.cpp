@@ -3,8 +3,8 @@
 #include <cmath>
 #include <set>
 
-#include "vibrotherm/mesh/labels.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::mesh {
 namespace {

@@ -5,8 +5,8 @@
 #include <map>
 #include <vector>
 
-#include "vibrotherm/mesh/labels.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::mesh {
 namespace {

@@ -2,10 +2,10 @@
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
 
-#include "vibrotherm/mesh/crack_split.hpp"
-#include "vibrotherm/mesh/lts_partition.hpp"
+#include "vibrotherm/mesh/plex/crack_split.hpp"
+#include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
-#include "vibrotherm/mesh/metis_partitioner.hpp"
+#include "vibrotherm/mesh/plex/metis_partitioner.hpp"
 #include "vibrotherm/mesh/plex_builder.hpp"
 #include "vibrotherm/util/root_task.hpp"
 

@@ -5,8 +5,8 @@
 
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/util/errors.hpp"
-#include "vibrotherm/util/option_list.hpp"
-#include "vibrotherm/util/option_choice.hpp"
+#include "vibrotherm/options/petsc/option_list.hpp"
+#include "vibrotherm/options/petsc/option_choice.hpp"
 
 namespace vibrotherm::mesh {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <iomanip>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/io/field_output.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
@@ -234,7 +234,7 @@ PetscErrorCode ModalAnalysis::Write(const std::string& dir) const {
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     VibrothermCallCpp(PETSC_COMM_SELF, {
-      io::AtomicFile file(dir + "/modes.csv");
+      store::AtomicFile file(dir + "/modes.csv");
       auto& out = file.stream();
       out << "mode,frequency,participation,error\n" << std::setprecision(10);
       for (std::size_t k = 0; k < modes_.size(); ++k)

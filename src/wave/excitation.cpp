@@ -1,7 +1,7 @@
 #include "vibrotherm/wave/excitation.hpp"
 
-#include "vibrotherm/util/option_choice.hpp"
-#include "vibrotherm/util/option_list.hpp"
+#include "vibrotherm/options/petsc/option_choice.hpp"
+#include "vibrotherm/options/petsc/option_list.hpp"
 
 #include <cmath>
 #include <string>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vibrotherm/mesh/lts_partition.hpp"
+#include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 
 namespace vibrotherm::wave {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::wave {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "vibrotherm/util/option_choice.hpp"
+#include "vibrotherm/options/petsc/option_choice.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 #include "vibrotherm/wave/stability.hpp"
 #include "vibrotherm/wave/verlet_ts.hpp"

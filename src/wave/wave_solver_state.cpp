@@ -5,7 +5,7 @@
 
 namespace vibrotherm::wave {
 
-PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
+PetscErrorCode WaveSolver::Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
@@ -18,7 +18,7 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   PetscInt ts_steps;
   PetscCall(TSGetStepNumber(ts_, &ts_steps));
   // The body force's end-of-step value (types other than Verlet): it was taken before the heat step changed the force.
-  if (body_) PetscCall(io::PutOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
+  if (body_) PetscCall(store::PutOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
   checkpoint.PutShared("wave/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps),
                                       integrator_offset_});
   checkpoint.PutShared("wave/step_control", step_.state());
@@ -34,7 +34,7 @@ PetscErrorCode WaveSolver::Save(io::Checkpoint& checkpoint, const mesh::PointOri
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-restart: the implicit wave TS (alpha2) is not checkpointed");
@@ -78,7 +78,7 @@ PetscErrorCode WaveSolver::Restore(const io::Checkpoint& checkpoint, const mesh:
     at += n;
   }
   if (body_) {  // what the solver remembers of the body force's last step
-    PetscCall(io::GetOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
+    PetscCall(store::GetOwnedValues(checkpoint, "wave/body_force_end", keys, body_f_end_));
     PetscCall(VecCopy(u_, body_u_));
   }
   // What the terms remember of the last step's end state is the state itself.

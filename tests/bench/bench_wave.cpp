@@ -13,7 +13,7 @@
 #include <cmath>
 #include <ctime>
 
-#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"

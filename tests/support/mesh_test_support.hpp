@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/scene.hpp"
-#include "vibrotherm/mesh/labels.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
-#include "vibrotherm/mesh/plex_access.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 
 namespace vibrotherm::testing {

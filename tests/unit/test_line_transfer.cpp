@@ -9,7 +9,7 @@
 #include <map>
 #include <random>
 
-#include "vibrotherm/coupling/line_transfer.hpp"
+#include "vibrotherm/coupling/exchange/line_transfer.hpp"
 
 namespace vibrotherm::coupling {
 namespace {

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vibrotherm/coupling/scene.hpp"
-#include "vibrotherm/coupling/simulation.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/coupling/run/simulation.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "wave_test_support.hpp"
 

@@ -28,8 +28,8 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
-#include "vibrotherm/io/checkpoint.hpp"
-#include "vibrotherm/mesh/point_origin.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/mesh/plex/point_origin.hpp"
 
 namespace vibrotherm::heat {
 
@@ -122,8 +122,8 @@ class HeatSolver {
   const HeatMaterial& material() const { return material_; }
   /// The coupled phase's state (θ keyed by dof origin; time, steps, accounts,
   /// the Jacobian's shift) into a checkpoint, and back (heat_solver_state.cpp).
-  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
-  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
 
  private:
   static PetscErrorCode IFunction(TS ts, PetscReal t, Vec theta, Vec theta_dot, Vec F, void* ctx);

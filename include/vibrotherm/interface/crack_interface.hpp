@@ -21,8 +21,8 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/interface/crack_record.hpp"
-#include "vibrotherm/io/checkpoint.hpp"
-#include "vibrotherm/mesh/point_origin.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::interface {
@@ -77,8 +77,8 @@ class CrackInterface final : public wave::WaveInterface {
   PetscErrorCode MaxFrictionExcess(double* excess) const;
   /// Every cell's committed state (law memory, a, b, power, W, last step) and
   /// the accounts into a checkpoint, keyed by the + point's origin; and back (crack_interface_state.cpp).
-  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
-  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
   /// The periodic continuation: what accumulates (W of every owned cell, this rank's dissipated
   /// energy), and a jump ahead that adds increments of these.
   std::vector<double> Accumulated() const;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "vibrotherm/interface/crack_record.hpp"
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 
 namespace vibrotherm::io {
 
@@ -27,7 +27,7 @@ class CrackStateLog {
   PetscErrorCode Finish();
 
  private:
-  std::unique_ptr<AtomicFile> file_;  ///< rank 0
+  std::unique_ptr<store::AtomicFile> file_;  ///< rank 0
   std::string block_;                 ///< the rows of one time, formatted (capacity kept)
 };
 

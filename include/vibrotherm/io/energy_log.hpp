@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 
 namespace vibrotherm::io {
 
@@ -50,7 +50,7 @@ class EnergyLog {
   double max_budget_error() const { return max_work_ > 0.0 ? max_imbalance_ / max_work_ : 0.0; }
 
  private:
-  std::unique_ptr<AtomicFile> file_;
+  std::unique_ptr<store::AtomicFile> file_;
   double max_work_ = 0.0, max_imbalance_ = 0.0;
 };
 

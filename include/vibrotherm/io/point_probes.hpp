@@ -17,7 +17,7 @@
 
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/interface/crack_record.hpp"
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 
 namespace vibrotherm::io {
 
@@ -63,7 +63,7 @@ class PointProbes {
   std::vector<std::array<double, 2>> points_;
   std::vector<fe::LocatedPoint> probes_;
   std::vector<Row> pending_;           ///< rank 0
-  std::unique_ptr<AtomicFile> file_;  ///< rank 0
+  std::unique_ptr<store::AtomicFile> file_;  ///< rank 0
   Vec u_local_ = nullptr, v_local_ = nullptr;
 };
 

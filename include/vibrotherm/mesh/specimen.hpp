@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "vibrotherm/mesh/heat_mesh.hpp"
-#include "vibrotherm/mesh/lts_partition.hpp"
-#include "vibrotherm/mesh/point_origin.hpp"
+#include "vibrotherm/mesh/plex/lts_partition.hpp"
+#include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::mesh {

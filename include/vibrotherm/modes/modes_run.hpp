@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/scene.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/crack_line.hpp"
 #include "vibrotherm/mesh/specimen.hpp"

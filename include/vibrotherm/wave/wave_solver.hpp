@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
-#include "vibrotherm/io/checkpoint.hpp"
-#include "vibrotherm/mesh/point_origin.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/wave/body_force.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/wave/block_kernel.hpp"
@@ -157,8 +157,8 @@ class WaveSolver {
   /// The state between steps (u, v keyed by dof origin; time, steps, step
   /// control, energy accounts) into a checkpoint, and back (wave_solver_state.cpp).
   /// Restore after Setup and SetInterface; the interface restores itself.
-  PetscErrorCode Save(io::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
-  PetscErrorCode Restore(const io::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
+  PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin);
   /// What grows with time rather than repeating in a periodic state (this rank's: the clock,
   /// radiated, source work, body work, damped), for the periodic continuation ...
   std::vector<double> Accumulated() const;

@@ -19,7 +19,7 @@
 #include "vibrotherm/contact/contact_parameter_list.hpp"
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
-#include "vibrotherm/io/atomic_file.hpp"
+#include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/options/declared_options.hpp"
 
 namespace {
@@ -74,9 +74,9 @@ void run(const options::OptionDatabase& db) {
     std::cout << rows.str();
     return;
   }
-  std::unique_ptr<io::AtomicFile> out;
+  std::unique_ptr<store::AtomicFile> out;
   try {
-    out = std::make_unique<io::AtomicFile>(h.output);
+    out = std::make_unique<store::AtomicFile>(h.output);
   } catch (const std::runtime_error& e) {
     throw contact::InputError("-o " + h.output + ": " + e.what());
   }

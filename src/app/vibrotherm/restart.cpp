@@ -35,7 +35,7 @@ std::string OptionFingerprint(const io::RunSummary& summary) {
 }
 
 PetscErrorCode ReadRestart(MPI_Comm comm, const std::string& dir, const std::string& fingerprint,
-                           io::Checkpoint* checkpoint) {
+                           store::Checkpoint* checkpoint) {
   PetscFunctionBeginUser;
   PetscCall(checkpoint->Read(dir + "/checkpoint.h5"));
   std::string written;

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "vibrotherm/io/checkpoint.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 
 namespace vibrotherm::app {
@@ -19,6 +19,6 @@ std::string OptionFingerprint(const io::RunSummary& summary);
 /// Reads DIR/checkpoint.h5 and refuses it, naming the first option that
 /// differs, when it was written with other options. Collective.
 PetscErrorCode ReadRestart(MPI_Comm comm, const std::string& dir, const std::string& fingerprint,
-                           io::Checkpoint* checkpoint);
+                           store::Checkpoint* checkpoint);
 
 }  // namespace vibrotherm::app

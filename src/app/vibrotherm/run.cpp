@@ -9,17 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/model_validity.hpp"
-#include "vibrotherm/coupling/scene.hpp"
-#include "vibrotherm/coupling/simulation.hpp"
+#include "vibrotherm/coupling/run/model_validity.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/coupling/run/simulation.hpp"
 #include "vibrotherm/io/mesh_output.hpp"
 #include "vibrotherm/io/run_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
-#include "vibrotherm/mesh/metis_partitioner.hpp"
+#include "vibrotherm/mesh/plex/metis_partitioner.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
-#include "vibrotherm/util/option_audit.hpp"
+#include "vibrotherm/options/petsc/option_audit.hpp"
 #include "vibrotherm/util/version.hpp"
 #include "output_directory.hpp"
 #include "restart.hpp"
@@ -227,7 +227,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
   const std::string dir = app.output_dir;
-  io::Checkpoint checkpoint(comm);
+  store::Checkpoint checkpoint(comm);
   coupling::RunControl control;
   control.fingerprint = OptionFingerprint(summary);
   if (app.restart[0]) {

@@ -1,0 +1,66 @@
+// Friction energy → heat load: the one home of that transfer (line_transfer.hpp
+// for the mathematics). Built once per run: the crack elements of both meshes
+// are matched along each crack by ξ, and the exact transfer T (heat dofs ×
+// contact cells) becomes a parallel sparse matrix, so every exchange is one
+// MatMult (PETSc moves the values between the two partitions).
+#pragma once
+
+#include <petscmat.h>
+
+#include <array>
+#include <vector>
+
+#include "vibrotherm/coupling/exchange/line_transfer.hpp"
+#include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/interface/crack_interface.hpp"
+
+namespace vibrotherm::coupling {
+
+class FrictionHeat {
+ public:
+  FrictionHeat() = default;
+  FrictionHeat(const FrictionHeat&) = delete;
+  FrictionHeat& operator=(const FrictionHeat&) = delete;
+  ~FrictionHeat();
+
+  /// Matches the contact cells of `crack` (on wave_space's split mesh) with the
+  /// crack facets of heat_space's mesh. Collective over both meshes' communicator.
+  PetscErrorCode Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                       const fe::LagrangeSpace& heat_space, PetscInt ncracks);
+  /// Q += heat load [W/m per heat dof] of the friction energy each cell dissipated
+  /// since the last call (cumulative W [J/m²] per owned cell), spread over `interval`.
+  PetscErrorCode AddLoad(const std::vector<double>& dissipated_per_area, double interval, Vec Q);
+  /// Q += heat load of the friction power q_c [W/m²] per owned cell, exchanging nothing.
+  PetscErrorCode AddRates(const std::vector<double>& rates, Vec Q);
+  /// Line density q_c [W/m²] of the owned cells in the last Load.
+  const std::vector<double>& density() const { return density_; }
+  /// The cells' dissipated energies at the last exchange (restarts: the interface's restored ones).
+  void set_previous(const std::vector<double>& dissipated_per_area) { previous_ = dissipated_per_area; }
+  const std::vector<double>& previous() const { return previous_; }
+  /// The wave-side crack elements (node = global contact-cell index), the same on every rank.
+  const std::vector<CrackElement>& wave_elements() const { return wave_elements_; }
+  /// Vertices of the wave mesh's cracks: (crack, ξ, x, y) per vertex, the same on every rank.
+  const std::vector<std::array<double, 4>>& crack_vertices() const { return crack_vertices_; }
+  /// Global index of this rank's first contact cell.
+  PetscInt first_cell() const { return first_cell_; }
+  /// Tᵀw per owned contact cell [m]: what a unit density at each cell adds to wᵀQ
+  /// (w: a global vector of the heat DM). Collective.
+  PetscErrorCode CellResponse(Vec w, std::vector<double>* per_cell) const;
+
+ private:
+  PetscErrorCode BuildWaveElements(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                                   PetscInt ncracks);
+  PetscErrorCode BuildHeatElements(const fe::LagrangeSpace& heat_space, PetscInt ncracks,
+                                   std::vector<CrackElement>* elements) const;
+  PetscErrorCode AssembleTransfer(const fe::LagrangeSpace& heat_space, const std::vector<CrackElement>& heat_elements,
+                                  PetscInt owned_cells);
+
+  std::vector<CrackElement> wave_elements_;
+  std::vector<std::array<double, 4>> crack_vertices_;
+  Mat transfer_ = nullptr;  ///< T: heat dofs × contact cells
+  Vec rate_ = nullptr;      ///< q per contact cell (owned layout of the interface)
+  std::vector<double> previous_, density_;
+  PetscInt first_cell_ = 0;
+};
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,75 @@
+// The IR camera's view of the heat field (README "IR camera"). Pixel value =
+// the temperature rise averaged over the pixel's area (n × n sub-sample points
+// per pixel, located once in the heat mesh with fe::CellLocator and evaluated
+// with the heat basis: a sparse matrix pixels × heat dofs, built once, one
+// MatMult per heat step) and over the frame's integration window in time
+// (trapezoid over the heat steps inside it; the heat loop lands on window
+// boundaries in the free phase, NextBoundary, and interpolates linearly inside
+// a coupled step). Frame k integrates [k/fps, k/fps + integration]. Rank 0
+// adds seeded Gaussian NETD noise and writes camera.h5 + camera.xmf.
+#pragma once
+
+#include <petscmat.h>
+
+#include <array>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/coupling/exchange/camera_options.hpp"
+#include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/io/camera_frames.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+
+namespace vibrotherm::coupling {
+
+class HeatCamera {
+ public:
+  HeatCamera() = default;
+  HeatCamera(const HeatCamera&) = delete;
+  HeatCamera& operator=(const HeatCamera&) = delete;
+  ~HeatCamera();
+  /// The pixel grid over the window (checked inside the body), the frames that
+  /// fit before final_time, the pixel matrix. Collective. *frames = 0: nothing to film.
+  PetscErrorCode Setup(const heat::HeatSolver& heat, const CameraOptions& options, double final_time,
+                       PetscInt* frames);
+  /// Opens dir/camera.h5 (rank 0). Collective.
+  PetscErrorCode Open(const std::string& dir);
+  /// After every heat step and at t = 0: integrates the pixel averages; writes each completed frame. Collective.
+  PetscErrorCode Sample(const heat::HeatSolver& heat);
+  /// The next frame-window boundary after t (+inf when none): the free heat TS stops there.
+  double NextBoundary(double t) const;
+  /// Checkpoints: the open window's integral, the frames so far, the noise
+  /// generator; and back, reopening dir/camera.h5 where it was (instead of Open). Collective.
+  PetscErrorCode Save(store::Checkpoint& checkpoint) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint, const std::string& dir);
+  /// Closes camera.h5, writes camera.xmf; camera_* of the summary. Collective.
+  PetscErrorCode Finish(io::RunSummary* summary);
+
+ private:
+  PetscErrorCode Grid(DM dm, double final_time);
+  PetscErrorCode Assemble(const fe::LagrangeSpace& space);
+  PetscErrorCode AddPoints(const fe::LagrangeSpace& space, const std::vector<int>& owner,
+                           const std::vector<std::size_t>& found, const std::vector<PetscInt>& cells,
+                           const std::vector<std::array<double, 2>>& refs);
+  PetscErrorCode Integrate(double t_prev, double t);
+  PetscErrorCode EmitFrame();
+  std::array<double, 2> SamplePoint(std::size_t i) const;
+  double start(PetscInt k) const { return static_cast<double>(k) / options_.fps; }
+
+  CameraOptions options_;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  io::CameraGrid grid_;
+  PetscInt frames_ = 0, frame_ = 0;
+  Mat S_ = nullptr;  ///< pixels × heat dofs: area-average weights
+  Vec current_ = nullptr, previous_ = nullptr, integral_ = nullptr, on_root_ = nullptr;
+  VecScatter to_root_ = nullptr;
+  double t_prev_ = -1.0;
+  io::CameraFrames file_;
+  std::mt19937_64 random_;
+  std::vector<double> peak_clean_, peak_noisy_;  ///< per frame [K] (rank 0)
+  PetscLogEvent event_ = 0;
+};
+
+}  // namespace vibrotherm::coupling

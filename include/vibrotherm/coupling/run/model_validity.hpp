@@ -1,0 +1,29 @@
+// Where the model stops meaning what its user wants, said at setup (or when it
+// happens) instead of a "complete" run with absurd numbers. The model is linear
+// elasticity with small strains, constant material properties, and a mesh that
+// must carry the source's waves:
+//   strain  the source's strain amplitude (2π f A / c for a displacement source,
+//           A / (ρ c²) for a traction): above 1e-3 (metals yield near it) a
+//           warning, above 1e-2 (small strain itself fails) refused, naming
+//           -source_amplitude;
+//   mesh    nodes per shear wavelength c_s / f over the coarsest element's node
+//           spacing: below 8 a warning, below 2 (the mesh cannot carry the wave
+//           at all) refused, naming -source_frequency and -mesh_h;
+//   heat    a rise above kConstantPropertyRise (field_peak.hpp): a warning, once (FieldPeak).
+// Warnings are also kept in summary.json "warnings".
+#pragma once
+
+#include <petscsys.h>
+
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+
+namespace vibrotherm::coupling {
+
+/// The strain and mesh checks of a scene with waves; h_max: the largest element edge [m]. Collective.
+PetscErrorCode CheckSourceValidity(MPI_Comm comm, const Scene& scene, double h_max, io::RunSummary* summary);
+
+/// Prints "vibrotherm: warning: <text>" and keeps it for summary.json. Collective.
+PetscErrorCode WarnValidity(MPI_Comm comm, const std::string& text, io::RunSummary* summary);
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,135 @@
+// Periodic continuation of the coupled wave–contact system (issue 24).
+//
+// A real thermosonic test excites for 0.1–10 s; after its transients the scene
+// repeats itself period after period. So, within a steady stretch of the source
+// (constant amplitude; excitation.hpp):
+//   watch     at every source-period boundary the detector (periodic_detector.hpp)
+//             compares the state with the last periods; once the run repeats with
+//             a period of m source periods (P = m/f) ...
+//   record    ... the waves run one more P while the heat sources record what
+//             they deposit (per contact cell, per heat step); if the run still
+//             repeats, the wave state at the end is kept in memory and the waves
+//             are suspended ...
+//   continue  ... for the n whole periods the source stays the same (to its next
+//             change, -final_time, or -periodic_refresh). The heat receives the
+//             recorded period: first -periodic_fine_periods periods phase-locked
+//             at the coupled heat step (exactly what the full run would receive),
+//             then on a step ladder (-periodic_ladder_steps steps per rung, the
+//             step doubling) with the period's average power. The near field of
+//             the crack's heat pulses, which the average lacks, is added back as
+//             D(φ) = θ(phase-locked) − θ(averaged) over the last fine period (a
+//             twin run of the heat from the same state): by linearity the exact
+//             periodic part, up to a transient that decays as t^-1/2.
+//   resume    then the waves restart from the kept state at the same phase,
+//             jumped ahead by n·P (their clock, the source's work, the radiated,
+//             dissipated and damped energy, every cell's W: n times the recorded
+//             period's increase), and the heat goes on coupled: the ramp-down, a
+//             schedule step, or the next refresh is simulated in full.
+// Probes (temperature), field outputs, camera frames and energy.csv go on with
+// the right time stamps (wave columns of energy.csv: the recorded period's
+// accounts, growing linearly).
+#pragma once
+
+#include <petscvec.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/coupling/run/heat_component.hpp"
+#include "vibrotherm/coupling/run/periodic_detector.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/coupling/run/wave_component.hpp"
+#include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/io/energy_log.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
+
+namespace vibrotherm::coupling {
+
+class Recorder;
+
+class PeriodicContinuation {
+ public:
+  PeriodicContinuation() = default;
+  PeriodicContinuation(const PeriodicContinuation&) = delete;
+  PeriodicContinuation& operator=(const PeriodicContinuation&) = delete;
+  ~PeriodicContinuation();
+
+  /// Whether this scene can use it (-periodic on, waves, every heat source replayable); says why not.
+  /// resume: continue the files of the interrupted run whose checkpoint it is.
+  PetscErrorCode Setup(const Scene& scene, const mesh::Specimen& specimen, WaveComponent* waves, HeatComponent* heat,
+                       const std::string& dir, io::RunSummary* summary, const store::Checkpoint* resume = nullptr);
+  bool on() const { return on_; }
+  /// After a coupling interval of the waves (energy row `row` at its end): watch, record,
+  /// and continue as above. A continuation (*continued) returns with the waves resumed at its end.
+  PetscErrorCode AfterInterval(Recorder& recorder, const io::EnergyRow& row, bool* continued);
+  /// Restarted inside a continuation's ladder (the waves are suspended).
+  bool continuing() const { return phase_ == Phase::kLadder; }
+  /// After a restart inside a continuation's ladder: the rest of it, then the waves resumed.
+  PetscErrorCode FinishInterrupted(Recorder& recorder, bool* continued);
+  /// Called between the ladder's steps: a checkpoint when due; true when a signal stops the run.
+  std::function<PetscErrorCode(bool* stop)> between_steps;
+  /// Fills summary.json's "periodic" and publishes periodic.csv (a complete run).
+  PetscErrorCode Finish(io::RunSummary* summary);
+  void Keep() { detector_.Keep(); }
+  /// Checkpoints (periodic_state.cpp): the detector's samples, a recording under way, a
+  /// continuation's ladder; and back (after the components).
+  PetscErrorCode Save(store::Checkpoint& checkpoint) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint);
+
+ private:
+  enum class Phase { kWatch, kRecord, kLadder };
+  bool AtPeriodBoundary(double t) const;
+  PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
+  PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
+  /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
+  PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
+  /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
+  /// with `twin`, the averaged twin from the same state gives D over the last period.
+  PetscErrorCode PhaseResolved(Recorder& recorder, double t2, PetscInt periods, bool twin);
+  /// The ladder with the averaged power from ladder_.t to ladder_.end (a period boundary); stops early on a signal.
+  PetscErrorCode Ladder(Recorder& recorder, bool* stopped);
+  /// The waves from the kept state at ladder_.end, jumped ahead.
+  PetscErrorCode Resume();
+  /// The records of a heat step at t without waves (interval rows when `interval`).
+  PetscErrorCode Observe(Recorder& recorder, double t, bool interval);
+  /// energy.csv's wave columns at t during the continuation: the recorded period's growth.
+  io::EnergyRow WaveRow(double t) const;
+  /// θ += sign · D at the phase of t.
+  PetscErrorCode AddNearField(double t, double sign);
+  double RecordedPeriod() const { return multiple_ * period_; }
+
+  bool on_ = false;
+  const Scene* scene_ = nullptr;
+  const mesh::Specimen* specimen_ = nullptr;
+  WaveComponent* waves_ = nullptr;
+  HeatComponent* heat_ = nullptr;
+  std::string dir_;
+  PeriodicDetector detector_;
+  Phase phase_ = Phase::kWatch;
+  double period_ = 0.0;       ///< the source's
+  double heat_dt_ = 0.0;      ///< the coupled heat step
+  PetscInt multiple_ = 0;     ///< source periods in the period recorded and replayed (the found one × the window)
+  double record_start_ = 0.0, record_end_ = 0.0;
+  double skip_stretch_ = -1.0;  ///< end of a steady stretch too short to continue (watch no more in it)
+  std::vector<double> accumulated_start_;  ///< the waves' growing accounts at the recording's start (this rank)
+  std::vector<double> increments_;         ///< what they grow by over the continuation
+  io::EnergyRow row_start_, row_end_;
+  std::unique_ptr<store::Checkpoint> kept_;  ///< the waves at the recording's end
+  std::vector<Vec> near_field_;           ///< D at each heat step of the last recorded period (index 0: phase 0)
+  struct LadderState {
+    double t = 0.0, end = 0.0, rung = 0.0;
+    PetscInt count = 0;
+  } ladder_;
+  struct Segment {
+    double detected, suspended, resumed;
+    PetscInt multiple, periods;
+    double change;
+  };
+  std::vector<Segment> segments_;
+  std::string note_;  ///< why it is off
+};
+
+}  // namespace vibrotherm::coupling

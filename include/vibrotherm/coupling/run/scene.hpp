@@ -1,0 +1,39 @@
+// The scene: every option of a simulation, read once and checked before any
+// mesh or solver is built (each module reads its own prefix into its own part).
+#pragma once
+
+#include <petscsys.h>
+
+#include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/coupling/exchange/camera_options.hpp"
+#include "vibrotherm/coupling/run/driver_options.hpp"
+#include "vibrotherm/coupling/run/periodic_options.hpp"
+#include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/interface/approach_profile.hpp"
+#include "vibrotherm/wave/excitation.hpp"
+#include "vibrotherm/wave/material.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::coupling {
+
+struct Scene {
+  DriverOptions run;                 ///< physics switches, times, coupling, recording
+  wave::ElasticMaterial material;
+  wave::Excitation excitation;
+  wave::WaveOptions wave;
+  contact::ContactParameters contact;
+  interface::ApproachProfile a0;
+  heat::HeatOptions heat;
+  CameraOptions camera;  ///< -camera*: the IR camera filming the heat field
+  PeriodicOptions periodic;  ///< -periodic*: continuation of a periodic state
+  double final_time = 0.0;  ///< -final_time, or the source duration
+  double couple_dt = 0.0;   ///< -couple_dt, or 1/8 of the source period
+
+  /// √(α · heat step): the layer the friction heat of one heat step fills.
+  double exchange_length() const;
+};
+
+/// Reads and checks every simulation option. Collective.
+PetscErrorCode ReadScene(MPI_Comm comm, Scene* scene);
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,56 @@
+// The waves of a run: the wave TS and, when a crack transmits tractions, the
+// crack contact as its extra force (the interface is built from the crack law's
+// properties, not its name). Owns both until the run stops the waves.
+#pragma once
+
+#include <petscsys.h>
+
+#include <memory>
+
+#include "vibrotherm/coupling/observe/wave_energy_row.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
+#include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/io/energy_log.hpp"
+#include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+
+namespace vibrotherm::coupling {
+
+class WaveComponent {
+ public:
+  /// Builds the solver (stage "Wave setup") and the crack interface when a crack transmits tractions.
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  wave::WaveSolver& solver() { return *solver_; }
+  const wave::WaveSolver& solver() const { return *solver_; }
+  /// The crack contact, or null (no crack, or a law that transmits nothing).
+  interface::CrackInterface* crack() { return crack_.get(); }
+  /// `steps` constant steps, or fewer landing exactly on t_end when it comes first.
+  PetscErrorCode Advance(PetscInt steps, double t_end);
+  /// Steps to t_end exactly (quantized steps land there).
+  PetscErrorCode AdvanceTo(double t_end);
+  /// Wave and interface columns of energy.csv now (collective).
+  PetscErrorCode Energy(io::EnergyRow* row) const { return WaveEnergyRow(*solver_, row); }
+  /// Fills the wave and contact parts of the summary and frees the solvers.
+  PetscErrorCode Stop(io::RunSummary* summary);
+  bool running() const { return solver_ != nullptr; }
+  /// Checkpoints: the wave solver and the crack interface; and back.
+  PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
+  PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen);
+  /// The periodic continuation (periodic_continuation.hpp): the state kept in memory ...
+  PetscErrorCode Snapshot(const mesh::Specimen& specimen, store::Checkpoint* snapshot) const;
+  /// ... what grows over time in it (this rank's: the solver's accounts, then the crack's) ...
+  std::vector<double> Accumulated() const;
+  /// ... and the stored state again, jumped ahead by increments of what grows.
+  PetscErrorCode ResumeFrom(const store::Checkpoint& snapshot, const mesh::Specimen& specimen,
+                            const std::vector<double>& increments);
+
+ private:
+  /// With a continuation possible, -max_steps counts the steps taken (refused where they pass it).
+  PetscErrorCode CheckStepBudget() const;
+  std::unique_ptr<wave::WaveSolver> solver_;
+  std::unique_ptr<interface::CrackInterface> crack_;
+  double max_steps_ = 0.0;  ///< -max_steps, checked while stepping when a continuation may skip most steps
+};
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,241 @@
+#include "vibrotherm/coupling/exchange/friction_heat.hpp"
+
+#include <petscdmplex.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "vibrotherm/mesh/crack_line.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
+
+namespace vibrotherm::coupling {
+namespace {
+
+/// A contact cell as every rank sees it: crack, position and global index.
+struct CellPlace {
+  double crack, x, y, index;
+};
+
+/// All contact cells of all ranks (4 doubles each), and this rank's first global index.
+PetscErrorCode GatherCells(const interface::CrackInterface& crack, MPI_Comm comm, std::vector<CellPlace>* all,
+                           PetscInt* first) {
+  PetscFunctionBeginUser;
+  const PetscInt mine = static_cast<PetscInt>(crack.cells().size());
+  PetscCallMPI(MPI_Exscan(&mine, first, 1, MPIU_INT, MPI_SUM, comm));
+  PetscMPIInt rank, size;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (rank == 0) *first = 0;
+  std::vector<double> local;
+  for (std::size_t i = 0; i < crack.cells().size(); ++i) {
+    const interface::ContactCell& c = crack.cells()[i];
+    local.insert(local.end(), {double(c.crack), c.x, c.y, double(*first + static_cast<PetscInt>(i))});
+  }
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), displs(size, 0);
+  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<double> flat(displs.back() + counts.back());
+  PetscCallMPI(MPI_Allgatherv(local.data(), n, MPI_DOUBLE, flat.data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
+  all->resize(flat.size() / 4);
+  for (std::size_t k = 0; k < all->size(); ++k) (*all)[k] = {flat[4 * k], flat[4 * k + 1], flat[4 * k + 2], flat[4 * k + 3]};
+  PetscFunctionReturn(0);
+}
+
+/// Contact cells of one crack by ξ, to find the cell at a node.
+class CellsAlong {
+ public:
+  CellsAlong(const std::vector<CellPlace>& all, const mesh::CrackLine& line, PetscInt crack) {
+    for (const CellPlace& c : all)
+      if (std::lround(c.crack) == crack) by_xi_.emplace_back(line.XiOf(c.x, c.y), std::lround(c.index));
+    std::sort(by_xi_.begin(), by_xi_.end());
+    tol_ = 1e-9;
+  }
+  /// The cell at ξ, or −1 (a buried tip carries none).
+  long At(double xi) const {
+    auto it = std::lower_bound(by_xi_.begin(), by_xi_.end(), std::make_pair(xi - tol_, -1L));
+    return it != by_xi_.end() && std::abs(it->first - xi) <= tol_ ? it->second : -1;
+  }
+
+ private:
+  std::vector<std::pair<double, long>> by_xi_;
+  double tol_;
+};
+
+/// Global row of a scalar dof at `point` (also when another rank owns it).
+PetscErrorCode GlobalRow(PetscSection global, PetscInt point, long* row) {
+  PetscFunctionBeginUser;
+  PetscInt off;
+  PetscCall(PetscSectionGetOffset(global, point, &off));
+  *row = off >= 0 ? off : -(off + 1);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+FrictionHeat::~FrictionHeat() {
+  (void)MatDestroy(&transfer_);
+  (void)VecDestroy(&rate_);
+}
+
+PetscErrorCode FrictionHeat::BuildWaveElements(const interface::CrackInterface& crack,
+                                               const fe::LagrangeSpace& wave_space, PetscInt ncracks) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)wave_space.dm());
+  std::vector<CellPlace> cells;
+  PetscCall(GatherCells(crack, comm, &cells, &first_cell_));
+  wave_elements_.clear();
+  crack_vertices_.clear();
+  for (PetscInt k = 0; k < ncracks; ++k) {
+    mesh::CrackLine line;
+    PetscCall(line.Setup(wave_space.dm(), k));
+    const CellsAlong along(cells, line, k);
+    for (std::size_t j = 0; j <= line.facet_ids().size(); ++j)
+      crack_vertices_.push_back({double(k), line.vertex_xi(j), line.vertex(j)[0], line.vertex(j)[1]});
+    for (std::size_t j = 0; j < line.facet_ids().size(); ++j) {
+      CrackElement e;
+      e.crack = static_cast<int>(k);
+      e.xi0 = line.vertex_xi(j);
+      e.xi1 = line.vertex_xi(j + 1);
+      e.length = std::hypot(line.vertex(j + 1)[0] - line.vertex(j)[0], line.vertex(j + 1)[1] - line.vertex(j)[1]);
+      e.degree = static_cast<int>(wave_space.degree());
+      e.node = {along.At(e.xi0), along.At(e.xi1), e.degree == 2 ? along.At(0.5 * (e.xi0 + e.xi1)) : -1};
+      wave_elements_.push_back(e);
+    }
+  }
+  // Every contact cell must be a node of some element, or its energy would be lost.
+  std::vector<char> seen(cells.size(), 0);
+  for (const CrackElement& e : wave_elements_)
+    for (long n : e.node)
+      if (n >= 0) seen[n] = 1;
+  PetscCheck(std::all_of(seen.begin(), seen.end(), [](char s) { return s != 0; }), comm, PETSC_ERR_PLIB,
+             "friction heat: a contact cell lies on no crack facet");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_space, PetscInt ncracks,
+                                               std::vector<CrackElement>* elements) const {
+  PetscFunctionBeginUser;
+  DM dm = heat_space.dm();
+  DMLabel crack_label, ids;
+  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
+  PetscCall(DMGetLabel(dm, mesh::labels::crack_face, &ids));
+  std::vector<bool> ghost;
+  PetscCall(mesh::GhostPoints(dm, &ghost));
+  mesh::VertexCoordinates x;
+  PetscCall(x.Setup(dm));
+  PetscSection global;
+  PetscCall(DMGetGlobalSection(dm, &global));
+  PetscInt chart0, fStart, fEnd;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(mesh::FacetRange(dm, &fStart, &fEnd));
+  for (PetscInt k = 0; k < ncracks; ++k) {
+    mesh::CrackLine line;
+    PetscCall(line.Setup(dm, k));
+    std::map<PetscInt, std::size_t> position;
+    for (std::size_t j = 0; j < line.facet_ids().size(); ++j) position[line.facet_ids()[j]] = j;
+    for (PetscInt f = fStart; f < fEnd && crack_label && ids; ++f) {
+      PetscInt c, id;
+      PetscCall(DMLabelGetValue(crack_label, f, &c));
+      PetscCall(DMLabelGetValue(ids, f, &id));
+      if (c != k + 1 || id < 0 || ghost[f - chart0]) continue;
+      const std::size_t j = position.at(id);
+      const PetscInt* cone;
+      PetscCall(DMPlexGetCone(dm, f, &cone));
+      const auto p0 = x(cone[0]), v = line.vertex(j);
+      const bool forward = std::hypot(p0[0] - v[0], p0[1] - v[1]) < 1e-9 * line.length();
+      CrackElement e;
+      e.crack = static_cast<int>(k);
+      e.xi0 = line.vertex_xi(j);
+      e.xi1 = line.vertex_xi(j + 1);
+      e.degree = static_cast<int>(heat_space.degree());
+      PetscCall(GlobalRow(global, cone[forward ? 0 : 1], &e.node[0]));
+      PetscCall(GlobalRow(global, cone[forward ? 1 : 0], &e.node[1]));
+      if (e.degree == 2) PetscCall(GlobalRow(global, f, &e.node[2]));
+      elements->push_back(e);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::AssembleTransfer(const fe::LagrangeSpace& heat_space,
+                                              const std::vector<CrackElement>& heat_elements, PetscInt owned_cells) {
+  PetscFunctionBeginUser;
+  DM dm = heat_space.dm();
+  Vec shape;
+  PetscInt rows, global_rows, total_cells;
+  PetscCall(DMGetGlobalVector(dm, &shape));
+  PetscCall(VecGetLocalSize(shape, &rows));
+  PetscCall(VecGetSize(shape, &global_rows));
+  PetscCall(DMRestoreGlobalVector(dm, &shape));
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscCallMPI(MPI_Allreduce(&owned_cells, &total_cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(MatCreateAIJ(comm, rows, owned_cells, global_rows, total_cells, 8, nullptr, 8, nullptr, &transfer_));
+  PetscCall(MatSetOption(transfer_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  for (const TransferEntry& t : LineTransferEntries(heat_elements, wave_elements_)) {
+    const PetscInt r = static_cast<PetscInt>(t.row), c = static_cast<PetscInt>(t.col);
+    PetscCall(MatSetValue(transfer_, r, c, t.value, ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(transfer_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(transfer_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreateVecs(transfer_, &rate_, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                                   const fe::LagrangeSpace& heat_space, PetscInt ncracks) {
+  PetscFunctionBeginUser;
+  PetscCall(BuildWaveElements(crack, wave_space, ncracks));
+  std::vector<CrackElement> heat_elements;
+  PetscCall(BuildHeatElements(heat_space, ncracks, &heat_elements));
+  const PetscInt owned = static_cast<PetscInt>(crack.cells().size());
+  PetscCall(AssembleTransfer(heat_space, heat_elements, owned));
+  previous_.assign(owned, 0.0);
+  density_.assign(owned, 0.0);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::AddRates(const std::vector<double>& rates, Vec Q) {
+  PetscFunctionBeginUser;
+  PetscScalar* q;
+  PetscCall(VecGetArray(rate_, &q));
+  std::copy(rates.begin(), rates.end(), q);
+  PetscCall(VecRestoreArray(rate_, &q));
+  PetscCall(MatMultAdd(transfer_, rate_, Q, Q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::AddLoad(const std::vector<double>& W, double interval, Vec Q) {
+  PetscFunctionBeginUser;
+  PetscCheck(W.size() == previous_.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%zu energies for %zu contact cells",
+             W.size(), previous_.size());
+  PetscScalar* q;
+  PetscCall(VecGetArray(rate_, &q));
+  for (std::size_t i = 0; i < W.size(); ++i) {
+    density_[i] = interval > 0.0 ? (W[i] - previous_[i]) / interval : 0.0;
+    q[i] = density_[i];
+    previous_[i] = W[i];
+  }
+  PetscCall(VecRestoreArray(rate_, &q));
+  PetscCall(MatMultAdd(transfer_, rate_, Q, Q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeat::CellResponse(Vec w, std::vector<double>* per_cell) const {
+  PetscFunctionBeginUser;
+  Vec r;
+  PetscCall(VecDuplicate(rate_, &r));
+  PetscCall(MatMultTranspose(transfer_, w, r));
+  const PetscScalar* x;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(r, &n));
+  PetscCall(VecGetArrayRead(r, &x));
+  per_cell->assign(x, x + n);
+  PetscCall(VecRestoreArrayRead(r, &x));
+  PetscCall(VecDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,125 @@
+#include "vibrotherm/coupling/exchange/heat_sources.hpp"
+
+namespace vibrotherm::coupling {
+
+PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited) {
+  PetscFunctionBeginUser;
+  PetscScalar energy;
+  PetscCall(VecSum(E, &energy));
+  *deposited += PetscRealPart(energy);
+  PetscCall(VecAXPY(Q, 1.0 / interval, E));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
+                                         const fe::LagrangeSpace& heat_space, PetscInt ncracks) {
+  PetscFunctionBeginUser;
+  crack_ = crack;
+  comm_ = PetscObjectComm((PetscObject)heat_space.dm());
+  PetscCall(transfer_.Setup(*crack, wave_space, heat_space, ncracks));
+  PetscFunctionReturn(0);
+}
+
+std::vector<double> FrictionHeatSource::Dissipated(double t) const {
+  return mode_ == ReplayMode::Off ? crack_->dissipated_per_area() : replay_.At(t, mode_);
+}
+
+PetscErrorCode FrictionHeatSource::AddLoad(double t, double interval, Vec Q) {
+  PetscFunctionBeginUser;
+  const std::vector<double> W = Dissipated(t);
+  PetscCall(transfer_.AddLoad(W, interval, Q));
+  if (replay_.recording()) replay_.Sample(t, W);
+  record_.Append(t, transfer_);
+  // Σ w q Δt over the cells: exactly the energy the transfer moved in this step.
+  double local = 0.0, step;
+  for (std::size_t i = 0; i < crack_->cells().size(); ++i)
+    local += crack_->cells()[i].weight * transfer_.density()[i] * interval;
+  PetscCallMPI(MPI_Allreduce(&local, &step, 1, MPI_DOUBLE, MPI_SUM, comm_));
+  deposited_ += step;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::StartRecording(double t) {
+  PetscFunctionBeginUser;
+  replay_.Start(t, crack_->dissipated_per_area());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::StopRecording() {
+  PetscFunctionBeginUser;
+  replay_.Stop();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::Replay(ReplayMode mode) {
+  PetscFunctionBeginUser;
+  PetscCheck(mode == ReplayMode::Off || !replay_.empty(), comm_, PETSC_ERR_ORDER, "friction heat: nothing recorded to replay");
+  mode_ = mode;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::AddAverageLoad(Vec Q) {
+  PetscFunctionBeginUser;
+  std::vector<double> rates = replay_.increase();
+  for (double& r : rates) r /= replay_.span();
+  PetscCall(transfer_.AddRates(rates, Q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::Finish(const std::string& dir) {
+  PetscFunctionBeginUser;
+  PetscCall(record_.Write(comm_, dir + "/crack_heat.h5", transfer_));
+  crack_ = nullptr;
+  PetscFunctionReturn(0);
+}
+
+std::vector<long long> FrictionHeatSource::CellKeys(const mesh::Specimen& specimen) const {
+  std::vector<long long> keys;
+  for (const interface::ContactCell& c : crack_->cells()) keys.push_back(specimen.wave_origin[c.plus]);
+  return keys;
+}
+
+PetscErrorCode FrictionHeatSource::Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
+  PetscFunctionBeginUser;
+  checkpoint.PutShared("friction_heat/deposited", {deposited_});
+  const std::vector<long long> keys = CellKeys(specimen);
+  record_.Save(checkpoint, keys);
+  // A periodic recording (under way or replayed): its phases, and per cell its samples.
+  std::vector<double> samples;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::vector<double> item = replay_.item(i);
+    samples.insert(samples.end(), item.begin(), item.end());
+  }
+  std::vector<double> phases = replay_.phases();
+  phases.insert(phases.begin(), {static_cast<double>(mode_), replay_.recording() ? 1.0 : 0.0, replay_.start()});
+  checkpoint.PutShared("friction_heat/replay", phases);
+  checkpoint.PutKeyed("friction_heat/replay_samples", keys, static_cast<int>(replay_.phases().size()), samples);
+  checkpoint.PutKeyed("friction_heat/previous", keys, 1, transfer_.previous());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FrictionHeatSource::Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
+  PetscFunctionBeginUser;
+  std::vector<double> deposited;
+  PetscCall(checkpoint.GetShared("friction_heat/deposited", &deposited, 1));
+  deposited_ = deposited[0];
+  const std::vector<long long> keys = CellKeys(specimen);
+  PetscCall(record_.Restore(checkpoint, keys));
+  std::vector<double> replay, samples;
+  PetscCall(checkpoint.GetShared("friction_heat/replay", &replay));
+  const std::size_t phases = replay.size() - 3;
+  PetscCall(checkpoint.GetKeyed("friction_heat/replay_samples", keys, static_cast<int>(phases), &samples));
+  std::vector<std::vector<double>> items(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    items[i].assign(samples.begin() + static_cast<std::ptrdiff_t>(i * phases),
+                    samples.begin() + static_cast<std::ptrdiff_t>((i + 1) * phases));
+  replay_.Restore(replay[2], std::vector<double>(replay.begin() + 3, replay.end()), items, replay[1] != 0.0);
+  mode_ = static_cast<ReplayMode>(static_cast<int>(replay[0]));
+  // The energies the last exchange took (the interface's, or a replay's during a periodic continuation).
+  std::vector<double> previous;
+  PetscCall(checkpoint.GetKeyed("friction_heat/previous", keys, 1, &previous));
+  transfer_.set_previous(previous);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,292 @@
+#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vibrotherm/coupling/run/recording.hpp"
+
+namespace vibrotherm::coupling {
+
+PeriodicContinuation::~PeriodicContinuation() {
+  for (Vec& d : near_field_) VecDestroy(&d);
+}
+
+PetscErrorCode PeriodicContinuation::Setup(const Scene& scene, const mesh::Specimen& specimen, WaveComponent* waves,
+                                           HeatComponent* heat, const std::string& dir, io::RunSummary* summary,
+                                           const store::Checkpoint* resume) {
+  PetscFunctionBeginUser;
+  scene_ = &scene;
+  dir_ = dir;
+  specimen_ = &specimen;
+  waves_ = waves;
+  heat_ = heat;
+  period_ = 1.0 / scene.excitation.signal.frequency;
+  heat_dt_ = scene.couple_dt / scene.run.heat_substeps;
+  on_ = scene.periodic.on && waves && (heat || scene.periodic.choice == PeriodicChoice::On);
+  if (!scene.periodic.on) note_ = "-periodic off (or the coupling cannot compare whole periods)";
+  else if (!waves) note_ = "no waves";
+  else if (!heat && scene.periodic.choice == PeriodicChoice::Auto) note_ = "-periodic auto: no heat runs";
+  else if (heat && !heat->replayable()) {
+    on_ = false;
+    note_ = "a heat source cannot replay a recorded period (-thermoelastic)";
+  }
+  summary->derived["periodic_tol"] = scene.periodic.tol;
+  if (!on_) PetscFunctionReturn(0);
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves->solver().space().dm());
+  const double bytes = resume ? resume->Scalar("periodic/csv_bytes") : -1.0;
+  PetscCall(detector_.Resume(comm, scene.periodic, dir + "/periodic.csv",
+                             std::isnan(bytes) ? -1 : static_cast<long long>(bytes)));
+  detector_.Attach(waves->solver().lumped_mass());
+  PetscFunctionReturn(0);
+}
+
+bool PeriodicContinuation::AtPeriodBoundary(double t) const {
+  const double k = t / period_;
+  return std::abs(k - std::round(k)) < 1e-6;
+}
+
+PetscErrorCode PeriodicContinuation::AfterInterval(Recorder& recorder, const io::EnergyRow& row, bool* continued) {
+  PetscFunctionBeginUser;
+  *continued = false;
+  const double t = waves_ ? waves_->solver().time() : 0.0;
+  if (!on_ || !AtPeriodBoundary(t)) PetscFunctionReturn(0);
+  double start, end;
+  const bool steady = scene_->excitation.signal.steady_stretch(t, &start, &end) && t < scene_->final_time;
+  if (!steady || end == skip_stretch_) {
+    if (phase_ == Phase::kRecord && heat_) PetscCall(heat_->StopRecording());
+    phase_ = Phase::kWatch;
+    detector_.Reset();
+    PetscFunctionReturn(0);
+  }
+  PetscInt multiple;
+  PetscCall(detector_.Sample(*waves_, row, &multiple));
+  if (phase_ == Phase::kWatch && multiple > 0) PetscCall(StartRecording(t, multiple, row));
+  else if (phase_ == Phase::kRecord && t >= record_end_ - 0.5 * heat_dt_) {
+    if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(recorder, t, row, continued));
+    else {  // it did not repeat after all: watch on
+      if (heat_) PetscCall(heat_->StopRecording());
+      phase_ = Phase::kWatch;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::StartRecording(double t, PetscInt multiple, const io::EnergyRow& row) {
+  PetscFunctionBeginUser;
+  phase_ = Phase::kRecord;
+  multiple_ = multiple * scene_->periodic.window;  // the window is recorded and replayed as one period
+  record_start_ = t;
+  record_end_ = t + multiple_ * period_;
+  accumulated_start_ = waves_->Accumulated();
+  row_start_ = row;
+  if (heat_) PetscCall(heat_->StartRecording(t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, const io::EnergyRow& row,
+                                                  bool* continued) {
+  PetscFunctionBeginUser;
+  phase_ = Phase::kWatch;
+  if (heat_) PetscCall(heat_->StopRecording());
+  double start, end;
+  scene_->excitation.signal.steady_stretch(t, &start, &end);
+  double stop = std::min(end, scene_->final_time);
+  if (scene_->periodic.refresh > 0.0) stop = std::min(stop, t + scene_->periodic.refresh);
+  const double P = RecordedPeriod();
+  const PetscInt n = static_cast<PetscInt>(std::floor((stop - t) / P + 1e-9));
+  if (n * multiple_ < scene_->periodic.min_continued) {  // not worth it: simulate the rest of this stretch
+    skip_stretch_ = end;
+    detector_.Reset();
+    PetscFunctionReturn(0);
+  }
+  // What grows over the continuation: n times the recorded period's increase; the clock exactly n·P.
+  const std::vector<double> now = waves_->Accumulated();
+  increments_.resize(now.size());
+  for (std::size_t i = 0; i < now.size(); ++i) increments_[i] = n * (now[i] - accumulated_start_[i]);
+  increments_[0] = n * P;
+  // A periodic state's source work is its losses (the window's small imbalance, a remnant of the
+  // transient, would otherwise accumulate n-fold in the budget): this rank's share of them.
+  // Layout (WaveSolver/CrackInterface::Accumulated): time, radiated, work, body work, damped, LTS
+  // damped, then the crack's cells' W and its dissipated energy.
+  const bool crack = waves_->crack() != nullptr;
+  increments_[2] = increments_[1] - increments_[3] + increments_[4] + increments_[5] +
+                   (crack ? increments_.back() : 0.0);
+  row_end_ = row;
+  segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change()});
+  PetscCall(Continue(recorder, t, n, continued));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, PetscInt n, bool* continued) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
+  const double P = RecordedPeriod();
+  ladder_.end = t2 + n * P;
+  PetscCall(PetscPrintf(comm,
+                        "Periodic at t = %.6g s (change %.2g): waves suspended, the heat continues with the recorded "
+                        "%" PetscInt_FMT " periods (%.4g s) to t = %.6g s (x %" PetscInt_FMT ")\n",
+                        t2, detector_.last_change(), multiple_, P, ladder_.end, n));
+  kept_ = std::make_unique<store::Checkpoint>(comm);
+  PetscCall(waves_->Snapshot(*specimen_, kept_.get()));
+  if (heat_) {
+    const PetscInt fine = std::min<PetscInt>(scene_->periodic.fine_periods, n);
+    PetscCall(PhaseResolved(recorder, t2, fine, fine < n));
+    ladder_.t = t2 + fine * P;
+    ladder_.rung = P;  // whole recorded periods: every step ends on a period boundary (where D is exact)
+    ladder_.count = 0;
+    if (fine < n) {
+      phase_ = Phase::kLadder;
+      PetscCall(heat_->Replay(ReplayMode::Averaged));
+      heat_->PauseNearField();
+      PetscCall(AddNearField(ladder_.t, -1.0));  // the solver steps the smooth part θ − D
+      PetscCall(heat_->solver().UseFreeIntegrator());
+    }
+  }
+  PetscCall(FinishInterrupted(recorder, continued));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::FinishInterrupted(Recorder& recorder, bool* continued) {
+  PetscFunctionBeginUser;
+  if (phase_ == Phase::kLadder) {
+    heat_->PauseNearField();  // again after a restart inside the ladder (it holds no window there)
+    bool stopped;
+    PetscCall(Ladder(recorder, &stopped));
+    if (stopped) PetscFunctionReturn(0);  // a signal: the checkpoint holds the ladder
+    PetscCall(AddNearField(ladder_.end, 1.0));
+    PetscCall(heat_->solver().UseCoupledIntegrator());
+  }
+  if (heat_) PetscCall(heat_->Replay(ReplayMode::Off));
+  PetscCall(Resume());
+  if (heat_) heat_->RestartNearField();
+  phase_ = Phase::kWatch;
+  detector_.Reset();
+  *continued = true;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::Resume() {
+  PetscFunctionBeginUser;
+  // The waves from the kept state, n periods on: everything that grows grows n times the period's increase.
+  PetscCall(waves_->ResumeFrom(*kept_, *specimen_, increments_));
+  kept_.reset();
+  segments_.back().resumed = waves_->solver().time();
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)waves_->solver().space().dm()), "Waves resumed at t = %.6g s\n",
+                        waves_->solver().time()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::PhaseResolved(Recorder& recorder, double t2, PetscInt periods, bool twin) {
+  PetscFunctionBeginUser;
+  const PetscInt per_period = static_cast<PetscInt>(std::lround(RecordedPeriod() / heat_dt_));
+  const PetscInt steps = periods * per_period, substeps = scene_->run.heat_substeps;
+  const auto time = [&](PetscInt j) { return t2 + static_cast<double>(j) * heat_dt_; };
+  store::Checkpoint before(PetscObjectComm((PetscObject)heat_->solver().space().dm()));
+  if (twin) PetscCall(heat_->SolverSnapshot(*specimen_, &before));
+  PetscCall(heat_->Replay(ReplayMode::PhaseLocked));
+  for (Vec& d : near_field_) PetscCall(VecDestroy(&d));
+  near_field_.assign(twin ? per_period : 0, nullptr);
+  for (PetscInt j = 1; j <= steps; ++j) {
+    PetscCall(heat_->StepTo(time(j)));
+    PetscCall(Observe(recorder, time(j), j % substeps == 0));
+    const PetscInt k = j - (steps - per_period);  // 1..per_period over the last period: phase k (per_period ≡ 0)
+    if (twin && k >= 1) {
+      Vec& d = near_field_[k % per_period];
+      PetscCall(VecDuplicate(heat_->solver().rise(), &d));
+      PetscCall(VecCopy(heat_->solver().rise(), d));
+    }
+  }
+  if (!twin) PetscFunctionReturn(0);
+  // The averaged twin from the same state: D = phase-locked − averaged, by phase.
+  store::Checkpoint after(PetscObjectComm((PetscObject)heat_->solver().space().dm()));
+  PetscCall(heat_->SolverSnapshot(*specimen_, &after));
+  PetscCall(heat_->RestoreSolver(before, *specimen_));
+  for (PetscInt j = 1; j <= steps; ++j) {
+    PetscCall(heat_->StepAveraged(time(j)));
+    const PetscInt k = j - (steps - per_period);
+    if (k >= 1) PetscCall(VecAXPY(near_field_[k % per_period], -1.0, heat_->solver().rise()));
+  }
+  PetscCall(heat_->RestoreSolver(after, *specimen_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::AddNearField(double t, double sign) {
+  PetscFunctionBeginUser;
+  if (near_field_.empty()) PetscFunctionReturn(0);
+  const double P = RecordedPeriod(), phase = std::fmod(t - record_end_, P);
+  const double x = (phase < 0.0 ? phase + P : phase) / heat_dt_;
+  const PetscInt count = static_cast<PetscInt>(near_field_.size());
+  const PetscInt lo = static_cast<PetscInt>(std::floor(x + 1e-9)) % count, hi = (lo + 1) % count;
+  const double w = std::clamp(x - std::floor(x + 1e-9), 0.0, 1.0);
+  Vec rise = heat_->solver().rise();
+  PetscCall(VecAXPY(rise, sign * (1.0 - w), near_field_[lo]));
+  if (w > 1e-9) PetscCall(VecAXPY(rise, sign * w, near_field_[hi]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::Ladder(Recorder& recorder, bool* stopped) {
+  PetscFunctionBeginUser;
+  *stopped = false;
+  MPI_Comm comm = PetscObjectComm((PetscObject)heat_->solver().space().dm());
+  recorder.progress().Start(comm, "periodic", ladder_.t, ladder_.end, 0.0, true);
+  while (ladder_.t < ladder_.end * (1 - 1e-12)) {
+    const double next = std::min(ladder_.t + ladder_.rung, recorder.NextHeatStop(ladder_.t, ladder_.end));
+    PetscCall(heat_->StepTo(next, false));
+    ladder_.t = next;
+    PetscCall(AddNearField(ladder_.t, 1.0));  // the probes sample θ (their own near field is the crack's)
+    PetscCall(heat_->SampleProbes());
+    PetscCall(Observe(recorder, ladder_.t, true));
+    PetscCall(AddNearField(ladder_.t, -1.0));
+    if (++ladder_.count % scene_->periodic.ladder_steps == 0) ladder_.rung *= 2.0;
+    if (between_steps) PetscCall(between_steps(stopped));
+    if (*stopped) PetscFunctionReturn(0);
+  }
+  PetscCall(recorder.progress().Done(ladder_.t, heat_->solver().steps()));
+  PetscFunctionReturn(0);
+}
+
+io::EnergyRow PeriodicContinuation::WaveRow(double t) const {
+  io::EnergyRow row = row_end_;
+  const double growth = (t - record_end_) / (record_end_ - record_start_);
+  for (double io::EnergyRow::*column : {&io::EnergyRow::radiated, &io::EnergyRow::dissipated, &io::EnergyRow::damped,
+                                        &io::EnergyRow::work_thermal})
+    row.*column += growth * (row_end_.*column - row_start_.*column);
+  // The source works what the losses take (as the waves' accounts on resume).
+  row.work_source = row_end_.work_source + (row.radiated - row_end_.radiated) + (row.dissipated - row_end_.dissipated) +
+                    (row.damped - row_end_.damped) - (row.work_thermal - row_end_.work_thermal);
+  row.t = t;
+  return row;
+}
+
+PetscErrorCode PeriodicContinuation::Observe(Recorder& recorder, double t, bool interval) {
+  PetscFunctionBeginUser;
+  const heat::HeatSolver& heat = heat_->solver();
+  PetscCall(recorder.OnHeatStep(heat));
+  if (interval) {
+    PetscCall(RecordTemperature(recorder, *heat_, false));
+    PetscCall(RecordEnergy(recorder, WaveRow(t), heat_));
+    PetscCall(recorder.progress().Update(t, heat.steps()));
+  }
+  if (recorder.OutputDue(t)) PetscCall(WriteFields(recorder, t, nullptr, heat_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  if (on_) PetscCall(detector_.Finish());
+  summary->derived["periodic_segments"] = static_cast<double>(segments_.size());
+  PetscInt continued = 0;
+  for (const Segment& s : segments_) continued += s.periods * s.multiple;
+  summary->derived["periodic_periods_continued"] = static_cast<double>(continued);
+  if (!segments_.empty()) summary->derived["periodic_reached_at"] = segments_.front().detected;
+  summary->derived["periodic_last_change"] = detector_.last_change();
+  summary->derived_rules["periodic"] = on_ ? (segments_.empty() ? "on: never periodic within -periodic_tol" : "on")
+                                           : "off: " + note_;
+  summary->periodic.clear();
+  for (const Segment& s : segments_)
+    summary->periodic.push_back({s.detected, s.suspended, s.resumed, static_cast<double>(s.multiple),
+                                 static_cast<double>(s.periods * s.multiple), s.change});
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

@@ -1,0 +1,109 @@
+#include "vibrotherm/coupling/run/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "vibrotherm/interface/contact_options.hpp"
+
+namespace vibrotherm::coupling {
+
+double Scene::exchange_length() const {
+  return std::sqrt(heat.material.diffusivity() * couple_dt / static_cast<double>(run.heat_substeps));
+}
+
+namespace {
+
+/// Values every reader accepted but no run can use: infinities, and wave TS types
+/// that cannot run here.
+PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
+  PetscFunctionBeginUser;
+  const std::pair<const char*, double> finite[] = {
+      {"-material_density", s.material.density}, {"-material_E", s.material.E},
+      {"-source_frequency", s.excitation.signal.frequency}, {"-source_amplitude", s.excitation.signal.amplitude},
+      {"-source_duration", s.excitation.signal.duration}, {"-source_ramp_cycles", s.excitation.signal.ramp_cycles},
+      {"-wave_dt", s.wave.dt}, {"-heat_conductivity", s.heat.material.conductivity},
+      {"-heat_capacity", s.heat.material.capacity}, {"-heat_T0", s.heat.material.T0},
+      {"-crack_a0", s.a0.uniform}, {"-crack_a0_max", s.a0.max},
+      {"-heat_crack_power", s.run.heat_crack_power}};
+  for (const auto& [option, value] : finite)
+    PetscCheck(std::isfinite(value), comm, PETSC_ERR_USER_INPUT, "%s must be finite, got %g", option, value);
+  // Implicit types other than alpha2 would build a dense Jacobian; rk types with an
+  // embedded error estimate reject steps rank by rank (a deadlock on 2 ranks).
+  char type[64] = "velocityverlet", rk[64] = "4";
+  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
+  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_rk_type", rk, sizeof(rk), nullptr));
+  const std::vector<std::string> types = {"velocityverlet", "basicsymplectic", "rk", "ssp", "alpha2"};
+  PetscCheck(std::find(types.begin(), types.end(), std::string(type)) != types.end(), comm, PETSC_ERR_USER_INPUT,
+             "-wave_ts_type %s is not supported for waves (velocityverlet|basicsymplectic|rk|ssp|alpha2)", type);
+  const std::vector<std::string> rk_types = {"1fe", "2a", "3", "4"};
+  PetscCheck(std::string(type) != "rk" || std::find(rk_types.begin(), rk_types.end(), std::string(rk)) != rk_types.end(),
+             comm, PETSC_ERR_USER_INPUT, "-wave_ts_rk_type %s is not supported for waves (1fe|2a|3|4: fixed steps)", rk);
+  // Options of the TS objects that vibrotherm sets itself: refused, not ignored.
+  const std::pair<const char*, const char*> owned[] = {
+      {"-wave_ts_dt", "-wave_dt or -wave_cfl"}, {"-wave_ts_max_time", "-final_time"},
+      {"-wave_ts_max_steps", "-final_time (or -max_steps)"}, {"-wave_ts_exact_final_time", "-final_time"},
+      {"-heat_ts_dt", "-couple_dt and -heat_substeps"}, {"-heat_ts_max_time", "-final_time"},
+      {"-heat_ts_max_steps", "-final_time"}, {"-heat_free_ts_max_time", "-final_time"},
+      {"-heat_free_ts_max_steps", "-final_time"}};
+  for (const auto& [option, instead] : owned) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, option, &given));
+    PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is set by vibrotherm itself: use %s", option, instead);
+  }
+  PetscFunctionReturn(0);
+}
+
+/// A periodic continuation compares and replays whole source periods: the wave step must divide
+/// the heat step, which must divide the period. Off (said once) when the coupling cannot.
+PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
+  PetscFunctionBeginUser;
+  const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
+  if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
+  if (!s->periodic.on) PetscFunctionReturn(0);
+  const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
+  const double per_period = period / heat_dt;
+  if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || s->wave.dt > 0.0) {
+    s->periodic.on = false;
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: %s\n",
+                          s->wave.dt > 0.0 ? "-wave_dt fixes the wave step (it must divide the heat step)"
+                                           : "-couple_dt / -heat_substeps does not divide the source period"));
+    PetscFunctionReturn(0);
+  }
+  s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
+  PetscFunctionBeginUser;
+  PetscCall(ReadDriverOptions(comm, &s->run));
+  PetscCall(wave::ReadElasticMaterial(comm, &s->material));
+  PetscCall(wave::ReadExcitation(comm, &s->excitation));
+  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
+  PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
+  PetscCall(ReadContactOptions(comm, s->contact));
+  PetscCall(interface::ReadApproachProfile(comm, &s->a0));
+  PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat));
+  PetscCall(ReadCameraOptions(comm, &s->camera));
+  PetscCall(ReadPeriodicOptions(comm, &s->periodic));
+  PetscCall(CheckScene(comm, *s));
+  s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
+  s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
+  PetscCall(QuantizeForPeriodicity(comm, s));
+  // Output times after the end would never be written: say so, and drop them.
+  std::vector<double> kept;
+  for (double t : s->run.output_times) {
+    if (t <= s->final_time * (1 + 1e-12)) kept.push_back(t);
+    else
+      PetscCall(PetscPrintf(comm, "vibrotherm: warning: -output_times %g s is after the end of the run (%g s): not written\n",
+                            t, s->final_time));
+  }
+  s->run.output_times = kept;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

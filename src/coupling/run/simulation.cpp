@@ -1,0 +1,303 @@
+#include "vibrotherm/coupling/run/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vibrotherm/coupling/run/recording.hpp"
+#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+
+namespace vibrotherm::coupling {
+
+Simulation::Simulation() = default;
+Simulation::~Simulation() = default;
+
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
+  scene_ = &scene;
+  specimen_ = &specimen;
+  const DriverOptions& run = scene.run;
+  PetscCheck(run.crack_probes.empty() || !specimen.cracks.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-crack_probe needs a crack (-crack_center or crack curves in -mesh_file)");
+  PetscCheck(run.crack_probes.empty() ||
+                 (run.crack_probe_crack >= 1 && run.crack_probe_crack <= static_cast<PetscInt>(specimen.cracks.size())),
+             comm, PETSC_ERR_USER_INPUT, "-crack_probe_crack %" PetscInt_FMT ": the specimen has %zu crack(s)",
+             run.crack_probe_crack, specimen.cracks.size());
+  PetscCall(PetscLogStageRegister("Wave steps", &wave_stage_));
+  PetscCall(PetscLogStageRegister("Heat steps", &heat_stage_));
+  if (run.physics != PhysicsChoice::Heat) {
+    waves_ = std::make_unique<WaveComponent>();
+    PetscCall(waves_->Setup(specimen, scene, summary));
+  }
+  const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
+                                   run.thermoelastic != ThermoelasticChoice::Off || scene.material.damping_heat);
+  const bool heat_needed = run.physics == PhysicsChoice::Heat ||
+                           (run.physics == PhysicsChoice::All &&
+                            (run.heat == HeatChoice::On || (run.heat == HeatChoice::Auto && can_heat)));
+  if (heat_needed) {
+    heat_ = std::make_unique<HeatComponent>();
+    PetscCall(heat_->Setup(specimen, scene, waves_.get(), summary));
+    PetscCall(SetupCamera(scene));
+    PetscBool every = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-energy_every", &every));
+    if (every && waves_)
+      PetscCall(PetscPrintf(comm, "vibrotherm: warning: -energy_every is not used while heat runs: energy.csv gets a "
+                                  "row per coupling interval (-couple_dt), where every column is known\n"));
+  } else if (scene.camera.on) {
+    PetscCall(PetscPrintf(comm, "vibrotherm: warning: -camera: no heat runs in this scene, nothing to film: no "
+                                "camera.h5\n"));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::SetupCamera(const Scene& scene) {
+  PetscFunctionBeginUser;
+  if (!scene.camera.on) PetscFunctionReturn(0);
+  camera_ = std::make_unique<HeatCamera>();
+  PetscInt frames;
+  PetscCall(camera_->Setup(heat_->solver(), scene.camera, scene.final_time, &frames));
+  if (frames == 0) camera_.reset();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, const RunControl& control) {
+  PetscFunctionBeginUser;
+  dir_ = dir;
+  control_ = control;
+  const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
+  PetscCall(schedule_.Start(PetscObjectComm((PetscObject)probe_space.dm()), scene_->run.checkpoint_every_s));
+  PetscCall(CanCheckpoint(&checkpoints_));
+  Recorder recorder;
+  PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
+                          heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
+  if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
+  if (heat_ && !control.restart) {  // t = 0
+    PetscCall(RecordTemperature(recorder, *heat_, waves_ != nullptr));
+    PetscCall(recorder.OnHeatStep(heat_->solver()));
+  }
+  if (waves_) {
+    periodic_ = std::make_unique<PeriodicContinuation>();
+    PetscCall(periodic_->Setup(*scene_, *specimen_, waves_.get(), heat_.get(), dir, summary, control.restart));
+  }
+  if (control.restart) PetscCall(Resume(*control.restart, recorder));
+  if (waves_) PetscCall(RunCoupled(recorder, summary));
+  if (!interrupted_by_ && heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12))
+    PetscCall(RunHeatAlone(recorder, summary));
+  if (interrupted_by_) {  // the files stay as the checkpoint describes them
+    recorder.Keep();
+    if (periodic_) periodic_->Keep();
+    PetscFunctionReturn(0);
+  }
+  if (periodic_) PetscCall(periodic_->Finish(summary));
+  if (heat_) {
+    PetscCall(heat_->StopSources(dir));
+    PetscCall(heat_->Summarise(summary));
+  }
+  PetscCall(recorder.Finish(summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
+  const double final_time = scene_->final_time;
+  // A whole number of wave steps per heat step: every heat step has the same
+  // length, so the heat matrix is factored once.
+  const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
+  const double heat_dt = scene_->couple_dt / per_interval;
+  const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
+  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
+  const double expected_end =
+      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
+  PetscCall(PetscPrintf(comm,
+                        "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
+                        "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
+                        solver.dofs(), scene_->wave.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
+                        std::ceil(expected_end / solver.dt()), expected_end,
+                        expected_end < final_time ? ", where they should be quiet (they stop once they are)" : ""));
+  if (heat_)
+    PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
+                          heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
+  const bool energy_each_step = !heat_;  // with heat, energy rows at intervals (all columns at one time)
+  const PetscInt probe_every = scene_->run.probe_every;
+  solver.on_step = [this, &recorder, energy_each_step, probe_every](const wave::WaveSolver& w) {
+    // The heat side samples the friction at every wave step, the probes' temperatures at their rows.
+    if (heat_) heat_->AfterWaveStep(w.time(), w.steps() % probe_every == 0);
+    return recorder.OnWaveStep(w, energy_each_step);
+  };
+  recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(wave_stage_));
+  io::EnergyRow row;
+  PetscCall(waves_->Energy(&row));
+  if (!control_.restart) {  // t = 0
+    PetscCall(RecordEnergy(recorder, row, heat_.get()));
+    if (recorder.OutputDue(0.0)) PetscCall(WriteFields(recorder, 0.0, waves_.get(), heat_.get()));
+  }
+  periodic_->between_steps = [this, &recorder](bool* stop) {
+    PetscFunctionBeginUser;
+    PetscCall(CheckpointIfDue(recorder, false));
+    *stop = interrupted_by_ != 0;
+    PetscFunctionReturn(0);
+  };
+  bool quiet = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
+  if (quiet) heat_alone_from_ = solver.time();
+  if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
+    bool continued;
+    PetscCall(periodic_->FinishInterrupted(recorder, &continued));
+    PetscCall(waves_->Energy(&row));
+  }
+  while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
+    PetscCall(Interval(recorder, heat_dt, &row));
+    bool continued;
+    PetscCall(periodic_->AfterInterval(recorder, row, &continued));
+    if (continued) {  // the waves jumped ahead: their energies now, the progress line on from here
+      PetscCall(waves_->Energy(&row));
+      recorder.progress().Start(comm, "wave", solver.time(), expected_end, solver.dt(), false);
+    }
+    PetscCall(WavesQuiet(row, &quiet));
+    PetscCall(CheckpointIfDue(recorder, quiet));
+  }
+  PetscCall(PetscLogStagePop());
+  if (interrupted_by_) PetscFunctionReturn(0);
+  summary->stages["wave_steps"] = MPI_Wtime() - t0 - (heat_ ? heat_->seconds() : 0.0);
+  PetscCall(recorder.progress().Done(solver.time(), solver.steps()));
+  PetscCall(StopWaves(recorder, row, summary));
+  PetscFunctionReturn(0);
+}
+
+PetscInt Simulation::WaveStepsPerHeatStep(double heat_dt) const {
+  return std::max<PetscInt>(1, std::lround(heat_dt / waves_->solver().dt()));
+}
+
+PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
+  for (PetscInt k = 0; k < heat_steps && solver.time() < scene_->final_time * (1 - 1e-12); ++k) {
+    // Counted again each time: the contact may have shrunk the wave step. Quantized steps (a periodic
+    // source) land on the heat step's end, where a periodic state is compared and recorded.
+    if (scene_->wave.step_quantum > 0.0)
+      PetscCall(waves_->AdvanceTo(std::min(scene_->final_time, (std::round(solver.time() / heat_dt) + 1.0) * heat_dt)));
+    else
+      PetscCall(waves_->Advance(WaveStepsPerHeatStep(heat_dt), scene_->final_time));
+    if (!heat_) continue;
+    PetscCall(PetscLogStagePush(heat_stage_));
+    PetscCall(heat_->StepTo(solver.time()));
+    PetscCall(recorder.OnHeatStep(heat_->solver()));
+    PetscCall(PetscLogStagePop());
+  }
+  PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
+  if (heat_) {
+    PetscCall(RecordTemperature(recorder, *heat_, true));
+    PetscCall(RecordEnergy(recorder, *row, heat_.get()));
+  } else {
+    recorder.FlushProbes();
+  }
+  if (recorder.OutputDue(solver.time())) PetscCall(WriteFields(recorder, solver.time(), waves_.get(), heat_.get()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
+  PetscFunctionBeginUser;
+  *quiet = false;
+  if (scene_->run.quiet_fraction <= 0.0) PetscFunctionReturn(0);
+  // The mechanical energy left bounds the heat still to come: once it is a small
+  // fraction of what has been dissipated, stopping the waves loses at most that fraction.
+  // Of it, the heating losses take at most their share of the losses over the last period
+  // (friction; material damping only with -material_damping_heat; radiation heats nothing).
+  const double t = e.t;
+  const bool damping_heats = scene_->material.damping_heat;
+  double left = e.kinetic + e.strain + e.interface_stored;
+  if (heat_ && !recent_.empty()) {  // the waves stop for the heat's sake
+    const Sample& first = recent_.front();
+    const double friction = e.dissipated - first.dissipated, damped = e.damped - first.damped;
+    const double heating = friction + (damping_heats ? damped : 0.0);
+    const double losses = friction + damped + (e.radiated - first.radiated);
+    if (losses > 0.0) left *= std::max(0.0, heating) / losses;
+  }
+  recent_.push_back({t, left, e.dissipated, e.damped, e.radiated});
+  peak_mechanical_ = std::max(peak_mechanical_, left);
+  // Over a whole source period: kinetic and strain energy trade places within a cycle.
+  const double period = 1.0 / scene_->excitation.signal.frequency;
+  while (recent_.size() > 2 && recent_.front().t < t - period) recent_.erase(recent_.begin());
+  if (t < scene_->excitation.signal.duration + period) PetscFunctionReturn(0);
+  double most = 0.0;
+  for (const Sample& s : recent_) most = std::max(most, s.energy);
+  const double heated = e.dissipated + (damping_heats ? e.damped : 0.0);
+  const double reference = heat_ && heated > 0.0 ? heated : peak_mechanical_;
+  *quiet = most <= scene_->run.quiet_fraction * reference;
+  mechanical_left_ = most;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
+  if (!heat_) PetscCall(RecordEnergy(recorder, last, nullptr));
+  recorder.FlushProbes();
+  recorder.StopWaves(last);
+  summary->wave_energy_left = mechanical_left_;
+  summary->work_thermal = last.work_thermal;
+  if (solver.time() < scene_->final_time * (1 - 1e-12))
+    PetscCall(PetscPrintf(comm, "Waves quiet at t = %.6g s: wave solver stopped%s\n", solver.time(),
+                          heat_ ? ", heat continues alone" : ""));
+  // The waves are over: the heat sources write their records, the wave solver
+  // and the interface are freed (the heat TS carries on alone).
+  if (heat_) PetscCall(heat_->StopSources(dir_));
+  PetscCall(waves_->Stop(summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  heat::HeatSolver& heat = heat_->solver();
+  MPI_Comm comm = PetscObjectComm((PetscObject)heat.space().dm());
+  const double final_time = scene_->final_time;
+  PetscCall(heat.UseFreeIntegrator());
+  const double t_begin = heat.time();
+  const PetscInt steps_before = heat.steps();
+  PetscCall(PetscPrintf(comm, "Heat alone from t = %.6g s to %g s: %s\n", t_begin, final_time,
+                        heat_alone_from_ >= 0.0 ? "a stop from here resumes (-restart) where the waves stopped, repeating "
+                                                  "this phase"
+                                                : "not resumable (no checkpoint of this scene): a stop loses the run"));
+  recorder.progress().Start(comm, "heat", t_begin, final_time, 0.0, true);
+  const double t0 = MPI_Wtime();
+  PetscCall(PetscLogStagePush(heat_stage_));
+  if (recorder.OutputDue(t_begin)) PetscCall(WriteFields(recorder, t_begin, nullptr, heat_.get()));
+  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver&) {
+    PetscFunctionBeginUser;
+    bool due;  // no checkpoints here: a signal stops the run, a restart repeats this phase
+    PetscCall(schedule_.Poll(&due, &interrupted_by_));
+    if (interrupted_by_) heat.RequestStop();
+    PetscCall(RecordTemperature(recorder, *heat_, false));
+    PetscCall(recorder.OnHeatStep(heat));
+    PetscCall(RecordEnergy(recorder, recorder.waves_at_stop(), heat_.get()));
+    PetscCall(recorder.progress().Update(heat.time(), heat.steps()));
+    PetscFunctionReturn(0);
+  };
+  // One TSSolve per output segment (or camera window boundary); the step ladder's rung carries over.
+  while (heat.time() < final_time * (1 - 1e-12) && !interrupted_by_) {
+    PetscCall(heat.AdvanceTo(recorder.NextHeatStop(heat.time(), final_time)));
+    if (recorder.OutputDue(heat.time())) PetscCall(WriteFields(recorder, heat.time(), nullptr, heat_.get()));
+  }
+  heat.on_step = nullptr;
+  if (interrupted_by_ && heat_alone_from_ >= 0.0)
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
+                                "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
+                          SignalName(interrupted_by_), heat.time(), heat_alone_from_));
+  else if (interrupted_by_)
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
+                                "(this scene has none): the run is lost\n", SignalName(interrupted_by_), heat.time()));
+  summary->stages["heat_free"] = MPI_Wtime() - t0;
+  summary->steps_heat_free = heat.steps() - steps_before;
+  PetscCall(PetscLogStagePop());
+  heat_->add_seconds(MPI_Wtime() - t0);
+  PetscCall(recorder.progress().Done(heat.time(), heat.steps()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

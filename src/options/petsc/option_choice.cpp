@@ -1,0 +1,32 @@
+#include "vibrotherm/options/petsc/option_choice.hpp"
+
+#include <algorithm>
+
+namespace vibrotherm {
+
+std::string JoinChoices(const std::vector<std::string>& names) {
+  std::string joined;
+  for (const std::string& n : names) joined += (joined.empty() ? "" : "|") + n;
+  return joined;
+}
+
+PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
+                             const std::vector<std::string>& names, PetscInt* index, PetscBool* set) {
+  PetscFunctionBeginUser;
+  // Checked before PetscOptionsEList, whose own error is a PETSc trace, not a user error.
+  char value[256];
+  PetscBool given = PETSC_FALSE;
+  PetscCall(PetscOptionsGetString(PetscOptionsObject->options, PetscOptionsObject->prefix, option, value,
+                                  sizeof(value), &given));
+  if (given && std::find(names.begin(), names.end(), std::string(value)) == names.end())
+    SETERRQ(PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option, value,
+            JoinChoices(names).c_str());
+  std::vector<const char*> list;
+  for (const std::string& n : names) list.push_back(n.c_str());
+  const std::string text = std::string(help) + " (" + JoinChoices(names) + ")";
+  PetscCall(PetscOptionsEList(option, text.c_str(), nullptr, list.data(), static_cast<PetscInt>(list.size()),
+                              list[*index], index, set));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm

@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Requirement (issue 25): the folders show the architecture. Each folder of src/ and
+include/vibrotherm/ may include only folders listed before it in LAYERS (its own
+included): no folder includes one above it, so no two folders include each other.
+The order, bottom to top, is that of docs/ARCHITECTURE.md's map. A new folder must be
+placed here before it can be used.
+
+usage: test_layers.py REPO"""
+import os
+import re
+import sys
+
+LAYERS = [
+    "contact",            # crack laws, PETSc-free
+    "options",            # command line and options files, PETSc-free
+    "util",               # errors, stages, version
+    "geometry",           # points and frames, PETSc-free
+    "store",              # atomic files, the checkpoint store
+    "options/petsc",      # PETSc option helpers and the option audit
+    "mesh/plex",          # generic DMPlex tools (facets, crack split, partitioners)
+    "mesh",               # the specimen and its 2D meshing
+    "fe",                 # Lagrange spaces, cell and point location
+    "wave",               # elastodynamics
+    "heat",               # heat conduction
+    "interface",          # crack contact cells between the wave solver and the laws
+    "io",                 # output files
+    "coupling/exchange",  # what flows between the solvers (friction heat, thermoelastic, thermal stress, camera sampling)
+    "coupling/observe",   # what a run writes (recorder, field peak, probe temperatures)
+    "coupling/run",       # run order, components, scene, checkpoint schedule, periodic continuation
+    "modes",              # modal analysis run
+    "app",                # executables
+]
+NESTED = ("coupling/", "mesh/plex", "options/petsc")
+
+
+def folder_of(path):
+    """`path` relative to src/ or include/vibrotherm/ → its layer."""
+    parts = path.split("/")[:-1]
+    two = "/".join(parts[:2])
+    return two if two.startswith(NESTED) else parts[0]
+
+
+def main(repo):
+    rank = {name: i for i, name in enumerate(LAYERS)}
+    failures, files = [], 0
+    for root in ("src", "include/vibrotherm"):
+        for dirpath, _, names in os.walk(os.path.join(repo, root)):
+            for name in names:
+                path = os.path.join(dirpath, name)
+                own = folder_of(os.path.relpath(path, os.path.join(repo, root)))
+                if own not in rank:
+                    failures.append("%s: folder %s is not in LAYERS" % (path, own))
+                    continue
+                files += 1
+                for header in re.findall(r'#include "vibrotherm/([a-z_0-9/]+\.hpp)"', open(path).read()):
+                    other = folder_of(header)
+                    if rank.get(other, len(LAYERS)) > rank[own]:
+                        failures.append("%s (%s) includes %s (%s, a layer above)" % (path, own, header, other))
+    for f in failures:
+        print("FAILED:", f)
+    print("folder layers: %d files, %d violations" % (files, len(failures)))
+    return 1 if failures or files < 100 else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
