@@ -76,7 +76,9 @@ PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive) {
   PetscFunctionBeginUser;
   DMPolytopeType type;
   PetscCall(DMPlexGetCellType(dm, c, &type));
-  *cohesive = type == DM_POLYTOPE_SEG_PRISM_TENSOR || type == DM_POLYTOPE_POINT_PRISM_TENSOR;
+  // Tensor prisms of a facet (2D: segment; 3D: triangle or quadrilateral), or of a point.
+  *cohesive = type == DM_POLYTOPE_SEG_PRISM_TENSOR || type == DM_POLYTOPE_POINT_PRISM_TENSOR ||
+              type == DM_POLYTOPE_TRI_PRISM_TENSOR || type == DM_POLYTOPE_QUAD_PRISM_TENSOR;
   PetscFunctionReturn(0);
 }
 

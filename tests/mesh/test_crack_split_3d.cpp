@@ -1,0 +1,194 @@
+// Requirement (issue 26, item 1): a planar crack buried in a 3D box splits into exactly
+// one cohesive cell per crack face, on hexes and on tets, buried or reaching the outer
+// boundary; the crack's interior vertices are duplicated once, its front is not; the
+// two bulk cells of each cohesive cell lie on opposite sides of the crack plane.
+// Control: PETSc 3.18's recipe without the front in the boundary label grows the crack
+// by a cell layer (../shared/design/3D-NOTES.md §2), which the count check catches.
+#include <gtest/gtest.h>
+#include <petscdmplex.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "vibrotherm/mesh/plex/crack_split.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
+
+namespace vibrotherm::testing {
+namespace {
+
+struct CrackBox {
+  DM dm = nullptr;
+  PetscInt crack_faces = 0;
+  ~CrackBox() { (void)DMDestroy(&dm); }
+};
+
+/// [-1,1]³ in n³ cubes, each cut into the 6 tets of Kuhn's triangulation (conforming;
+/// Debian's PETSc has no tet generator), positively oriented.
+PetscErrorCode KuhnTets(PetscInt n, DM* dm) {
+  PetscFunctionBeginUser;
+  auto id = [n](PetscInt i, PetscInt j, PetscInt k) { return static_cast<PetscInt>((k * (n + 1) + j) * (n + 1) + i); };
+  std::vector<PetscReal> xyz;
+  for (PetscInt k = 0; k <= n; ++k)
+    for (PetscInt j = 0; j <= n; ++j)
+      for (PetscInt i = 0; i <= n; ++i) xyz.insert(xyz.end(), {-1 + 2.0 * i / n, -1 + 2.0 * j / n, -1 + 2.0 * k / n});
+  std::vector<PetscInt> cells;
+  std::array<int, 3> axes = {0, 1, 2};
+  for (PetscInt k = 0; k < n; ++k)
+    for (PetscInt j = 0; j < n; ++j)
+      for (PetscInt i = 0; i < n; ++i) do {  // one tet per order in which the axes are stepped
+          std::array<PetscInt, 3> at = {i, j, k};
+          std::array<PetscInt, 4> tet;
+          tet[0] = id(at[0], at[1], at[2]);
+          for (int s = 0; s < 3; ++s) ++at[axes[s]], tet[s + 1] = id(at[0], at[1], at[2]);
+          const PetscReal* p[4] = {&xyz[3 * tet[0]], &xyz[3 * tet[1]], &xyz[3 * tet[2]], &xyz[3 * tet[3]]};
+          double d[3][3];
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) d[r][c] = p[r + 1][c] - p[0][c];
+          const double volume = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
+                                d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                                d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+          if (volume < 0) std::swap(tet[2], tet[3]);
+          cells.insert(cells.end(), tet.begin(), tet.end());
+        } while (std::next_permutation(axes.begin(), axes.end()));
+  PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, 3, static_cast<PetscInt>(cells.size() / 4),
+                                          static_cast<PetscInt>(xyz.size() / 3), 4, PETSC_TRUE, cells.data(), 3,
+                                          xyz.data(), dm));
+  PetscFunctionReturn(0);
+}
+
+/// [-1,1]³ in 8³ hexes (or Kuhn tets) with the crack x0 ≤ x ≤ x1, |y| ≤ 0.5 in the plane z = 0.
+PetscErrorCode MakeCrackBox(bool simplex, double x0, double x1, CrackBox* box) {
+  PetscFunctionBeginUser;
+  const PetscInt faces[3] = {8, 8, 8};
+  const PetscReal lower[3] = {-1, -1, -1}, upper[3] = {1, 1, 1};
+  if (simplex) PetscCall(KuhnTets(8, &box->dm));
+  else PetscCall(DMPlexCreateBoxMesh(PETSC_COMM_SELF, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, &box->dm));
+  PetscCall(DMCreateLabel(box->dm, mesh::labels::crack));
+  PetscCall(DMCreateLabel(box->dm, mesh::labels::crack_tip));
+  DMLabel crack;
+  PetscCall(DMGetLabel(box->dm, mesh::labels::crack, &crack));
+  PetscInt fStart, fEnd;
+  PetscCall(mesh::FacetRange(box->dm, &fStart, &fEnd));
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscReal area, c[3], n[3];
+    PetscCall(DMPlexComputeCellGeometryFVM(box->dm, f, &area, c, n));
+    if (std::abs(c[2]) < 1e-12 && c[0] > x0 && c[0] < x1 && std::abs(c[1]) < 0.5) {
+      PetscCall(DMLabelSetValue(crack, f, 1));
+      ++box->crack_faces;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscInt CountCohesive(DM dm) {
+  PetscInt cStart, cEnd, count = 0;
+  (void)DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    (void)mesh::IsCohesiveCell(dm, c, &cohesive);
+    count += cohesive;
+  }
+  return count;
+}
+
+PetscInt CountVertices(DM dm) {
+  PetscInt vStart, vEnd;
+  (void)DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd);
+  return vEnd - vStart;
+}
+
+/// Every cohesive cell joins a bulk cell above the plane to one below it.
+int CellsOnWrongSides(DM dm) {
+  PetscInt cStart, cEnd;
+  int wrong = 0;
+  (void)DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd);
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    (void)mesh::IsCohesiveCell(dm, c, &cohesive);
+    if (!cohesive) continue;
+    const PetscInt* faces;
+    (void)DMPlexGetCone(dm, c, &faces);
+    double z[2];
+    for (int k = 0; k < 2; ++k) {
+      const PetscInt* support;
+      PetscInt n;
+      (void)DMPlexGetSupportSize(dm, faces[k], &n);
+      (void)DMPlexGetSupport(dm, faces[k], &support);
+      PetscReal volume, centroid[3];
+      const PetscInt bulk = support[0] == c ? support[n - 1] : support[0];
+      (void)DMPlexComputeCellGeometryFVM(dm, bulk, &volume, centroid, nullptr);
+      z[k] = centroid[2];
+    }
+    wrong += !(z[0] * z[1] < 0);
+  }
+  return wrong;
+}
+
+/// PETSc's recipe with no boundary label (what SplitCracks adds the front to).
+PetscErrorCode SplitWithoutFront(DM dm, DM* split) {
+  PetscFunctionBeginUser;
+  DMLabel crack, fault, cohesive, subpoints;
+  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack));
+  PetscCall(DMLabelDuplicate(crack, &fault));
+  PetscCall(DMPlexLabelComplete(dm, fault));
+  DM sub;
+  PetscCall(DMPlexCreateSubmesh(dm, fault, 1, PETSC_TRUE, &sub));
+  PetscCall(DMPlexOrient(sub));
+  PetscCall(DMPlexGetSubpointMap(sub, &subpoints));
+  PetscCall(DMLabelDuplicate(subpoints, &cohesive));
+  PetscCall(DMLabelClearStratum(cohesive, 3));
+  PetscCall(DMPlexLabelCohesiveComplete(dm, cohesive, nullptr, 1, PETSC_FALSE, sub));
+  PetscCall(DMPlexConstructCohesiveCells(dm, cohesive, nullptr, split));
+  PetscCall(DMLabelDestroy(&cohesive));
+  PetscCall(DMLabelDestroy(&fault));
+  PetscCall(DMDestroy(&sub));
+  PetscFunctionReturn(0);
+}
+
+struct Case {
+  const char* name;
+  bool simplex;
+  double x0, x1;
+  PetscInt faces, new_vertices;  ///< crack faces; interior (and surface-trace) crack vertices
+};
+
+class CrackSplit3D : public ::testing::TestWithParam<Case> {};
+
+TEST_P(CrackSplit3D, OneCohesiveCellPerCrackFace) {
+  const Case& k = GetParam();
+  CrackBox box;
+  ASSERT_EQ(MakeCrackBox(k.simplex, k.x0, k.x1, &box), 0);
+  ASSERT_EQ(box.crack_faces, k.faces) << k.name;
+  DM split = nullptr;
+  ASSERT_EQ(mesh::SplitCracks(box.dm, &split), 0) << k.name;
+  EXPECT_EQ(CountCohesive(split), k.faces) << k.name;
+  EXPECT_EQ(CountVertices(split) - CountVertices(box.dm), k.new_vertices) << k.name;
+  EXPECT_EQ(CellsOnWrongSides(split), 0) << k.name;
+  EXPECT_EQ(DMPlexCheckSymmetry(split), 0);
+  EXPECT_EQ(DMPlexCheckSkeleton(split, 0), 0);
+  (void)DMDestroy(&split);
+}
+
+TEST_P(CrackSplit3D, WithoutTheFrontTheCrackGrows) {
+  const Case& k = GetParam();
+  CrackBox box;
+  ASSERT_EQ(MakeCrackBox(k.simplex, k.x0, k.x1, &box), 0);
+  DM split = nullptr;
+  ASSERT_EQ(SplitWithoutFront(box.dm, &split), 0);
+  EXPECT_GT(CountCohesive(split), k.faces) << k.name << ": PETSc 3.18 no longer grows a crack without its front";
+  (void)DMDestroy(&split);
+}
+
+// 8³ cells of 0.25: a buried 1 × 1 square has 4 × 4 faces (× 2 triangles on tets) and
+// 3 × 3 interior vertices; the surface-breaking 1.5 × 1 one, 6 × 4 faces and 6 × 3
+// split vertices (its trace on x = -1 opens).
+INSTANTIATE_TEST_SUITE_P(Boxes, CrackSplit3D,
+                         ::testing::Values(Case{"hexes, buried", false, -0.5, 0.5, 16, 9},
+                                           Case{"tets, buried", true, -0.5, 0.5, 32, 9},
+                                           Case{"hexes, surface-breaking", false, -1.5, 0.5, 24, 18}));
+
+}  // namespace
+}  // namespace vibrotherm::testing
