@@ -85,7 +85,9 @@ TEST(CsvRows, EveryBadRowIsAnErrorNamingFileAndLine) {
 }
 
 TEST(CsvRows, OnlyAHeaderAddsTheOptionalColumns) {
-  auto read_b2 = [](const std::string& text) { return read_csv_rows(write_file(text), "-history", {"t", "a", "b"}, {"b2"}); };
+  auto read_b2 = [](const std::string& text) {
+    return read_csv_rows(write_file(text), "-history", {"t", "a", "b"}, {"b2"});
+  };
   const auto rows = read_b2("t,a,b,b2\n0,1,2,3\n");
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].values, (std::vector<double>{0.0, 1.0, 2.0, 3.0}));

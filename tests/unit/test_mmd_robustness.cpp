@@ -30,7 +30,8 @@ TEST(MmdRobustness, MillionNoisyStepsStayBounded) {
     b = tm * s * (0.8 * std::sin(t)) + 0.03 * tm * s * noise(rng);
     const StepResult r = cell.commit(*law, cfg, a, b);
     const double N = law->eval(a).N;
-    ok = std::isfinite(r.T[0]) && std::isfinite(r.dW) && r.dW >= 0.0 && std::abs(r.T[0]) <= p.mu * N * (1 + 1e-9) + 1e-300;
+    const double T = r.T[0];
+    ok = std::isfinite(T) && std::isfinite(r.dW) && r.dW >= 0.0 && std::abs(T) <= p.mu * N * (1 + 1e-9) + 1e-300;
     EXPECT_TRUE(ok) << "step " << k << ": T = " << r.T[0] << " muN = " << p.mu * N << " dW = " << r.dW;
     max_points = std::max(max_points, cell.breakpoints());
   }
