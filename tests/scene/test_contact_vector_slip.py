@@ -8,18 +8,13 @@ b2 of zero along the first axis gives the one-component rows; mmd refuses two
 components in one line naming -crack_law and writes nothing.
 
 usage: test_contact_vector_slip.py VIBROTHERM_CONTACT"""
-import csv, math, os, subprocess, sys, tempfile
+import csv, math, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, program_runner
 
-exe = sys.argv[1]
 check = Checks("vibrotherm-contact two tangential components")
-
-
-def run(args):
-    return subprocess.run([exe] + args, capture_output=True, text=True)
-
+run = program_runner(sys.argv[1])
 
 # Coulomb on the linear normal law: N = k a, F = mu N, F/k_t = 1e-8 m; circle r = 2 F/k_t.
 k, a, mu, kt, steps, cycles = 1e14, 1e-8, 0.5, 5e13, 400, 5
