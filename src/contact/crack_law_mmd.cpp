@@ -1,4 +1,5 @@
-// Rough crack faces: one memory diagram per contact cell.
+// Rough crack faces: one memory diagram per contact cell. One tangential
+// component only: the 3D rule (a vector spring bed, PHYSICS.md §3.5) comes with 3D.
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
 
@@ -9,19 +10,24 @@ class MmdLaw final : public CrackLaw {
  public:
   MmdLaw(std::unique_ptr<NormalLaw> law, const MmdConfig& cfg) : law_(std::move(law)), cfg_(cfg) {}
   std::string name() const override { return "mmd"; }
-  void initialize(std::size_t cells, const double* a, const double* b) override {
+  void initialize(std::size_t cells, const double* a, const Tangential* b) override {
     diagrams_.assign(cells, MemoryDiagram{});
-    for (std::size_t i = 0; i < cells; ++i) diagrams_[i].reset(*law_, a[i], b[i]);
+    for (std::size_t i = 0; i < cells; ++i) {
+      if (b[i].components() != 1)
+        throw InputError("-crack_law mmd: two tangential components (3D) are not implemented yet; "
+                         "use -crack_law coulomb, linear or clapping");
+      diagrams_[i].reset(*law_, a[i], b[i][0]);
+    }
   }
   std::size_t cells() const override { return diagrams_.size(); }
-  Traction trial(std::size_t cell, double a, double b) const override {
-    return diagrams_[cell].trial(*law_, cfg_, a, b);
+  Traction trial(std::size_t cell, double a, const Tangential& b) const override {
+    return diagrams_[cell].trial(*law_, cfg_, a, b[0]);
   }
-  StepResult commit(std::size_t cell, double a, double b) override {
-    return diagrams_[cell].commit(*law_, cfg_, a, b);
+  StepResult commit(std::size_t cell, double a, const Tangential& b) override {
+    return diagrams_[cell].commit(*law_, cfg_, a, b[0]);
   }
   double stored_energy(std::size_t cell) const override { return diagrams_[cell].stored_energy(cfg_); }
-  double slip_offset(std::size_t cell) const override { return diagrams_[cell].b0(); }
+  Tangential slip_offset(std::size_t cell) const override { return Tangential(diagrams_[cell].b0()); }
   CellStiffness stiffness(std::size_t, double a) const override {
     // All springs stuck: dT/db = N'(a)/θ <= dN/da.
     const double k = a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero();

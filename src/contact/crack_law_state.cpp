@@ -1,4 +1,4 @@
-// Checkpoint state of the crack laws whose cells hold one value per column.
+// Checkpoint state of the crack laws whose cells hold numbers and tangential vectors.
 #include <stdexcept>
 #include <string>
 
@@ -6,18 +6,23 @@
 
 namespace vibrotherm::contact {
 
-std::vector<double> save_cell_values(std::size_t cell, std::initializer_list<const std::vector<double>*> columns) {
-  std::vector<double> values;
-  for (const std::vector<double>* column : columns) values.push_back((*column)[cell]);
+std::vector<double> save_cell_state(std::initializer_list<double> numbers, std::initializer_list<Tangential> vectors) {
+  std::vector<double> values(numbers);
+  for (const Tangential& v : vectors)
+    for (int k = 0; k < v.components(); ++k) values.push_back(v[k]);
   return values;
 }
 
-void restore_cell_values(std::size_t cell, const double* values, std::size_t n,
-                         std::initializer_list<std::vector<double>*> columns) {
-  if (n != columns.size())
+void restore_cell_state(const double* values, std::size_t n, std::initializer_list<double*> numbers,
+                        std::initializer_list<Tangential*> vectors) {
+  std::size_t expected = numbers.size();
+  for (const Tangential* v : vectors) expected += v->components();
+  if (n != expected)
     throw std::runtime_error("crack law: a saved cell state has " + std::to_string(n) + " values, expected " +
-                             std::to_string(columns.size()));
-  for (std::vector<double>* column : columns) (*column)[cell] = *values++;
+                             std::to_string(expected));
+  for (double* x : numbers) *x = *values++;
+  for (Tangential* v : vectors)
+    for (int k = 0; k < v->components(); ++k) (*v)[k] = *values++;
 }
 
 }  // namespace vibrotherm::contact

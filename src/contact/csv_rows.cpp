@@ -58,6 +58,13 @@ std::vector<double> parse_row(const std::vector<std::string>& fields, const std:
 
 std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option,
                                   const std::vector<std::string>& columns) {
+  return read_csv_rows(path, option, columns, {});
+}
+
+std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option,
+                                  std::vector<std::string> columns, const std::vector<std::string>& optional) {
+  std::vector<std::string> extended = columns;
+  extended.insert(extended.end(), optional.begin(), optional.end());
   const std::string file = option + " " + path;
   std::ifstream in(path);
   if (!in) throw InputError(file + ": cannot open the file");
@@ -69,7 +76,11 @@ std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& op
     const std::string content = trimmed(text);
     if (content.empty() || content[0] == '#') continue;
     const std::vector<std::string> fields = split_fields(content);
-    const bool header = first && is_header(fields, columns);
+    // Only a header names the optional columns: a headerless row with one field
+    // too many stays an error (a decimal comma), never a silent extra column.
+    const bool extends = first && !optional.empty() && is_header(fields, extended);
+    if (extends) columns = extended;
+    const bool header = extends || (first && is_header(fields, columns));
     first = false;
     if (!header) rows.push_back({parse_row(fields, columns, file + " line " + std::to_string(line)), line});
   }

@@ -175,10 +175,10 @@ Traction MemoryDiagram::trial(const NormalLaw& law, const MmdConfig& cfg, double
     const double bc = b_ + (0.0 - a_) / (a - a_) * (b - b_);
     const Breakpoint v = virgin_point();
     const Tail tail = detail::build_tail(&v, 1, law, cfg, a, b - bc);
-    return {tail.N, tail.T};
+    return {tail.N, Tangential(tail.T)};
   }
   const Tail tail = detail::build_tail(pts_.data(), pts_.size(), law, cfg, a, b - b0_);
-  return {tail.N, tail.T};
+  return {tail.N, Tangential(tail.T)};
 }
 
 StepResult MemoryDiagram::commit(const NormalLaw& law, const MmdConfig& cfg, double a2, double b2) {
@@ -210,7 +210,7 @@ StepResult MemoryDiagram::commit(const NormalLaw& law, const MmdConfig& cfg, dou
   const Tail tail = detail::build_tail(pts_.data(), pts_.size(), law, cfg, a2, bt2);
   result.dW = detail::path_dissipation(pts_.data(), pts_.size(), law, cfg, a2, bt2, tail);
   result.N = tail.N;
-  result.T = tail.T;
+  result.T = Tangential(tail.T);
   result.state = tail.state;
 
   pts_.resize(tail.keep);

@@ -208,7 +208,9 @@ void CrackInterface::InitialState() {
   a_.resize(n);
   b_.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) a_[i] = cells_[i].a0;
-  law_->initialize(n, a_.data(), b_.data());
+  // 2D: one tangential component, along s.
+  const std::vector<contact::Tangential> b(n, contact::Tangential(0.0));
+  law_->initialize(n, a_.data(), b.data());
   power_.assign(n, 0.0);
   W_.assign(n, 0.0);
   last_.assign(n, contact::StepResult{});
@@ -216,7 +218,7 @@ void CrackInterface::InitialState() {
   initial_stored_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     initial_stored_[i] = law_->stored_energy(i);
-    cells_[i].N0 = law_->trial(i, cells_[i].a0, 0.0).N;
+    cells_[i].N0 = law_->trial(i, cells_[i].a0, contact::Tangential(0.0)).N;
   }
 }
 
@@ -257,11 +259,11 @@ PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
     const ContactCell& c = cells_[i];
     double a, b;
     Kinematics(i, U, &a, &b);
-    const contact::Traction t = law_->trial(i, a, b);
+    const contact::Traction t = law_->trial(i, a, contact::Tangential(b));
     // Only the change from the initial state: the pre-stress that holds a
     // pre-closed crack (a0 > 0) at rest balances N(a0).
     const double N = t.N - c.N0;
-    const double fx = c.weight * (N * c.n[0] - t.T * c.s[0]), fy = c.weight * (N * c.n[1] - t.T * c.s[1]);
+    const double fx = c.weight * (N * c.n[0] - t.T[0] * c.s[0]), fy = c.weight * (N * c.n[1] - t.T[0] * c.s[1]);
     const double f[4] = {fx, fy, -fx, -fy};
     for (int k = 0; k < 4; ++k) {
       const double value = f[k] * inv_mass_[4 * i + k];
@@ -303,7 +305,7 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
   const double mu = law_->friction_bound();
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Kinematics(i, U, &a_[i], &b_[i]);
-    last_[i] = law_->commit(i, a_[i], b_[i]);
+    last_[i] = law_->commit(i, a_[i], contact::Tangential(b_[i]));
     W_[i] += last_[i].dW;
     power_[i] = dt > 0 ? last_[i].dW / dt : 0.0;
     dissipated_local_ += cells_[i].weight * last_[i].dW;
@@ -312,7 +314,7 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
     const double N = last_[i].N;
     largest_normal_ = std::max(largest_normal_, N);
     if (std::isfinite(mu) && N > std::max(kNegligibleTraction, 1e-9 * largest_normal_))
-      friction_excess_ = std::max(friction_excess_, (std::abs(last_[i].T) - mu * N) / (mu * N));
+      friction_excess_ = std::max(friction_excess_, (contact::norm(last_[i].T) - mu * N) / (mu * N));
   }
   PetscCall(GatherEnd(u, &U));
   PetscCall(PetscLogEventEnd(commit_event_, 0, 0, 0, 0));
@@ -382,8 +384,8 @@ PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u
     CrackCellRecord r;
     r.crack = static_cast<int>(c.crack);
     r.xi = c.xi, r.x = c.x, r.y = c.y;
-    r.a = a_[i], r.b = b_[i], r.b0 = law_->slip_offset(i);
-    r.N = s.N, r.T = s.T, r.state = s.state;
+    r.a = a_[i], r.b = b_[i], r.b0 = law_->slip_offset(i)[0];
+    r.N = s.N, r.T = s.T[0], r.state = s.state;
     r.power = power_[i], r.W = W_[i];
     if (U) r.ux = PetscRealPart(U[Slot(i, 0)]), r.uy = PetscRealPart(U[Slot(i, 1)]);
     records->push_back(r);

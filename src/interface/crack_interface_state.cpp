@@ -18,7 +18,7 @@ PetscErrorCode CrackInterface::Save(store::Checkpoint& checkpoint, const mesh::P
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     keys.push_back(origin[cells_[i].plus]);
     const contact::StepResult& s = last_[i];
-    cells.insert(cells.end(), {a_[i], b_[i], power_[i], W_[i], s.N, s.T, s.dW, static_cast<double>(s.state)});
+    cells.insert(cells.end(), {a_[i], b_[i], power_[i], W_[i], s.N, s.T[0], s.dW, static_cast<double>(s.state)});
     const std::vector<double> state = law_->save_state(i);
     counts.push_back(static_cast<long long>(state.size()));
     memory.insert(memory.end(), state.begin(), state.end());
@@ -43,7 +43,7 @@ PetscErrorCode CrackInterface::Restore(const store::Checkpoint& checkpoint, cons
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const double* v = &cells[kCellValues * i];
     a_[i] = v[0], b_[i] = v[1], power_[i] = v[2], W_[i] = v[3];
-    last_[i].N = v[4], last_[i].T = v[5], last_[i].dW = v[6];
+    last_[i].N = v[4], last_[i].T = contact::Tangential(v[5]), last_[i].dW = v[6];
     last_[i].state = static_cast<contact::ContactState>(static_cast<int>(v[7]));
     VibrothermCallCpp(PETSC_COMM_SELF, law_->restore_state(i, memory.data() + at, static_cast<std::size_t>(counts[i])));
     at += static_cast<std::size_t>(counts[i]);

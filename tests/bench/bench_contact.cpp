@@ -14,7 +14,8 @@ namespace {
 using namespace vibrotherm::contact;
 
 struct History {
-  std::vector<double> a, b;  // [step][cell] flattened
+  std::vector<double> a;      // [step][cell] flattened
+  std::vector<Tangential> b;  // one component (2D)
   std::size_t cells, steps;
 };
 
@@ -28,7 +29,7 @@ History make_history(std::size_t cells, std::size_t steps, const ContactParamete
     for (std::size_t c = 0; c < cells; ++c) {
       const double shift = 0.01 * c;
       h.a[k * cells + c] = s * (0.3 + 0.5 * std::sin(phase + shift + 0.4));       // clapping: a < 0 for part of the cycle
-      h.b[k * cells + c] = tm * s * (1.2 * std::sin(phase + shift));           // shear-dominated, reaches sliding
+      h.b[k * cells + c] = Tangential(tm * s * (1.2 * std::sin(phase + shift)));  // shear-dominated, reaches sliding
     }
   }
   return h;
@@ -80,8 +81,9 @@ void BM_MmdTrialAndCommit(benchmark::State& state) {
   for (auto _ : state) {
     const std::size_t row = crack.next();
     for (std::size_t c = 0; c < crack.cells; ++c) {
-      const double a = crack.history.a[row + c], b = crack.history.b[row + c];
-      sum += crack.law->trial(c, a, b).T + crack.law->commit(c, a, b).dW;
+      const double a = crack.history.a[row + c];
+      const Tangential& b = crack.history.b[row + c];
+      sum += crack.law->trial(c, a, b).T[0] + crack.law->commit(c, a, b).dW;
     }
   }
   benchmark::DoNotOptimize(sum);

@@ -21,6 +21,11 @@ class Checks:
         sys.exit(1 if self.failures else 0)
 
 
+def program_runner(exe):
+    """run(args): exe with args, its output captured (subprocess.CompletedProcess)."""
+    return lambda args: subprocess.run([exe] + args, capture_output=True, text=True)
+
+
 def one_line_error(check, label, code, err, *words):
     """A refused input: exit 2 and stderr one line `vibrotherm: error: ...` holding every word."""
     lines = [l for l in err.splitlines() if l.strip()]

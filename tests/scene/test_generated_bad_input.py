@@ -58,7 +58,9 @@ CONTEXT = {
 }
 # vibrotherm-contact: a short built-in history written to a file.
 CONTACT_SCENE = ["-history_cycles", "1", "-history_steps_per_cycle", "20"]
-CONTACT_CONTEXT = {"-contact_table_file": ["-contact_normal_law", "table"]}
+CONTACT_CONTEXT = {"-contact_table_file": ["-contact_normal_law", "table"],
+                   # A second tangential component needs a law that takes two (not mmd, the default).
+                   **{"-history_b2_" + f: ["-crack_law", "coulomb"] for f in ("amplitude", "offset", "phase", "rate")}}
 
 ANY_NAME = set(VALUES) - {""}
 # Documented valid values: (option) -> values that must run (exit 0, finite outputs).
@@ -100,7 +102,7 @@ ALLOWED = {
 CONTACT_ALLOWED = {
     "-contact_a0": {"-1", "0"}, "-contact_mu": {"0"}, "-material_nu": {"0"},
     # History sinusoids: any amplitude, offset, phase or drift; no ramp.
-    **{"-history_%s_%s" % (x, f): {"-1", "0"} for x in "ab" for f in ("amplitude", "offset", "phase", "rate")},
+    **{"-history_%s_%s" % (x, f): {"-1", "0"} for x in ("a", "b", "b2") for f in ("amplitude", "offset", "phase", "rate")},
     "-history_ramp_cycles": {"0"},
     # Output file: any name.
     "-o": ANY_NAME,

@@ -40,14 +40,14 @@ inline PathEnergy drive(CrackLaw& law, const Path& path, double s0, double s1, i
   PathEnergy e;
   double a_prev, b_prev;
   path(s0, a_prev, b_prev);
-  Traction prev = law.trial(0, a_prev, b_prev);
+  Traction prev = law.trial(0, a_prev, Tangential(b_prev));
   for (int k = 1; k <= steps; ++k) {
     double a, b;
     path(s0 + (s1 - s0) * k / steps, a, b);
-    const StepResult r = law.commit(0, a, b);
+    const StepResult r = law.commit(0, a, Tangential(b));
     e.dissipated += r.dW;
-    e.loop_area += (prev.T + r.T) * (b - b_prev);
-    const double dwork = (prev.T + r.T) * (b - b_prev) + (prev.N + r.N) * (a - a_prev);
+    e.loop_area += (prev.T[0] + r.T[0]) * (b - b_prev);
+    const double dwork = (prev.T[0] + r.T[0]) * (b - b_prev) + (prev.N + r.N) * (a - a_prev);
     e.work_trap += dwork;
     e.work_abs += std::abs(dwork);
     prev = {r.N, r.T};
@@ -58,11 +58,14 @@ inline PathEnergy drive(CrackLaw& law, const Path& path, double s0, double s1, i
   return e;
 }
 
-/// Creates a one-cell law in its virgin state at (a, b).
-inline std::unique_ptr<CrackLaw> one_cell(const ContactParameters& p, double a, double b) {
+/// Creates a one-cell law in its virgin state at (a, b), b with 1 or 2 components.
+inline std::unique_ptr<CrackLaw> one_cell(const ContactParameters& p, double a, const Tangential& b) {
   auto law = create_crack_law(p);
   law->initialize(1, &a, &b);
   return law;
+}
+inline std::unique_ptr<CrackLaw> one_cell(const ContactParameters& p, double a, double b) {
+  return one_cell(p, a, Tangential(b));
 }
 
 }  // namespace vibrotherm::contact::testing

@@ -28,10 +28,10 @@ TEST(CattaneoMindlin, VirginLoadingBranchIsExact) {
   const double b_max = 0.9 * h.tm * a;
   for (int k = 1; k <= 500; ++k) {
     const double b = b_max * k / 500;
-    const Traction t = law->trial(0, a, b);
-    const StepResult r = law->commit(0, a, b);
-    EXPECT_EQ(t.T, r.T) << "trial and commit disagree";
-    EXPECT_NEAR(r.T, h.T_load(a, b), 1e-12 * std::abs(h.T_load(a, b))) << "b = " << b;
+    const Traction t = law->trial(0, a, Tangential(b));
+    const StepResult r = law->commit(0, a, Tangential(b));
+    EXPECT_EQ(t.T[0], r.T[0]) << "trial and commit disagree";
+    EXPECT_NEAR(r.T[0], h.T_load(a, b), 1e-12 * std::abs(h.T_load(a, b))) << "b = " << b;
     EXPECT_DOUBLE_EQ(r.N, h.N(a));
     EXPECT_EQ(r.state, ContactState::Partial);
   }
@@ -42,17 +42,17 @@ TEST(CattaneoMindlin, MasingUnloadingAndReloading) {
   const double a = 2e-8, bs = 0.6 * h.tm * a;
   auto law = one_cell(h.p, a, 0.0);
   const int n = 400;
-  for (int k = 1; k <= n; ++k) law->commit(0, a, bs * k / n);
+  for (int k = 1; k <= n; ++k) law->commit(0, a, Tangential(bs * k / n));
   const double T_rev = h.T_load(a, bs);
   for (int k = 1; k <= 2 * n; ++k) {  // unload from +b* to −b*
     const double b = bs - 2 * bs * k / (2 * n);
     const double ref = T_rev - 2.0 * h.T_load(a, (bs - b) / 2.0);
-    EXPECT_NEAR(law->commit(0, a, b).T, ref, 1e-12 * h.p.mu * h.N(a)) << "unloading b = " << b;
+    EXPECT_NEAR(law->commit(0, a, Tangential(b)).T[0], ref, 1e-12 * h.p.mu * h.N(a)) << "unloading b = " << b;
   }
   for (int k = 1; k <= 2 * n; ++k) {  // reload from −b* to +b*
     const double b = -bs + 2 * bs * k / (2 * n);
     const double ref = -T_rev + 2.0 * h.T_load(a, (b + bs) / 2.0);
-    EXPECT_NEAR(law->commit(0, a, b).T, ref, 1e-12 * h.p.mu * h.N(a)) << "reloading b = " << b;
+    EXPECT_NEAR(law->commit(0, a, Tangential(b)).T[0], ref, 1e-12 * h.p.mu * h.N(a)) << "reloading b = " << b;
   }
 }
 
@@ -62,17 +62,17 @@ TEST(CattaneoMindlin, TotalSlidingAtMuN) {
   auto law = one_cell(h.p, a, 0.0);
   const double b_slide = h.tm * a;
   for (int k = 1; k <= 300; ++k) {
-    const StepResult r = law->commit(0, a, 1.5 * b_slide * k / 300);
+    const StepResult r = law->commit(0, a, Tangential(1.5 * b_slide * k / 300));
     if (1.5 * b_slide * k / 300 >= b_slide * (1 + 1e-12)) {
       EXPECT_EQ(r.state, ContactState::Slide);
-      EXPECT_NEAR(r.T, h.p.mu * h.N(a), 1e-12 * h.N(a));
+      EXPECT_NEAR(r.T[0], h.p.mu * h.N(a), 1e-12 * h.N(a));
     } else {
-      EXPECT_LE(r.T, h.p.mu * h.N(a));
+      EXPECT_LE(r.T[0], h.p.mu * h.N(a));
     }
   }
-  EXPECT_NEAR(law->slip_offset(0), 0.5 * b_slide, 1e-9 * b_slide);
-  for (int k = 1; k <= 600; ++k) law->commit(0, a, 1.5 * b_slide - 3 * b_slide * k / 600);
-  EXPECT_NEAR(law->trial(0, a, -1.5 * b_slide).T, -h.p.mu * h.N(a), 1e-12 * h.N(a));
+  EXPECT_NEAR(law->slip_offset(0)[0], 0.5 * b_slide, 1e-9 * b_slide);
+  for (int k = 1; k <= 600; ++k) law->commit(0, a, Tangential(1.5 * b_slide - 3 * b_slide * k / 600));
+  EXPECT_NEAR(law->trial(0, a, Tangential(-1.5 * b_slide)).T[0], -h.p.mu * h.N(a), 1e-12 * h.N(a));
 }
 
 /// W per steady cycle ±b* at constant a: 8θμ²[u(N(a) + N(a − u)) − 2(M(a) − M(a − u))], u = b*/(θμ).

@@ -53,16 +53,16 @@ TEST(CrackLaws, EveryLawContinuesExactlyFromItsSavedState) {
     double a, b;
     path(0, a, b);
     auto original = testing::one_cell(p, a, b);
-    for (int k = 1; k <= 700; ++k) path(k, a, b), original->commit(0, a, b);
+    for (int k = 1; k <= 700; ++k) path(k, a, b), original->commit(0, a, Tangential(b));
     const std::vector<double> saved = original->save_state(0);
     auto restored = testing::one_cell(p, 0.0, 0.0);
     restored->restore_state(0, saved.data(), saved.size());
     EXPECT_EQ(restored->save_state(0), saved) << entry.name;
     for (int k = 701; k <= 1400; ++k) {
       path(k, a, b);
-      const StepResult x = original->commit(0, a, b), y = restored->commit(0, a, b);
+      const StepResult x = original->commit(0, a, Tangential(b)), y = restored->commit(0, a, Tangential(b));
       ASSERT_EQ(x.N, y.N) << entry.name << " step " << k;
-      ASSERT_EQ(x.T, y.T) << entry.name << " step " << k;
+      ASSERT_EQ(x.T[0], y.T[0]) << entry.name << " step " << k;
       ASSERT_EQ(x.dW, y.dW) << entry.name << " step " << k;
       ASSERT_EQ(x.state, y.state) << entry.name << " step " << k;
     }
@@ -77,9 +77,9 @@ TEST(CrackLaws, LinearSlipIsSchoenbergsSpring) {
   p.linear_kn = 3e13;
   p.linear_kt = 2e13;
   auto law = testing::one_cell(p, 0.0, 0.0);
-  const StepResult r = law->commit(0, -2e-9, 5e-9);  // works in tension too
+  const StepResult r = law->commit(0, -2e-9, Tangential(5e-9));  // works in tension too
   EXPECT_DOUBLE_EQ(r.N, 3e13 * -2e-9);
-  EXPECT_DOUBLE_EQ(r.T, 2e13 * 5e-9);
+  EXPECT_DOUBLE_EQ(r.T[0], 2e13 * 5e-9);
   EXPECT_EQ(r.dW, 0.0);
 }
 
@@ -92,10 +92,10 @@ TEST(CrackLaws, CoulombSticksThenSlidesAtMuN) {
   p.coulomb_kt = 5e13;
   const double a = 1e-8, N = 1e14 * a, b_stick = p.mu * N / p.coulomb_kt;
   auto law = testing::one_cell(p, a, 0.0);
-  EXPECT_DOUBLE_EQ(law->commit(0, a, 0.5 * b_stick).T, 0.5 * p.mu * N);
-  const StepResult r = law->commit(0, a, 3.0 * b_stick);
+  EXPECT_DOUBLE_EQ(law->commit(0, a, Tangential(0.5 * b_stick)).T[0], 0.5 * p.mu * N);
+  const StepResult r = law->commit(0, a, Tangential(3.0 * b_stick));
   EXPECT_EQ(r.state, ContactState::Slide);
-  EXPECT_DOUBLE_EQ(r.T, p.mu * N);
+  EXPECT_DOUBLE_EQ(r.T[0], p.mu * N);
   // Steady cycle ±b*: loop area 8 μN (b* − μN/k_t).
   const double bs = 3.0 * b_stick;
   const testing::Path cycle = [&](double t, double& aa, double& b) {
@@ -112,9 +112,9 @@ TEST(CrackLaws, ClappingIsTheNormalLawAlone) {
   p.crack_law = "clapping";
   auto law = testing::one_cell(p, 0.0, 0.0);
   const auto normal = create_normal_law(p);
-  EXPECT_DOUBLE_EQ(law->commit(0, 2e-8, 1e-8).N, normal->eval(2e-8).N);
-  EXPECT_EQ(law->commit(0, 2e-8, 3e-8).T, 0.0);
-  EXPECT_EQ(law->commit(0, -1e-9, 0.0).N, 0.0);
+  EXPECT_DOUBLE_EQ(law->commit(0, 2e-8, Tangential(1e-8)).N, normal->eval(2e-8).N);
+  EXPECT_EQ(law->commit(0, 2e-8, Tangential(3e-8)).T[0], 0.0);
+  EXPECT_EQ(law->commit(0, -1e-9, Tangential(0.0)).N, 0.0);
 }
 
 std::string error_of(const ContactParameters& p) {

@@ -84,6 +84,22 @@ TEST(CsvRows, EveryBadRowIsAnErrorNamingFileAndLine) {
   for (const Case& c : cases) EXPECT_EQ(error_of(c.text), "-history " + path + " " + c.message) << c.text;
 }
 
+TEST(CsvRows, OnlyAHeaderAddsTheOptionalColumns) {
+  auto read_b2 = [](const std::string& text) {
+    return read_csv_rows(write_file(text), "-history", {"t", "a", "b"}, {"b2"});
+  };
+  const auto rows = read_b2("t,a,b,b2\n0,1,2,3\n");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].values, (std::vector<double>{0.0, 1.0, 2.0, 3.0}));
+  EXPECT_EQ(read_b2("t,a,b\n0,1,2\n")[0].values.size(), 3u);
+  EXPECT_EQ(read_b2("0,1,2\n")[0].values.size(), 3u);
+  // Without the header a fourth field is a decimal comma, not b2.
+  EXPECT_NE(testing::input_error_message([&] { read_b2("0,1,5e-9,2\n"); }).find("expected 3 fields t,a,b, got 4"),
+            std::string::npos);
+  EXPECT_NE(testing::input_error_message([&] { read_b2("t,a,b,b2\n0,1,2\n"); }).find("expected 4 fields t,a,b,b2"),
+            std::string::npos);
+}
+
 TEST(CsvRows, MissingFileIsNamed) {
   try {
     read_csv_rows("/nonexistent/h.csv", "-history", {"t", "a", "b"});

@@ -42,20 +42,20 @@ TEST(MmdExactness, OneStepEqualsItsSubsteps) {
       for (int k = 0; k < 6; ++k) {
         a = std::max(0.2 * scale, a + 0.5 * scale * U(rng));
         b += 0.8 * tm * scale * U(rng);
-        big->commit(0, a, b);
-        fine->commit(0, a, b);
+        big->commit(0, a, Tangential(b));
+        fine->commit(0, a, Tangential(b));
       }
       const double a2 = a + 0.7 * scale * U(rng), b2 = b + 0.7 * tm * scale * U(rng);
-      const StepResult one = big->commit(0, a2, b2);
+      const StepResult one = big->commit(0, a2, Tangential(b2));
       double W_fine = 0.0;
       StepResult r;
       for (int k = 1; k <= 1000; ++k) {
-        r = fine->commit(0, a + (a2 - a) * k / 1000.0, b + (b2 - b) * k / 1000.0);
+        r = fine->commit(0, a + (a2 - a) * k / 1000.0, Tangential(b + (b2 - b) * k / 1000.0));
         W_fine += r.dW;
       }
       const double Wscale = p.mu * 1e22 * scale * scale * tm * scale;
       EXPECT_NEAR(one.dW, W_fine, 1e-9 * Wscale + 1e-9 * W_fine) << normal << " trial " << trial;
-      EXPECT_NEAR(one.T, r.T, 1e-9 * p.mu * 1e22 * scale * scale) << normal << " trial " << trial;
+      EXPECT_NEAR(one.T[0], r.T[0], 1e-9 * p.mu * 1e22 * scale * scale) << normal << " trial " << trial;
       EXPECT_NEAR(big->stored_energy(0), fine->stored_energy(0), 1e-9 * Wscale) << normal << " trial " << trial;
       EXPECT_GE(one.dW, 0.0);
     }

@@ -173,7 +173,7 @@ TEST(MmdPreloaded, TinyStepsKeepTheTangentialStiffness) {
     StepResult r;
     for (int k = 1; k <= 100; ++k) r = cell.commit(*c.law, c.cfg, a0, b_end * k / 100);
     const double u = b_end / c.tm, ref = c.p.mu * c.K * u * (2.0 * a0 - u);  // N = K a²
-    EXPECT_NEAR(r.T, ref, 1e-6 * ref) << "a0 " << a0;
+    EXPECT_NEAR(r.T[0], ref, 1e-6 * ref) << "a0 " << a0;
   }
 }
 

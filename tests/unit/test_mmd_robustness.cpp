@@ -30,8 +30,9 @@ TEST(MmdRobustness, MillionNoisyStepsStayBounded) {
     b = tm * s * (0.8 * std::sin(t)) + 0.03 * tm * s * noise(rng);
     const StepResult r = cell.commit(*law, cfg, a, b);
     const double N = law->eval(a).N;
-    ok = std::isfinite(r.T) && std::isfinite(r.dW) && r.dW >= 0.0 && std::abs(r.T) <= p.mu * N * (1 + 1e-9) + 1e-300;
-    EXPECT_TRUE(ok) << "step " << k << ": T = " << r.T << " muN = " << p.mu * N << " dW = " << r.dW;
+    const double T = r.T[0];
+    ok = std::isfinite(T) && std::isfinite(r.dW) && r.dW >= 0.0 && std::abs(T) <= p.mu * N * (1 + 1e-9) + 1e-300;
+    EXPECT_TRUE(ok) << "step " << k << ": T = " << r.T[0] << " muN = " << p.mu * N << " dW = " << r.dW;
     max_points = std::max(max_points, cell.breakpoints());
   }
   // Documented bound: -crack_mmd_max_breakpoints (1024 by default).
@@ -47,14 +48,14 @@ TEST(MmdRobustness, TrialNeverChangesTheCommittedState) {
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   double a = 1e-8, b = 0.0;
   for (int k = 0; k < 20000; ++k) {
-    for (int stage = 0; stage < 4; ++stage) probe->trial(0, a + 1e-9 * U(rng), b + 1e-9 * U(rng));
+    for (int stage = 0; stage < 4; ++stage) probe->trial(0, a + 1e-9 * U(rng), Tangential(b + 1e-9 * U(rng)));
     a = std::max(-2e-9, a + 2e-10 * U(rng));
     b += 5e-10 * U(rng);
-    const Traction t = probe->trial(0, a, b);
-    const StepResult r1 = probe->commit(0, a, b), r2 = plain->commit(0, a, b);
-    ASSERT_EQ(r1.T, r2.T);
+    const Traction t = probe->trial(0, a, Tangential(b));
+    const StepResult r1 = probe->commit(0, a, Tangential(b)), r2 = plain->commit(0, a, Tangential(b));
+    ASSERT_EQ(r1.T[0], r2.T[0]);
     ASSERT_EQ(r1.dW, r2.dW);
-    ASSERT_EQ(t.T, r1.T);
+    ASSERT_EQ(t.T[0], r1.T[0]);
     ASSERT_EQ(t.N, r1.N);
   }
 }
@@ -64,8 +65,8 @@ TEST(MmdRobustness, FrictionlessMmdNeverDissipates) {
   p.mu = 0.0;
   auto law = testing::one_cell(p, 1e-8, 0.0);
   for (int k = 0; k < 1000; ++k) {
-    const StepResult r = law->commit(0, 1e-8 * (0.5 + std::sin(0.1 * k)), 1e-8 * std::cos(0.13 * k));
-    ASSERT_EQ(r.T, 0.0);
+    const StepResult r = law->commit(0, 1e-8 * (0.5 + std::sin(0.1 * k)), Tangential(1e-8 * std::cos(0.13 * k)));
+    ASSERT_EQ(r.T[0], 0.0);
     ASSERT_EQ(r.dW, 0.0);
   }
   EXPECT_FALSE(law->can_dissipate());

@@ -1,11 +1,12 @@
 // A crack law: per contact cell, half displacements (a, b) → tractions (N, T),
-// with history committed once per accepted time step (PHYSICS.md §3).
+// with history committed once per accepted time step (PHYSICS.md §3). b and T
+// are tangential vectors: one component in 2D, two in 3D (§3.5).
 //
 // This is the contract between the contact library and the interface module:
 // trial() is a pure function of the committed state (called at every RHS
 // evaluation and stage), commit() advances the history and returns the energy
 // dissipated in the step. Signs: N compressive positive; T has the sign of the
-// elastic tangential displacement; the interface absorbs 2(N ȧ + T ḃ).
+// elastic tangential displacement; the interface absorbs 2(N ȧ + T·ḃ).
 #pragma once
 
 #include <cstddef>
@@ -16,11 +17,12 @@
 
 #include "vibrotherm/contact/contact_parameter_list.hpp"
 #include "vibrotherm/contact/memory_diagram.hpp"
+#include "vibrotherm/contact/tangential.hpp"
 
 namespace vibrotherm::contact {
 
-/// Tangent stiffnesses dN/da and dT/db (half-displacement units) for the
-/// stable time-step bound.
+/// Tangent stiffnesses dN/da and dT_k/db_k (half-displacement units, the same
+/// for every tangential component) for the stable time-step bound.
 struct CellStiffness {
   double normal = 0.0, tangential = 0.0;
 };
@@ -30,17 +32,21 @@ class CrackLaw {
   virtual ~CrackLaw() = default;
   virtual std::string name() const = 0;
 
-  /// Allocates `cells` cells, each in its virgin state at (a[i], b[i]).
-  virtual void initialize(std::size_t cells, const double* a, const double* b) = 0;
+  /// Allocates `cells` cells, each in its virgin state at (a[i], b[i]). The
+  /// b[i] have the problem's tangential components (1 in 2D, 2 in 3D); every
+  /// later b has as many. InputError naming -crack_law if the law has no rule
+  /// for that many.
+  virtual void initialize(std::size_t cells, const double* a, const Tangential* b) = 0;
   virtual std::size_t cells() const = 0;
 
-  virtual Traction trial(std::size_t cell, double a, double b) const = 0;
-  virtual StepResult commit(std::size_t cell, double a, double b) = 0;
+  /// Tractions at (a, b) from the committed state; T has b's components.
+  virtual Traction trial(std::size_t cell, double a, const Tangential& b) const = 0;
+  virtual StepResult commit(std::size_t cell, double a, const Tangential& b) = 0;
 
   /// Stored interface energy of the committed state [J/m²].
   virtual double stored_energy(std::size_t cell) const = 0;
   /// Accumulated full-slip offset b0 of the committed state.
-  virtual double slip_offset(std::size_t cell) const = 0;
+  virtual Tangential slip_offset(std::size_t cell) const = 0;
   virtual CellStiffness stiffness(std::size_t cell, double a) const = 0;
 
   /// False when the law can never dissipate (open, linear, clapping, μ = 0):
@@ -48,7 +54,8 @@ class CrackLaw {
   virtual bool can_dissipate() const = 0;
   /// False for a law that never transmits any traction (open).
   virtual bool has_contact() const = 0;
-  /// The bound |T| ≤ friction_bound() · N the law keeps (μ; +∞ for laws without friction limit).
+  /// The bound |T| ≤ friction_bound() · N the law keeps, |T| the Euclidean length (μ; +∞ for
+  /// laws without friction limit).
   virtual double friction_bound() const = 0;
 
   /// The committed state of a cell as numbers (checkpoints), and back bit for
@@ -57,10 +64,12 @@ class CrackLaw {
   virtual void restore_state(std::size_t cell, const double* values, std::size_t n) = 0;
 };
 
-/// save_state / restore_state of a law whose state is one value per cell in each of `columns`.
-std::vector<double> save_cell_values(std::size_t cell, std::initializer_list<const std::vector<double>*> columns);
-void restore_cell_values(std::size_t cell, const double* values, std::size_t n,
-                         std::initializer_list<std::vector<double>*> columns);
+/// save_state / restore_state of a law whose cell state is some numbers and some
+/// tangential vectors: the numbers, then each vector's components (restore_cell_state
+/// takes the component counts from the vectors it fills).
+std::vector<double> save_cell_state(std::initializer_list<double> numbers, std::initializer_list<Tangential> vectors);
+void restore_cell_state(const double* values, std::size_t n, std::initializer_list<double*> numbers,
+                        std::initializer_list<Tangential*> vectors);
 
 using CrackLawFactory = std::unique_ptr<CrackLaw> (*)(const ContactParameters&);
 

@@ -25,4 +25,10 @@ struct CsvRow {
 std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option,
                                   const std::vector<std::string>& columns);
 
+/// The same, where a header line may add the `optional` columns after `columns`
+/// (e.g. "t,a,b,b2"); the rows then have all of them. Without such a header the
+/// rows have `columns` only.
+std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& option,
+                                  std::vector<std::string> columns, const std::vector<std::string>& optional);
+
 }  // namespace vibrotherm::contact

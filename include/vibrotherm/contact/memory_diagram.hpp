@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "vibrotherm/contact/normal_law.hpp"
+#include "vibrotherm/contact/tangential.hpp"
 
 namespace vibrotherm::contact {
 
@@ -34,11 +35,12 @@ const char* to_string(ContactState state);
 
 struct Traction {
   double N = 0.0;  ///< normal traction, compressive positive [Pa]
-  double T = 0.0;  ///< tangential traction [Pa]
+  Tangential T;    ///< tangential traction [Pa], as many components as b
 };
 
 struct StepResult {
-  double N = 0.0, T = 0.0;
+  double N = 0.0;
+  Tangential T;
   double dW = 0.0;  ///< energy dissipated in the step [J/m²], >= 0
   ContactState state = ContactState::Loss;
 };

@@ -6,7 +6,7 @@ namespace {
 using H = HistoryOptions;
 using contact::Range;
 
-/// The sinusoid of one displacement (a or b).
+/// The sinusoid of one displacement (a, b or b2).
 struct SineFields {
   const char *x, *what, *default_amplitude, *default_offset;
   double H::*amplitude;
@@ -34,7 +34,8 @@ void append_sine(std::vector<contact::Parameter<H>>& list, const SineFields& f) 
 std::vector<contact::Parameter<H>> make_history_parameters() {
   std::vector<contact::Parameter<H>> list = {
       contact::text_parameter("-history", &H::file,
-                              "CSV file with columns t,a,b (t [s], a, b [m]); without it, the built-in sinusoids"),
+                              "CSV file with columns t,a,b (t [s], a, b [m]), or t,a,b,b2 (header line needed) for two "
+                              "tangential components; without it, the built-in sinusoids"),
       contact::text_parameter("-cell_history", &H::cell_file, "the same as -history"),
       contact::text_parameter("-o", &H::output, "output CSV file (default: standard output)"),
   };
@@ -42,6 +43,8 @@ std::vector<contact::Parameter<H>> make_history_parameters() {
                      &H::a_rate});
   append_sine(list, {"b", "tangential half displacement b", "5e-9", "0", &H::b_amplitude, &H::b_offset,
                      &H::b_phase, &H::b_rate});
+  append_sine(list, {"b2", "second tangential half displacement b2 (two components unless zero)", "0", "0",
+                     &H::b2_amplitude, &H::b2_offset, &H::b2_phase, &H::b2_rate});
   list.push_back(contact::real_parameter("-history_frequency", &H::frequency, "1e5", Range::positive(), "Hz",
                                          "built-in history: frequency"));
   list.push_back(contact::real_parameter("-history_cycles", &H::cycles, "2", Range::positive(), "",
@@ -66,6 +69,7 @@ contact::SineHistory HistoryOptions::sine() const {
   contact::SineHistory h;
   h.a = {a_amplitude, a_offset, a_phase, a_rate};
   h.b = {b_amplitude, b_offset, b_phase, b_rate};
+  h.b2 = {b2_amplitude, b2_offset, b2_phase, b2_rate};
   h.frequency = frequency;
   h.cycles = cycles;
   h.steps_per_cycle = steps_per_cycle;

@@ -15,9 +15,11 @@ struct HistoryOptions {
 
   std::string file, cell_file;  ///< -history, -cell_history (the same option)
   std::string output;           ///< -o ("": standard output)
-  /// -history_{a,b}_{amplitude,offset,phase,rate}: the sinusoids of a and b.
+  /// -history_{a,b,b2}_{amplitude,offset,phase,rate}: the sinusoids of a, b and
+  /// the second tangential component b2 (zero: one component).
   double a_amplitude, a_offset, a_phase, a_rate;
   double b_amplitude, b_offset, b_phase, b_rate;
+  double b2_amplitude, b2_offset, b2_phase, b2_rate;
   double frequency, cycles, ramp_cycles;
   int steps_per_cycle;
 

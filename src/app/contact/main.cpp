@@ -1,5 +1,7 @@
 // vibrotherm-contact: drives one contact cell through a prescribed (t, a, b)
-// history with the simulator's crack-law options, for calibrating laws.
+// history with the simulator's crack-law options, for calibrating laws. A
+// second tangential component b2 (CSV column or -history_b2_*) drives the law
+// with two components, as in 3D.
 //
 //   vibrotherm-contact -history in.csv -o out.csv -crack_law mmd -contact_mu 1
 //   vibrotherm-contact -history_b_amplitude 5e-9 -history_a_offset 1e-8 ...
@@ -35,7 +37,9 @@ void print_laws(std::ostream& out, const char* title, const std::vector<Entry>& 
 void print_help(std::ostream& out) {
   out << "vibrotherm-contact: one contact cell driven through a (t, a, b) history; writes\n"
          "t,a,b,b0,btilde,N,T,state,dW,W rows (a, b: half normal approach and tangential\n"
-         "displacement [m]; N, T tractions [Pa]; dW, W dissipated energy [J/m^2]).\n\n";
+         "displacement [m]; N, T tractions [Pa]; dW, W dissipated energy [J/m^2]). With a\n"
+         "second tangential component b2 (two components, as in 3D; coulomb, linear,\n"
+         "clapping, open): t,a,b,b2,b0,b02,btilde,btilde2,N,T,T2,state,dW,W.\n\n";
   print_laws(out, "Crack laws (-crack_law):", contact::crack_laws());
   print_laws(out, "Normal laws (-contact_normal_law):", contact::normal_laws());
   out << "\nContact options <default>:\n";
