@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "vibrotherm/geometry/crack_facet.hpp"
 #include "vibrotherm/geometry/frame.hpp"
 
 namespace vibrotherm::interface {
@@ -19,11 +20,7 @@ namespace vibrotherm::interface {
 using geometry::Vec2;
 
 /// A crack facet as every rank knows it.
-struct CrackFacetGeometry {
-  long id = 0;    ///< crack_face id
-  int crack = 0;  ///< 0-based
-  Vec2 p0{}, p1{};
-};
+using CrackFacetGeometry = geometry::CrackFacet;
 
 /// A crack's direction (unit, first facet → last), centre and length.
 struct CrackFrame {
