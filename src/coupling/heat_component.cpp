@@ -25,7 +25,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   if (scene.run.physics == PhysicsChoice::Heat) {
     PetscCheck(ncracks > 0 || scene.run.heat_crack_power == 0.0, comm, PETSC_ERR_USER_INPUT,
                "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
-    PetscCall(solver_.SetCrackPower(std::vector<double>(ncracks, scene.run.heat_crack_power)));
+    PetscCall(solver_.SetCrackPower(specimen.heat_cracks, std::vector<double>(ncracks, scene.run.heat_crack_power)));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
     PetscCall(friction->Setup(waves->crack(), waves->solver().space(), specimen.wave_cracks, solver_.space(),
