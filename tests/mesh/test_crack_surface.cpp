@@ -28,7 +28,9 @@ void ExpectFacetsOnce(DM dm, const mesh::CrackSurface& surface, bool split) {
   std::set<long> ids;
   for (const geometry::CrackFacet& f : surface.facets()) EXPECT_TRUE(ids.insert(f.id).second) << "id " << f.id;
   EXPECT_EQ(ids.size(), surface.facets().size());
-  if (!ids.empty()) EXPECT_EQ(*ids.rbegin() + 1, static_cast<long>(ids.size())) << "ids 0 .. n − 1";
+  if (!ids.empty()) {
+    EXPECT_EQ(*ids.rbegin() + 1, static_cast<long>(ids.size())) << "ids 0 .. n − 1";
+  }
   long owned = static_cast<long>(surface.owned().size());
   MPI_Allreduce(MPI_IN_PLACE, &owned, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
   EXPECT_EQ(owned, static_cast<long>(surface.facets().size()));
