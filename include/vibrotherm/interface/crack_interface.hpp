@@ -89,7 +89,8 @@ class CrackInterface final : public wave::WaveInterface {
   double seconds() const { return seconds_; }
 
  private:
-  PetscErrorCode BuildCells(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks, const ApproachProfile& a0);
+  PetscErrorCode BuildCells(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks,
+                            const ApproachProfile& a0);
   PetscErrorCode BuildTransfer(const std::vector<PetscInt>& dofs, Vec lumped_mass);
   void InitialState();
   /// ± displacements of every cell, [u⁺x u⁺y u⁻x u⁻y] per cell: *U points into
