@@ -6,8 +6,6 @@
 #include <cmath>
 
 #include "vibrotherm/heat/step_ladder.hpp"
-#include "vibrotherm/mesh/plex/labels.hpp"
-#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::heat {
 
@@ -76,7 +74,6 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   for (Vec v : {theta_, theta_prev_, Q_, G_, H_}) PetscCall(VecSet(v, 0.0));
   PetscCall(AddConvectiveFilm());
   PetscCall(VecGetSize(theta_, &global_dofs_));
-  PetscCall(CollectCrackFacets());
   // Backward Euler while coupled, -heat_substeps fixed steps per coupling interval,
   // each with its own friction energy. The source jumps at every step and the
   // layers at the crack are stiff (λΔt ≫ 1): Crank-Nicolson rings there (+27 %
@@ -145,29 +142,6 @@ PetscErrorCode HeatSolver::AddConvectiveFilm() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::CollectCrackFacets() {
-  PetscFunctionBeginUser;
-  // Crack facets this rank owns (each facet counted once), with their face weights.
-  DMLabel cracks;
-  PetscCall(DMGetLabel(dm_, mesh::labels::crack, &cracks));
-  std::vector<bool> ghost;
-  PetscCall(mesh::GhostPoints(dm_, &ghost));
-  PetscInt chart0, fStart, fEnd;
-  PetscCall(DMPlexGetChart(dm_, &chart0, nullptr));
-  PetscCall(mesh::FacetRange(dm_, &fStart, &fEnd));
-  facets_.clear();
-  for (PetscInt f = fStart; f < fEnd && cracks; ++f) {
-    PetscInt crack;
-    PetscCall(DMLabelGetValue(cracks, f, &crack));
-    if (crack < 1 || ghost[f - chart0]) continue;
-    FacetLoad load{crack - 1, {}, {}};
-    double length;
-    PetscCall(space_.FaceNodes(f, &load.local_offsets, &load.weights, &length));
-    facets_.push_back(std::move(load));
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts) {
   PetscFunctionBeginUser;
   Mat J;  // the pattern of the assembled K (and M, assembled from the same closures)
@@ -230,7 +204,7 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::SetCrackPower(const std::vector<double>& power) {
+PetscErrorCode HeatSolver::SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(source_event_, 0, 0, 0, 0));
   Vec local;
@@ -238,10 +212,15 @@ PetscErrorCode HeatSolver::SetCrackPower(const std::vector<double>& power) {
   PetscCall(VecSet(local, 0.0));
   PetscScalar* q;
   PetscCall(VecGetArray(local, &q));
-  for (const FacetLoad& f : facets_) {
-    PetscCheck(f.crack < static_cast<PetscInt>(power.size()), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
-               "crack power given for %zu cracks, crack %" PetscInt_FMT " exists", power.size(), f.crack + 1);
-    for (std::size_t j = 0; j < f.local_offsets.size(); ++j) q[f.local_offsets[j]] += power[f.crack] * f.weights[j];
+  std::vector<PetscInt> offsets;
+  std::vector<double> weights;
+  for (const mesh::OwnedCrackFacet& owned : cracks.owned()) {
+    const int crack = cracks.facets()[owned.index].crack;
+    PetscCheck(crack < static_cast<int>(power.size()), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+               "crack power given for %zu cracks, crack %d exists", power.size(), crack + 1);
+    double length;
+    PetscCall(space_.FaceNodes(owned.facet, &offsets, &weights, &length));
+    for (std::size_t j = 0; j < offsets.size(); ++j) q[offsets[j]] += power[crack] * weights[j];
   }
   PetscCall(VecRestoreArray(local, &q));
   PetscCall(VecSet(Q_, 0.0));

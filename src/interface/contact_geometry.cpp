@@ -7,7 +7,7 @@
 namespace vibrotherm::interface {
 namespace {
 
-double Length(const CrackFacetGeometry& f) { return std::hypot(f.p1[0] - f.p0[0], f.p1[1] - f.p0[1]); }
+double Length(const CrackFacetGeometry& f) { return geometry::Norm(geometry::Sub(f.p1, f.p0)); }
 
 /// Lumped ∫φ ds of a vertex node per unit facet length: P1 1/2, P2 (Simpson) 1/6.
 double EndWeight(int degree) { return degree == 2 ? 1.0 / 6.0 : 0.5; }
@@ -56,10 +56,8 @@ ContactGeometry::ContactGeometry(const std::vector<CrackFacetGeometry>& facets, 
 
 Vec2 ContactGeometry::tangent(const CrackFacetGeometry& f) const {
   const CrackFrame& fr = frames_.at(f.crack);
-  const double L = Length(f);
-  Vec2 s = {(f.p1[0] - f.p0[0]) / L, (f.p1[1] - f.p0[1]) / L};
-  if (s[0] * fr.direction[0] + s[1] * fr.direction[1] < 0) s = {-s[0], -s[1]};
-  return s;
+  const Vec2 s = geometry::Normalized(geometry::Sub(f.p1, f.p0));
+  return geometry::Dot(s, fr.direction) < 0 ? geometry::Scale(-1.0, s) : s;
 }
 
 NodeGeometry ContactGeometry::vertex(const Vec2& p) const {

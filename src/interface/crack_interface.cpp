@@ -7,57 +7,11 @@
 #include <map>
 
 #include "vibrotherm/interface/contact_geometry.hpp"
-#include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::interface {
 namespace {
-
-/// A cohesive cell of this rank with the geometry every rank learns of it.
-struct LocalFacet {
-  PetscInt cohesive;
-  CrackFacetGeometry geometry;
-};
-
-/// This rank's cohesive cells and every rank's facets (a few hundred). Collective.
-PetscErrorCode CollectFacets(DM dm, std::vector<LocalFacet>* local, std::vector<CrackFacetGeometry>* all) {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
-  DMLabel crack_label, facet_label;
-  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
-  PetscCall(DMGetLabel(dm, mesh::labels::crack_face, &facet_label));
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  std::vector<double> mine;  // id, crack, x0, y0, x1, y1
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool cohesive;
-    PetscCall(mesh::IsCohesiveCell(dm, c, &cohesive));
-    if (!cohesive) continue;
-    const PetscInt *cone, *fv;
-    PetscCall(DMPlexGetCone(dm, c, &cone));
-    PetscInt id, crack;
-    PetscCall(DMLabelGetValue(facet_label, cone[0], &id));
-    PetscCall(DMLabelGetValue(crack_label, cone[0], &crack));
-    PetscCall(DMPlexGetCone(dm, cone[0], &fv));
-    const CrackFacetGeometry g{id, static_cast<int>(crack - 1), x(fv[0]), x(fv[1])};
-    local->push_back({c, g});
-    mine.insert(mine.end(), {double(g.id), double(g.crack), g.p0[0], g.p0[1], g.p1[0], g.p1[1]});
-  }
-  PetscMPIInt size;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  std::vector<double> flat(displs.back() + counts.back());
-  PetscCallMPI(MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, flat.data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
-  for (std::size_t k = 0; k + 6 <= flat.size(); k += 6)
-    all->push_back({std::lround(flat[k]), static_cast<int>(flat[k + 1]), {flat[k + 2], flat[k + 3]}, {flat[k + 4], flat[k + 5]}});
-  PetscFunctionReturn(0);
-}
 
 /// Which face of a cohesive cell is +: the one whose bulk neighbour lies along n.
 PetscErrorCode PlusFace(DM dm, const mesh::VertexCoordinates& x, PetscInt cohesive, const CrackFacetGeometry& g,
@@ -107,7 +61,7 @@ CrackInterface::~CrackInterface() {
   for (Vec* v : {&u_local_, &f_local_}) (void)VecDestroy(v);
 }
 
-PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_mass,
+PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks, Vec lumped_mass,
                                      std::unique_ptr<contact::CrackLaw> law, const ApproachProfile& a0) {
   PetscFunctionBeginUser;
   comm_ = PetscObjectComm((PetscObject)space.dm());
@@ -116,7 +70,7 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
   PetscCall(PetscLogEventRegister("CrackForces", id, &force_event_));
   PetscCall(PetscLogEventRegister("CrackCommit", id, &commit_event_));
   law_ = std::move(law);
-  PetscCall(BuildCells(space, a0));
+  PetscCall(BuildCells(space, cracks, a0));
   PetscInt local_count = static_cast<PetscInt>(cells_.size());
   PetscCallMPI(MPI_Allreduce(&local_count, &global_cells_, 1, MPIU_INT, MPI_SUM, comm_));
   PetscSection global;
@@ -135,13 +89,11 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, Vec lumped_
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const ApproachProfile& a0) {
+PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks,
+                                          const ApproachProfile& a0) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
-  std::vector<LocalFacet> local;
-  std::vector<CrackFacetGeometry> all;
-  PetscCall(CollectFacets(dm, &local, &all));
-  const ContactGeometry geometry(all, static_cast<int>(space.degree()));
+  const ContactGeometry geometry(cracks.facets(), static_cast<int>(space.degree()));
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
   std::vector<bool> ghost;
@@ -149,21 +101,22 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
   PetscInt chart0;
   PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
   std::map<PetscInt, ContactCell> by_point;  // one cell per tensor edge (vertex pair) or cohesive cell (mid-side pair)
-  for (const LocalFacet& f : local) {
+  for (const mesh::OwnedCrackFacet& owned : cracks.owned()) {  // cohesive cells (never ghosts)
+    const CrackFacetGeometry& f = cracks.facets()[owned.index];
     const PetscInt* cone;
-    PetscCall(DMPlexGetCone(dm, f.cohesive, &cone));
+    PetscCall(DMPlexGetCone(dm, owned.cell, &cone));
     int plus = 0;
-    PetscCall(PlusFace(dm, x, f.cohesive, f.geometry, ContactGeometry::normal(geometry.tangent(f.geometry)), &plus));
-    if (geometry.degree() == 2) {  // the two faces' edge nodes (cohesive cells are never ghosts)
-      const Vec2 mid = {0.5 * (f.geometry.p0[0] + f.geometry.p1[0]), 0.5 * (f.geometry.p0[1] + f.geometry.p1[1])};
-      by_point[f.cohesive] = MakeCell(cone[plus], cone[1 - plus], f.geometry.crack, mid, geometry.middle(f.geometry));
+    PetscCall(PlusFace(dm, x, owned.cell, f, ContactGeometry::normal(geometry.tangent(f)), &plus));
+    if (geometry.degree() == 2) {  // the two faces' edge nodes
+      const Vec2 mid = {0.5 * (f.p0[0] + f.p1[0]), 0.5 * (f.p0[1] + f.p1[1])};
+      by_point[owned.cell] = MakeCell(cone[plus], cone[1 - plus], f.crack, mid, geometry.middle(f));
     }
     for (int k = 2; k < 4; ++k) {
       const PetscInt* pair;
       PetscCall(DMPlexGetCone(dm, cone[k], &pair));
       if (pair[0] == pair[1] || ghost[cone[k] - chart0]) continue;  // buried tip, or another rank's node
       const Vec2 p = x(pair[0]);
-      by_point[cone[k]] = MakeCell(pair[plus], pair[1 - plus], f.geometry.crack, p, geometry.vertex(p));
+      by_point[cone[k]] = MakeCell(pair[plus], pair[1 - plus], f.crack, p, geometry.vertex(p));
     }
   }
   cells_.clear();

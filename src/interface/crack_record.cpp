@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "vibrotherm/util/all_gather.hpp"
+
 namespace vibrotherm::interface {
 namespace {
 
@@ -34,15 +36,8 @@ PetscErrorCode GatherCrackRecords(MPI_Comm comm, const std::vector<CrackCellReco
     const auto packed = Pack(r);
     local.insert(local.end(), packed.begin(), packed.end());
   }
-  PetscMPIInt size, rank;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  std::vector<double> all(rank == 0 ? displs.back() + counts.back() : 0);
-  PetscCallMPI(MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  std::vector<double> all;
+  PetscCall(util::GatherToRoot(comm, local, &all));
   on_root->clear();
   for (std::size_t k = 0; k + kFields <= all.size(); k += kFields) on_root->push_back(Unpack(&all[k]));
   const bool slotted = std::all_of(on_root->begin(), on_root->end(), [](const CrackCellRecord& r) { return r.slot >= 0; });

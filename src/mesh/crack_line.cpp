@@ -1,52 +1,15 @@
 #include "vibrotherm/mesh/crack_line.hpp"
 
-#include <petscdmplex.h>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "vibrotherm/mesh/plex/labels.hpp"
-#include "vibrotherm/mesh/plex/plex_access.hpp"
-
 namespace vibrotherm::mesh {
 
-PetscErrorCode CrackLine::Setup(DM dm, PetscInt crack) {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  DMLabel crack_label, ids;
-  PetscCall(DMGetLabel(dm, labels::crack, &crack_label));
-  PetscCall(DMGetLabel(dm, labels::crack_face, &ids));
-  std::vector<bool> ghost;
-  PetscCall(GhostPoints(dm, &ghost));
-  VertexCoordinates x;
-  PetscCall(x.Setup(dm));
-  PetscInt chart0, fStart, fEnd;
-  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(FacetRange(dm, &fStart, &fEnd));
-  // Per owned facet of this crack: id, x0, y0, x1, y1. On a split mesh both
-  // faces carry the id; they have the same coordinates, so duplicates are harmless.
-  std::vector<double> mine;
-  for (PetscInt f = fStart; f < fEnd && crack_label && ids; ++f) {
-    PetscInt c, id;
-    PetscCall(DMLabelGetValue(crack_label, f, &c));
-    PetscCall(DMLabelGetValue(ids, f, &id));
-    if (c != crack + 1 || id < 0 || ghost[f - chart0]) continue;
-    const PetscInt* cone;
-    PetscCall(DMPlexGetCone(dm, f, &cone));
-    const auto a = x(cone[0]), b = x(cone[1]);
-    mine.insert(mine.end(), {static_cast<double>(id), a[0], a[1], b[0], b[1]});
-  }
-  PetscMPIInt size, count = static_cast<PetscMPIInt>(mine.size());
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  std::vector<PetscMPIInt> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  std::vector<double> all(displs[size - 1] + counts[size - 1]);
-  PetscCallMPI(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
+void CrackLine::Build(const std::vector<geometry::CrackFacet>& all, int crack) {
   std::map<long, std::array<double, 4>> facets;  // ordered by id
-  for (std::size_t k = 0; k + 5 <= all.size(); k += 5)
-    facets[std::lround(all[k])] = {all[k + 1], all[k + 2], all[k + 3], all[k + 4]};
+  for (const geometry::CrackFacet& f : all)
+    if (f.crack == crack && f.id >= 0) facets[f.id] = {f.p0[0], f.p0[1], f.p1[0], f.p1[1]};
   points_.clear();
   arc_.clear();
   ids_.clear();
@@ -73,7 +36,6 @@ PetscErrorCode CrackLine::Setup(DM dm, PetscInt crack) {
     points_.push_back(far);
     arc_.push_back(length_);
   }
-  PetscFunctionReturn(0);
 }
 
 std::array<double, 2> CrackLine::At(double xi) const {

@@ -155,7 +155,7 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
       ++bulk;
       corners = cone_size;
       for (PetscInt k = 0; k < cone_size; ++k) {
-        double h;
+        double h = 0.0;
         PetscCall(EdgeLength(x, dm, cone[k], &h));
         h_min = std::min(h_min, h);
         h_max = std::max(h_max, h);
@@ -167,10 +167,6 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
     PetscCall(DMLabelGetValue(crack, cone[0], &id));
     PetscCheck(id >= 1 && id <= static_cast<PetscInt>(nc), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "cohesive cell %" PetscInt_FMT " has no crack label", c);
-    ++facets[id - 1];
-    double facet;
-    PetscCall(EdgeLength(x, dm, cone[0], &facet));
-    length[id - 1] += facet;
     for (PetscInt k = 2; k < 4; ++k) {  // tensor edges: (side A, side B) vertex pairs
       const PetscInt* pair;
       PetscCall(DMPlexGetCone(dm, cone[k], &pair));
@@ -178,6 +174,11 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
     }
   }
   PetscCall(CountCrackTips(dm, crack, tip, ghost, chart0, &tips));
+  for (const OwnedCrackFacet& owned : specimen.wave_cracks.owned()) {  // this rank's cohesive cells, in order
+    const geometry::CrackFacet& f = specimen.wave_cracks.facets()[owned.index];
+    ++facets[f.crack];
+    length[f.crack] += geometry::Measure(f);
+  }
 
   PetscCallMPI(MPI_Allreduce(&bulk, &s->cells, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&cohesive, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));

@@ -263,6 +263,9 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(Distribute(&s->wave, "wave_mesh", &s->wave_origin));
   PetscCall(Distribute(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
+  const PetscInt ncracks = static_cast<PetscInt>(s->cracks.size());
+  PetscCall(s->wave_cracks.Setup(s->wave, ncracks));
+  PetscCall(s->heat_cracks.Setup(s->heat, ncracks));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -329,6 +332,8 @@ PetscErrorCode SpecimenDestroy(Specimen* s) {
   PetscCall(DMDestroy(&s->wave));
   PetscCall(DMDestroy(&s->heat));
   s->cracks.clear();
+  s->wave_cracks = CrackSurface{};
+  s->heat_cracks = CrackSurface{};
   PetscFunctionReturn(0);
 }
 

@@ -107,7 +107,7 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::CellsNearCracks(const std::vector<mesh::CrackLine>& cracks, double radius,
+PetscErrorCode ModalAnalysis::CellsNearCracks(const mesh::CrackSurface& cracks, double radius,
                                               std::vector<bool>* near) const {
   PetscFunctionBeginUser;
   mesh::VertexCoordinates x;
@@ -116,7 +116,7 @@ PetscErrorCode ModalAnalysis::CellsNearCracks(const std::vector<mesh::CrackLine>
   for (PetscInt c : space_.cells()) {
     std::array<double, 2> centre;
     PetscCall(mesh::CellCentroid(space_.dm(), x, c, &centre));
-    near->push_back(std::any_of(cracks.begin(), cracks.end(), [&](const mesh::CrackLine& crack) {
+    near->push_back(std::any_of(cracks.lines().begin(), cracks.lines().end(), [&](const mesh::CrackLine& crack) {
       return crack.Distance(centre[0], centre[1]) <= radius;
     }));
   }
@@ -154,7 +154,7 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<boo
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const std::vector<mesh::CrackLine>& cracks) {
+PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const mesh::CrackSurface& cracks) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)K_);
   PetscLogEvent solve_event;
@@ -212,7 +212,7 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const std::vect
     Mode mode{std::sqrt(std::max(PetscRealPart(lambda), 0.0)) / (2.0 * M_PI), NAN, error};
     // A rigid motion (a free specimen's zero mode) strains nothing: no participation.
     const bool rigid = mode.frequency < 1e-3 * options.target_frequency;
-    if (!rigid && !cracks.empty()) PetscCall(DefectParticipation(shape, near, &mode.participation));
+    if (!rigid && cracks.crack_count() > 0) PetscCall(DefectParticipation(shape, near, &mode.participation));
     found.push_back({mode, shape});
   }
   std::sort(found.begin(), found.end(),

@@ -10,12 +10,9 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
   const wave::ElasticMaterial& material = scene.material;
   const wave::Excitation& excitation = scene.excitation;
   const wave::WaveOptions& wave_options = scene.wave;
-  cracks_.resize(specimen.cracks.size());
   double longest = 0.0;
-  for (std::size_t i = 0; i < cracks_.size(); ++i) {
-    PetscCall(cracks_[i].Setup(specimen.wave, static_cast<PetscInt>(i)));
-    longest = std::max(longest, cracks_[i].length());
-  }
+  for (PetscInt i = 0; i < specimen.wave_cracks.crack_count(); ++i)
+    longest = std::max(longest, specimen.wave_cracks.line(i).length());
   PetscCall(modes::ReadModesOptions(comm, excitation.signal.frequency, longest / 2, &options_));
   PetscLogStage stage;
   PetscCall(PetscLogStageRegister("Modes", &stage));
@@ -26,7 +23,7 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
                         " modes near %g Hz, defect radius %g m\n",
                         analysis_.dofs(), wave_options.degree, options_.n, options_.target_frequency,
                         options_.defect_radius));
-  PetscCall(analysis_.Solve(options_, cracks_));
+  PetscCall(analysis_.Solve(options_, specimen.wave_cracks));
   PetscCall(PetscLogStagePop());
   summary->stages["modes"] = MPI_Wtime() - t0;
   summary->physics_ran = {"modes"};

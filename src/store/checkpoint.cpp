@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "vibrotherm/store/atomic_file.hpp"
+#include "vibrotherm/util/all_gather.hpp"
 
 namespace vibrotherm::store {
 namespace {
@@ -161,34 +162,22 @@ void Checkpoint::Extract(const std::string& prefix, Checkpoint* inner) const {
 
 PetscErrorCode Checkpoint::Gathered(const Table& mine, Table* all) const {
   PetscFunctionBeginUser;
-  PetscMPIInt rank, size;
+  PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
-  PetscCallMPI(MPI_Comm_size(comm_, &size));
   all->kind = mine.kind;
   all->text = mine.text;
   if (mine.kind == kShared || mine.kind == kText) {  // every rank holds the same: rank 0's
     all->keys = mine.keys, all->counts = mine.counts, all->values = mine.values;
     PetscFunctionReturn(0);
   }
-  const auto gather = [&](const void* data, int n, MPI_Datatype type, std::size_t bytes, std::vector<char>* out) {
-    std::vector<int> counts(size), displs(size, 0);
-    PetscCallMPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_));
-    for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-    out->resize(rank == 0 ? (displs.back() + counts.back()) * bytes : 0);
-    PetscCallMPI(MPI_Gatherv(data, n, type, out->data(), counts.data(), displs.data(), type, 0, comm_));
-    return PetscErrorCode(0);
-  };
-  std::vector<char> keys, counts, values;
-  PetscCall(gather(mine.keys.data(), static_cast<int>(mine.keys.size()), MPI_LONG_LONG, sizeof(long long), &keys));
-  PetscCall(gather(mine.counts.data(), static_cast<int>(mine.counts.size()), MPI_LONG_LONG, sizeof(long long), &counts));
-  PetscCall(gather(mine.values.data(), static_cast<int>(mine.values.size()), MPI_DOUBLE, sizeof(double), &values));
+  std::vector<long long> k, c;
+  std::vector<double> v;
+  PetscCall(util::GatherToRoot(comm_, mine.keys, &k));
+  PetscCall(util::GatherToRoot(comm_, mine.counts, &c));
+  PetscCall(util::GatherToRoot(comm_, mine.values, &v));
   if (rank != 0) PetscFunctionReturn(0);
-  const std::size_t n = keys.size() / sizeof(long long);
-  std::vector<long long> k(n), c(n), offset(n + 1, 0);
-  std::memcpy(k.data(), keys.data(), keys.size());
-  std::memcpy(c.data(), counts.data(), counts.size());
-  std::vector<double> v(values.size() / sizeof(double));
-  std::memcpy(v.data(), values.data(), values.size());
+  const std::size_t n = k.size();
+  std::vector<long long> offset(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + c[i];
   // Sorted by key: the file is the same whatever the partition.
   std::vector<std::size_t> order(n);

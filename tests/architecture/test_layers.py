@@ -13,7 +13,7 @@ import sys
 LAYERS = [
     "contact",            # crack laws, PETSc-free
     "options",            # command line and options files, PETSc-free
-    "util",               # errors, stages, version
+    "util",               # errors, stages, gathers across ranks, version
     "geometry",           # points and frames, PETSc-free
     "store",              # atomic files, the checkpoint store
     "options/petsc",      # PETSc option helpers and the option audit

@@ -35,7 +35,7 @@ TEST(HeatLineSource, MatchesCarslawJaeger) {
   const heat::HeatMaterial& mat = options.material;
   heat::HeatSolver solver;
   ASSERT_EQ(solver.Setup(s.specimen.heat, options), 0);
-  ASSERT_EQ(solver.SetCrackPower({q}), 0);
+  ASSERT_EQ(solver.SetCrackPower(s.specimen.heat_cracks, {q}), 0);
   const double rho_c = mat.density * mat.capacity, alpha = mat.diffusivity();
   for (double t : {1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {
     ASSERT_EQ(solver.AdvanceTo(t), 0);

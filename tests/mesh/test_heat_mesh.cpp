@@ -11,7 +11,7 @@
 #include <set>
 
 #include "mesh_test_support.hpp"
-#include "vibrotherm/mesh/crack_line.hpp"
+#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::testing {
@@ -100,8 +100,7 @@ TEST_P(HeatMesh, IsGradedToEveryCrack) {
   EXPECT_GE(thinnest, 0.99 * kFirstLayer) << scene.name;
   EXPECT_LE(thickest, 1.05 * kFirstLayer * (1 + kGrowth) / 2) << scene.name;
   for (std::size_t i = 0; i < scene.cracks.size(); ++i) {
-    mesh::CrackLine line;
-    ASSERT_EQ(line.Setup(dm, static_cast<PetscInt>(i)), 0);
+    const mesh::CrackLine& line = s.specimen.heat_cracks.line(static_cast<PetscInt>(i));
     EXPECT_NEAR(line.length(), scene.cracks[i].length, 1e-9 * scene.cracks[i].length) << "crack " << i + 1;
     const auto e0 = scene.cracks[i].end(0), e1 = scene.cracks[i].end(1);
     const auto first = e0[0] < e1[0] ? e0 : e1;

@@ -24,7 +24,9 @@ TEST(CrackInterface, CellsFollowTheGeometry) {
   params.crack_law = "mmd";
   interface::ApproachProfile a0;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.solver.mass(), contact::create_crack_law(params), a0), 0);
+  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.mass(),
+                        contact::create_crack_law(params), a0),
+            0);
   const PetscInt facets = w.specimen->summary.cracks.at(0).facets;
   EXPECT_EQ(crack.global_cells(), 2 * facets - 1) << "Q2: facets − 1 vertex pairs and a mid-side pair per facet";
   const double theta = 20.0 * M_PI / 180.0;
@@ -56,7 +58,9 @@ TEST(CrackInterface, OpeningTheCrackPullsThePlusFaceAlongN) {
   interface::ApproachProfile a0;
   a0.uniform = 1e-8;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.solver.mass(), contact::create_crack_law(params), a0), 0);
+  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.mass(),
+                        contact::create_crack_law(params), a0),
+            0);
   Vec u, acc;
   ASSERT_EQ(VecDuplicate(w.solver.mass(), &u), 0);
   ASSERT_EQ(VecDuplicate(u, &acc), 0);

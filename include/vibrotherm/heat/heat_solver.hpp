@@ -29,6 +29,7 @@
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 
 namespace vibrotherm::heat {
@@ -63,8 +64,9 @@ class HeatSolver {
   /// Builds the space, M, K, the edges and the TS on dm (the heat mesh).
   PetscErrorCode Setup(DM dm, const HeatOptions& options);
   /// Sets the line source: a uniform power per unit crack area [W/m²] on each
-  /// crack (every rank passes the same vector, one value per crack). Collective.
-  PetscErrorCode SetCrackPower(const std::vector<double>& power_by_crack);
+  /// crack of `cracks` (the heat mesh's; every rank passes the same vector, one
+  /// value per crack). Collective.
+  PetscErrorCode SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power_by_crack);
   /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
   PetscErrorCode SetSourceLoad(Vec load);
   /// Fixes the probe points (x, y pairs). Collective.
@@ -135,10 +137,9 @@ class HeatSolver {
   PetscErrorCode Account(double h);
   /// w of a theta-family TS (1: backward Euler, 1/2: Crank-Nicolson); family = false (w = 1) for others.
   static PetscErrorCode ThetaWeight(TS ts, bool* family, double* w);
-  // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G; the crack facets.
+  // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G.
   PetscErrorCode AssembleMassAndConductivity(bool lumped);
   PetscErrorCode AddConvectiveFilm();
-  PetscErrorCode CollectCrackFacets();
   PetscErrorCode ScaleTolerance();
   /// A solver of J = K + M/(w dt) (sinks as the TS's), factored once per step length dt.
   PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
@@ -151,13 +152,6 @@ class HeatSolver {
   Vec theta_ = nullptr, theta_prev_ = nullptr, Q_ = nullptr, G_ = nullptr, H_ = nullptr, work_ = nullptr;
   Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
-  /// Per crack facet id: (local dof offsets, weights) to build Q.
-  struct FacetLoad {
-    PetscInt crack;  ///< 0-based
-    std::vector<PetscInt> local_offsets;
-    std::vector<double> weights;
-  };
-  std::vector<FacetLoad> facets_;
   std::vector<fe::LocatedPoint> probes_;
   PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
   PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);

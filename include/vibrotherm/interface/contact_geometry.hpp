@@ -12,16 +12,15 @@
 #include <utility>
 #include <vector>
 
+#include "vibrotherm/geometry/crack_facet.hpp"
+#include "vibrotherm/geometry/frame.hpp"
+
 namespace vibrotherm::interface {
 
-using Vec2 = std::array<double, 2>;
+using geometry::Vec2;
 
 /// A crack facet as every rank knows it.
-struct CrackFacetGeometry {
-  long id = 0;    ///< crack_face id
-  int crack = 0;  ///< 0-based
-  Vec2 p0{}, p1{};
-};
+using CrackFacetGeometry = geometry::CrackFacet;
 
 /// A crack's direction (unit, first facet → last), centre and length.
 struct CrackFrame {
@@ -49,7 +48,7 @@ class ContactGeometry {
   NodeGeometry middle(const CrackFacetGeometry& facet) const;
   /// ξ of p: 0.5 + (p − centre)·direction / length, in [0, 1].
   double xi(int crack, const Vec2& p) const;
-  static Vec2 normal(const Vec2& s) { return {-s[1], s[0]}; }
+  static Vec2 normal(const Vec2& s) { return geometry::FrameFromTangent(s).normal; }
   int degree() const { return degree_; }
 
  private:

@@ -22,6 +22,7 @@
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/interface/crack_record.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
+#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
@@ -45,9 +46,10 @@ class CrackInterface final : public wave::WaveInterface {
   CrackInterface& operator=(const CrackInterface&) = delete;
   ~CrackInterface() override;
 
-  /// law: the crack law (owned from here on); a0: the initial approach along the cracks.
-  PetscErrorCode Setup(const fe::LagrangeSpace& space, Vec lumped_mass, std::unique_ptr<contact::CrackLaw> law,
-                       const ApproachProfile& a0);
+  /// cracks: the crack surface of space's split mesh; law: the crack law (owned
+  /// from here on); a0: the initial approach along the cracks.
+  PetscErrorCode Setup(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks, Vec lumped_mass,
+                       std::unique_ptr<contact::CrackLaw> law, const ApproachProfile& a0);
 
   PetscErrorCode AddAcceleration(Vec u, Vec a) override;
   PetscErrorCode Commit(Vec u, double dt) override;
@@ -87,7 +89,8 @@ class CrackInterface final : public wave::WaveInterface {
   double seconds() const { return seconds_; }
 
  private:
-  PetscErrorCode BuildCells(const fe::LagrangeSpace& space, const ApproachProfile& a0);
+  PetscErrorCode BuildCells(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks,
+                            const ApproachProfile& a0);
   PetscErrorCode BuildTransfer(const std::vector<PetscInt>& dofs, Vec lumped_mass);
   void InitialState();
   /// ± displacements of every cell, [u⁺x u⁺y u⁻x u⁻y] per cell: *U points into

@@ -1,6 +1,6 @@
-// A crack as a polyline, rebuilt from the facets of a distributed mesh (any of
-// the two: the crack_face ids number the facets along each crack), for points
-// given as a fraction of the crack length (probes at ξ = 0.5: the centre).
+// A crack as a polyline, built from the facets its mesh's crack surface gathered
+// (crack_surface.hpp; the crack_face ids number the facets along each crack), for
+// points given as a fraction of the crack length (probes at ξ = 0.5: the centre).
 #pragma once
 
 #include <petscdm.h>
@@ -8,12 +8,14 @@
 #include <array>
 #include <vector>
 
+#include "vibrotherm/geometry/crack_facet.hpp"
+
 namespace vibrotherm::mesh {
 
 class CrackLine {
  public:
-  /// Gathers the facets of crack `crack` (0-based) on every rank. Collective.
-  PetscErrorCode Setup(DM dm, PetscInt crack);
+  /// Chains the facets of crack `crack` (0-based) of a complete list (every rank's) by id.
+  void Build(const std::vector<geometry::CrackFacet>& facets, int crack);
   /// The point at fraction xi ∈ [0, 1] of the length from the first facet's free end.
   std::array<double, 2> At(double xi) const;
   /// Shortest distance from (x, y) to the crack.

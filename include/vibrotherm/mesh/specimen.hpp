@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/heat_mesh.hpp"
 #include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
@@ -32,6 +33,7 @@ struct Specimen {
   std::string source;  ///< "generated" or the mesh file
   std::string heat_source;  ///< "graded", "wave" (the unsplit wave mesh) or the heat mesh file
   PointOrigin wave_origin, heat_origin;  ///< serial point of each local point (checkpoint keys)
+  CrackSurface wave_cracks, heat_cracks;  ///< the cracks of each mesh, gathered once
 };
 
 /// Reads -mesh_file or the generated-specimen options (-specimen_*, -crack_*,

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 #include "vibrotherm/fe/lagrange_space.hpp"
-#include "vibrotherm/mesh/crack_line.hpp"
+#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
 
@@ -49,7 +49,7 @@ class ModalAnalysis {
   PetscErrorCode Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
                        const wave::Excitation& excitation);
   /// Solves for the modes nearest the target; cracks give the participation.
-  PetscErrorCode Solve(const ModesOptions& options, const std::vector<mesh::CrackLine>& cracks);
+  PetscErrorCode Solve(const ModesOptions& options, const mesh::CrackSurface& cracks);
   /// modes.csv (rank 0) and the mode shapes in modes.h5 + modes.xmf ("time" = frequency).
   PetscErrorCode Write(const std::string& dir) const;
   const std::vector<Mode>& modes() const { return modes_; }
@@ -57,7 +57,7 @@ class ModalAnalysis {
 
  private:
   /// Per local bulk cell (space order): whether its centroid lies within radius of a crack.
-  PetscErrorCode CellsNearCracks(const std::vector<mesh::CrackLine>& cracks, double radius,
+  PetscErrorCode CellsNearCracks(const mesh::CrackSurface& cracks, double radius,
                                  std::vector<bool>* near) const;
   /// Share of the strain energy of φ (full displacement) in the cells marked near.
   PetscErrorCode DefectParticipation(Vec phi, const std::vector<bool>& near, double* share) const;

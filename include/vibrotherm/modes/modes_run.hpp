@@ -9,7 +9,6 @@
 
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/io/run_summary.hpp"
-#include "vibrotherm/mesh/crack_line.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modal_analysis.hpp"
 
@@ -23,7 +22,6 @@ class ModesRun {
   PetscErrorCode Write(const std::string& dir) const { return analysis_.Write(dir); }
 
  private:
-  std::vector<mesh::CrackLine> cracks_;
   ModesOptions options_;
   ModalAnalysis analysis_;
 };

@@ -1,9 +1,35 @@
 #include "vibrotherm/coupling/exchange/crack_heat_record.hpp"
 
 #include "vibrotherm/io/h5_tables.hpp"
+#include "vibrotherm/util/all_gather.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::coupling {
+namespace {
+
+/// On rank 0, the n × cells table of every rank's n × owned densities (rank r's
+/// cells are the columns after those of the ranks before it). Collective.
+PetscErrorCode GatherDensities(MPI_Comm comm, const std::vector<double>& mine, std::size_t n, std::size_t owned,
+                               std::vector<double>* density, std::size_t* cells) {
+  PetscFunctionBeginUser;
+  std::vector<double> blocks;  // rank by rank, each rank's n × owned
+  std::vector<long long> owned_by_rank;
+  PetscCall(util::GatherToRoot(comm, mine, &blocks));
+  PetscCall(util::GatherToRoot(comm, std::vector<long long>{static_cast<long long>(owned)}, &owned_by_rank));
+  *cells = 0;
+  for (long long width : owned_by_rank) *cells += static_cast<std::size_t>(width);
+  density->assign(n * *cells, 0.0);
+  std::size_t block = 0, column = 0;
+  for (long long width : owned_by_rank) {
+    for (std::size_t k = 0; k < n; ++k)
+      for (long long j = 0; j < width; ++j) (*density)[k * *cells + column + j] = blocks[block + k * width + j];
+    block += n * width;
+    column += width;
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
 
 void CrackHeatRecord::Append(double t, const FrictionHeat& heat) {
   times_.push_back(t);
@@ -12,24 +38,16 @@ void CrackHeatRecord::Append(double t, const FrictionHeat& heat) {
 
 PetscErrorCode CrackHeatRecord::Write(MPI_Comm comm, const std::string& path, const FrictionHeat& heat) const {
   PetscFunctionBeginUser;
-  PetscMPIInt rank, size;
+  PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  const int owned = static_cast<int>(heat.density().size());
-  std::vector<int> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Allgather(&owned, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  const int cells = displs.back() + counts.back();
   const std::size_t n = times_.size();
-  // Interval by interval: rank r's cells are columns [displs[r], displs[r] + counts[r]).
-  std::vector<double> density(rank == 0 ? n * cells : 0);
-  for (std::size_t k = 0; k < n; ++k)
-    PetscCallMPI(MPI_Gatherv(densities_.data() + k * owned, owned, MPI_DOUBLE, rank == 0 ? &density[k * cells] : nullptr,
-                             counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  std::vector<double> density;
+  std::size_t cells = 0;
+  PetscCall(GatherDensities(comm, densities_, n, heat.density().size(), &density, &cells));
   if (rank != 0) PetscFunctionReturn(0);
   std::map<std::string, io::H5Table> tables;
   tables["time"] = {n, 1, times_, "s"};
-  tables["density"] = {n, static_cast<std::size_t>(cells), density, "W/m^2"};
+  tables["density"] = {n, cells, density, "W/m^2"};
   io::H5Table& elements = tables["elements"];
   for (const CrackElement& e : heat.wave_elements())
     elements.values.insert(elements.values.end(), {double(e.crack), e.xi0, e.xi1, e.length, double(e.degree),

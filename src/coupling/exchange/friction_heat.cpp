@@ -6,9 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "vibrotherm/mesh/crack_line.hpp"
-#include "vibrotherm/mesh/plex/labels.hpp"
-#include "vibrotherm/mesh/plex/plex_access.hpp"
+#include "vibrotherm/util/all_gather.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -24,21 +22,16 @@ PetscErrorCode GatherCells(const interface::CrackInterface& crack, MPI_Comm comm
   PetscFunctionBeginUser;
   const PetscInt mine = static_cast<PetscInt>(crack.cells().size());
   PetscCallMPI(MPI_Exscan(&mine, first, 1, MPIU_INT, MPI_SUM, comm));
-  PetscMPIInt rank, size;
+  PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
   if (rank == 0) *first = 0;
   std::vector<double> local;
   for (std::size_t i = 0; i < crack.cells().size(); ++i) {
     const interface::ContactCell& c = crack.cells()[i];
     local.insert(local.end(), {double(c.crack), c.x, c.y, double(*first + static_cast<PetscInt>(i))});
   }
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  std::vector<double> flat(displs.back() + counts.back());
-  PetscCallMPI(MPI_Allgatherv(local.data(), n, MPI_DOUBLE, flat.data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
+  std::vector<double> flat;
+  PetscCall(util::AllGather(comm, local, &flat));
   all->resize(flat.size() / 4);
   for (std::size_t k = 0; k < all->size(); ++k) (*all)[k] = {flat[4 * k], flat[4 * k + 1], flat[4 * k + 2], flat[4 * k + 3]};
   PetscFunctionReturn(0);
@@ -81,16 +74,16 @@ FrictionHeat::~FrictionHeat() {
 }
 
 PetscErrorCode FrictionHeat::BuildWaveElements(const interface::CrackInterface& crack,
-                                               const fe::LagrangeSpace& wave_space, PetscInt ncracks) {
+                                               const fe::LagrangeSpace& wave_space,
+                                               const mesh::CrackSurface& wave_cracks) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave_space.dm());
   std::vector<CellPlace> cells;
   PetscCall(GatherCells(crack, comm, &cells, &first_cell_));
   wave_elements_.clear();
   crack_vertices_.clear();
-  for (PetscInt k = 0; k < ncracks; ++k) {
-    mesh::CrackLine line;
-    PetscCall(line.Setup(wave_space.dm(), k));
+  for (PetscInt k = 0; k < wave_cracks.crack_count(); ++k) {
+    const mesh::CrackLine& line = wave_cracks.line(k);
     const CellsAlong along(cells, line, k);
     for (std::size_t j = 0; j <= line.facet_ids().size(); ++j)
       crack_vertices_.push_back({double(k), line.vertex_xi(j), line.vertex(j)[0], line.vertex(j)[1]});
@@ -115,36 +108,23 @@ PetscErrorCode FrictionHeat::BuildWaveElements(const interface::CrackInterface& 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_space, PetscInt ncracks,
+PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_space,
+                                               const mesh::CrackSurface& heat_cracks,
                                                std::vector<CrackElement>* elements) const {
   PetscFunctionBeginUser;
-  DM dm = heat_space.dm();
-  DMLabel crack_label, ids;
-  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
-  PetscCall(DMGetLabel(dm, mesh::labels::crack_face, &ids));
-  std::vector<bool> ghost;
-  PetscCall(mesh::GhostPoints(dm, &ghost));
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
   PetscSection global;
-  PetscCall(DMGetGlobalSection(dm, &global));
-  PetscInt chart0, fStart, fEnd;
-  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  PetscCall(mesh::FacetRange(dm, &fStart, &fEnd));
-  for (PetscInt k = 0; k < ncracks; ++k) {
-    mesh::CrackLine line;
-    PetscCall(line.Setup(dm, k));
+  PetscCall(DMGetGlobalSection(heat_space.dm(), &global));
+  for (PetscInt k = 0; k < heat_cracks.crack_count(); ++k) {
+    const mesh::CrackLine& line = heat_cracks.line(k);
     std::map<PetscInt, std::size_t> position;
     for (std::size_t j = 0; j < line.facet_ids().size(); ++j) position[line.facet_ids()[j]] = j;
-    for (PetscInt f = fStart; f < fEnd && crack_label && ids; ++f) {
-      PetscInt c, id;
-      PetscCall(DMLabelGetValue(crack_label, f, &c));
-      PetscCall(DMLabelGetValue(ids, f, &id));
-      if (c != k + 1 || id < 0 || ghost[f - chart0]) continue;
-      const std::size_t j = position.at(id);
+    for (const mesh::OwnedCrackFacet& owned : heat_cracks.owned()) {
+      const geometry::CrackFacet& facet = heat_cracks.facets()[owned.index];
+      if (facet.crack != k) continue;
+      const std::size_t j = position.at(facet.id);
       const PetscInt* cone;
-      PetscCall(DMPlexGetCone(dm, f, &cone));
-      const auto p0 = x(cone[0]), v = line.vertex(j);
+      PetscCall(DMPlexGetCone(heat_space.dm(), owned.facet, &cone));
+      const auto p0 = facet.p0, v = line.vertex(j);
       const bool forward = std::hypot(p0[0] - v[0], p0[1] - v[1]) < 1e-9 * line.length();
       CrackElement e;
       e.crack = static_cast<int>(k);
@@ -153,7 +133,7 @@ PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_spa
       e.degree = static_cast<int>(heat_space.degree());
       PetscCall(GlobalRow(global, cone[forward ? 0 : 1], &e.node[0]));
       PetscCall(GlobalRow(global, cone[forward ? 1 : 0], &e.node[1]));
-      if (e.degree == 2) PetscCall(GlobalRow(global, f, &e.node[2]));
+      if (e.degree == 2) PetscCall(GlobalRow(global, owned.facet, &e.node[2]));
       elements->push_back(e);
     }
   }
@@ -185,11 +165,12 @@ PetscErrorCode FrictionHeat::AssembleTransfer(const fe::LagrangeSpace& heat_spac
 }
 
 PetscErrorCode FrictionHeat::Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                                   const fe::LagrangeSpace& heat_space, PetscInt ncracks) {
+                                   const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
+                                   const mesh::CrackSurface& heat_cracks) {
   PetscFunctionBeginUser;
-  PetscCall(BuildWaveElements(crack, wave_space, ncracks));
+  PetscCall(BuildWaveElements(crack, wave_space, wave_cracks));
   std::vector<CrackElement> heat_elements;
-  PetscCall(BuildHeatElements(heat_space, ncracks, &heat_elements));
+  PetscCall(BuildHeatElements(heat_space, heat_cracks, &heat_elements));
   const PetscInt owned = static_cast<PetscInt>(crack.cells().size());
   PetscCall(AssembleTransfer(heat_space, heat_elements, owned));
   previous_.assign(owned, 0.0);

@@ -12,11 +12,12 @@ PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited) {
 }
 
 PetscErrorCode FrictionHeatSource::Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
-                                         const fe::LagrangeSpace& heat_space, PetscInt ncracks) {
+                                         const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
+                                         const mesh::CrackSurface& heat_cracks) {
   PetscFunctionBeginUser;
   crack_ = crack;
   comm_ = PetscObjectComm((PetscObject)heat_space.dm());
-  PetscCall(transfer_.Setup(*crack, wave_space, heat_space, ncracks));
+  PetscCall(transfer_.Setup(*crack, wave_space, wave_cracks, heat_space, heat_cracks));
   PetscFunctionReturn(0);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vibrotherm/fe/cell_locator.hpp"
+#include "vibrotherm/util/all_gather.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -42,15 +43,7 @@ PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<doubl
     }
     PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
   }
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  PetscMPIInt size;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  int count = static_cast<int>(mine.size());
-  std::vector<int> counts(size), displs(size, 0);
-  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  all->resize(displs.back() + counts.back());
-  PetscCallMPI(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all->data(), counts.data(), displs.data(), MPI_DOUBLE, comm));
+  PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, all));
   PetscFunctionReturn(0);
 }
 

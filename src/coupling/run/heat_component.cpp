@@ -6,7 +6,6 @@
 #include "vibrotherm/coupling/exchange/thermal_stress.hpp"
 #include "vibrotherm/coupling/exchange/thermoelastic_source.hpp"
 #include "vibrotherm/coupling/exchange/thermoelastic_transfer.hpp"
-#include "vibrotherm/mesh/crack_line.hpp"
 #include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
@@ -26,10 +25,11 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   if (scene.run.physics == PhysicsChoice::Heat) {
     PetscCheck(ncracks > 0 || scene.run.heat_crack_power == 0.0, comm, PETSC_ERR_USER_INPUT,
                "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
-    PetscCall(solver_.SetCrackPower(std::vector<double>(ncracks, scene.run.heat_crack_power)));
+    PetscCall(solver_.SetCrackPower(specimen.heat_cracks, std::vector<double>(ncracks, scene.run.heat_crack_power)));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
-    PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), ncracks));
+    PetscCall(friction->Setup(waves->crack(), waves->solver().space(), specimen.wave_cracks, solver_.space(),
+                              specimen.heat_cracks));
     friction_ = friction.get();
     sources_.push_back(std::move(friction));
   }
@@ -49,9 +49,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   }
   PetscCall(DMCreateGlobalVector(specimen.heat, &load_));
   for (double s : scene.run.crack_probes) {
-    mesh::CrackLine line;
-    PetscCall(line.Setup(specimen.heat, scene.run.crack_probe_crack - 1));
-    const auto p = line.At(s);
+    const auto p = specimen.heat_cracks.line(scene.run.crack_probe_crack - 1).At(s);
     crack_probe_xy_.insert(crack_probe_xy_.end(), {p[0], p[1]});
   }
   std::vector<double> probes = scene.run.probe_points;

@@ -86,7 +86,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
   VibrothermCallCpp(comm, law = contact::create_crack_law(scene.contact));
   if (!specimen.cracks.empty() && law->has_contact()) {
     crack_ = std::make_unique<interface::CrackInterface>();
-    PetscCall(crack_->Setup(solver_->space(), solver_->mass(), std::move(law), scene.a0));
+    PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->mass(), std::move(law), scene.a0));
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }

@@ -13,6 +13,7 @@
 #include "vibrotherm/coupling/exchange/line_transfer.hpp"
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/mesh/crack_surface.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -23,10 +24,12 @@ class FrictionHeat {
   FrictionHeat& operator=(const FrictionHeat&) = delete;
   ~FrictionHeat();
 
-  /// Matches the contact cells of `crack` (on wave_space's split mesh) with the
-  /// crack facets of heat_space's mesh. Collective over both meshes' communicator.
+  /// Matches the contact cells of `crack` (on wave_space's split mesh, whose cracks
+  /// are wave_cracks) with the crack facets of heat_space's mesh (heat_cracks).
+  /// Collective over both meshes' communicator.
   PetscErrorCode Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                       const fe::LagrangeSpace& heat_space, PetscInt ncracks);
+                       const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
+                       const mesh::CrackSurface& heat_cracks);
   /// Q += heat load [W/m per heat dof] of the friction energy each cell dissipated
   /// since the last call (cumulative W [J/m²] per owned cell), spread over `interval`.
   PetscErrorCode AddLoad(const std::vector<double>& dissipated_per_area, double interval, Vec Q);
@@ -49,8 +52,8 @@ class FrictionHeat {
 
  private:
   PetscErrorCode BuildWaveElements(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                                   PetscInt ncracks);
-  PetscErrorCode BuildHeatElements(const fe::LagrangeSpace& heat_space, PetscInt ncracks,
+                                   const mesh::CrackSurface& wave_cracks);
+  PetscErrorCode BuildHeatElements(const fe::LagrangeSpace& heat_space, const mesh::CrackSurface& heat_cracks,
                                    std::vector<CrackElement>* elements) const;
   PetscErrorCode AssembleTransfer(const fe::LagrangeSpace& heat_space, const std::vector<CrackElement>& heat_elements,
                                   PetscInt owned_cells);

@@ -52,7 +52,8 @@ class HeatSource {
 class FrictionHeatSource final : public HeatSource {
  public:
   PetscErrorCode Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
-                       const fe::LagrangeSpace& heat_space, PetscInt ncracks);
+                       const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
+                       const mesh::CrackSurface& heat_cracks);
   PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
   PetscErrorCode Finish(const std::string& dir) override;
   double deposited() const override { return deposited_; }
