@@ -9,6 +9,9 @@ namespace vibrotherm::fe {
 PetscErrorCode CellLocator::Setup(const LagrangeSpace& space) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
+  // Bilinear quads and affine triangles, 2D bins: a 3D mesh needs trilinear/tet maps (issue 25).
+  PetscCheck(space.dim() == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP, "CellLocator: 2D meshes only (%dD)",
+             space.dim());
   simplex_ = space.simplex();
   const std::vector<double> ref_corners = simplex_ ? std::vector<double>{-1, -1, 1, -1, -1, 1}
                                                    : std::vector<double>{-1, -1, 1, -1, 1, 1, -1, 1};
