@@ -4,12 +4,14 @@
 // interior residual, the capacity totals ρ c_p · volume, and the row-sum lumped
 // capacity is positive on quads/hexes (Q2 included) and P1 simplices. On P2
 // tetrahedra it is negative at the vertices, which is why the solver refuses
-// -heat_lumped_mass there.
+// -heat_lumped_mass there. Points located in the mesh (fe::LocatePoints) give
+// a linear temperature exactly, and points outside are reported as such.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "box_mesh_support.hpp"
+#include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_element.hpp"
 
 namespace vibrotherm::testing {
@@ -99,6 +101,39 @@ TEST_P(HeatElement, LumpedCapacityTotalAndSign) {
   } else {
     EXPECT_GT(smallest_row_sum_, 0.0);
   }
+}
+
+TEST_P(HeatElement, LocatedPointsInterpolateLinearTemperatureExactly) {
+  const int D = GetParam().dim;
+  const auto linear = [=](const double* x) {
+    double t = 300.0;
+    for (int d = 0; d < D; ++d) t += (d + 1) * 10.0 * x[d];
+    return t;
+  };
+  Vec T, T_local;
+  ASSERT_EQ(NodalField(space_, [&](const double* x, double* t) { t[0] = linear(x); }, &T), 0);
+  DMGetLocalVector(dm_, &T_local);
+  DMGlobalToLocal(dm_, T, INSERT_VALUES, T_local);
+  // Points spread through the box (corners and faces included), then one outside.
+  std::vector<double> xyz;
+  for (int k = 0; k < 7; ++k)
+    for (int d = 0; d < D; ++d) xyz.push_back(kBoxUpper[d] * std::fmod(0.37 * (k + 1) * (d + 1) + (k == 0 ? 0.63 : 0.0), 1.0));
+  for (int d = 0; d < D; ++d) xyz.push_back(d == 0 ? 1.5 * kBoxUpper[0] : 0.1);
+  std::vector<fe::LocatedPoint> points;
+  std::vector<bool> inside;
+  std::vector<double> values;
+  ASSERT_EQ(fe::LocatePoints(space_, xyz, &points, &inside), 0);
+  ASSERT_EQ(fe::EvaluateScalarAtPoints(space_, T_local, points, &values), 0);
+  double worst = 0.0;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    EXPECT_TRUE(inside[i]) << "point " << i;
+    worst = std::max(worst, std::abs(values[i] - linear(&xyz[D * i])));
+  }
+  EXPECT_FALSE(inside.back());
+  EXPECT_LT(worst, 1e-10);
+  std::printf("  %s: located points: largest |T_h − T| %.3g K\n", BoxCaseName({GetParam(), 0}).c_str(), worst);
+  DMRestoreLocalVector(dm_, &T_local);
+  VecDestroy(&T);
 }
 
 INSTANTIATE_TEST_SUITE_P(BoxMeshes, HeatElement,

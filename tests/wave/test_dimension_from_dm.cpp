@@ -6,13 +6,17 @@
 //  - patch test: a linear displacement gives its constant stress at every
 //    quadrature point, K u has no interior residual, and uᵀKu = σ:ε · volume;
 //  - rigid-body motions (D translations, D(D−1)/2 rotations) are in the null space of K;
+//  - the stepping product (BlockKernel) is MatMult's: its 2×2 loop in 2D, MatMult itself in 3D;
+//  - LTS levels are assigned to every cell and reach every dof;
 //  - the lumped mass is positive (Q2 hexes included: Gauss–Lobatto-like row
 //    sums; P2 simplices by HRZ, their row sums being ≤ 0 at vertices) and totals ρ·volume.
 #include <cmath>
 #include <cstdio>
 
 #include "box_mesh_support.hpp"
+#include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
+#include "vibrotherm/wave/lts_levels.hpp"
 
 namespace vibrotherm::testing {
 namespace {
@@ -160,6 +164,58 @@ TEST_P(DimensionFromDm, PatchTestLinearDisplacement) {
   EXPECT_NEAR(PetscRealPart(uKu), exact, 1e-10 * exact);
   VecDestroy(&u);
   VecDestroy(&Ku);
+}
+
+TEST_P(DimensionFromDm, BlockKernelAgreesWithMatMult) {
+  const int D = GetParam().dim;
+  Vec u, Ku, blocked;
+  Apply([=](const double* x, double* v) {
+    for (int i = 0; i < D; ++i) v[i] = std::sin(3.0 * x[0] + i) * std::cos(2.0 * x[D - 1]);
+  }, &u, &Ku);
+  VecDuplicate(Ku, &blocked);
+  for (bool compress : {false, true}) {
+    wave::BlockKernel kernel;
+    ASSERT_EQ(kernel.Setup(K_, false, compress), 0);
+    ASSERT_EQ(kernel.Apply(u, blocked), 0);
+    PetscReal difference, scale;
+    VecNorm(Ku, NORM_INFINITY, &scale);
+    VecAXPY(blocked, -1.0, Ku);
+    VecNorm(blocked, NORM_INFINITY, &difference);
+    if (D == 2) {
+      EXPECT_LT(difference, 1e-13 * scale);  // its own summation order
+    } else {
+      EXPECT_EQ(difference, 0.0);  // MatMult itself
+    }
+  }
+  VecDestroy(&blocked);
+  VecDestroy(&u);
+  VecDestroy(&Ku);
+}
+
+TEST_P(DimensionFromDm, LtsLevelsReachEveryDof) {
+  wave::LtsOptions options;
+  options.on = true;
+  wave::LtsLevels levels;
+  ASSERT_EQ(wave::AssignCellLevels(space_, material_, options, &levels), 0);
+  ASSERT_EQ(levels.cell_level.size(), space_.cells().size());
+  std::vector<PetscInt> finest;
+  std::vector<std::vector<char>> touched;
+  ASSERT_EQ(wave::DofLevels(space_, levels, &finest, &touched), 0);
+  PetscInt owned;
+  VecGetLocalSize(mass_, &owned);
+  ASSERT_EQ(finest.size(), static_cast<std::size_t>(owned));
+  for (PetscInt level : finest) EXPECT_TRUE(level >= 0 && level < levels.levels);
+  // Halving a cell doubles its frequency in any dimension (K_e/M_e ∝ 1/h²):
+  // gradients ×2, measure ÷2^D.
+  fe::CellQuadrature q;
+  ASSERT_EQ(space_.Evaluate(space_.cells()[0], &q), 0);
+  const bool hrz = space_.simplex() && space_.degree() == 2;
+  const double omega = wave::CellAngularFrequency(q, material_, hrz);
+  for (double& g : q.grad) g *= 2.0;
+  for (double& w : q.weight) w /= std::pow(2.0, GetParam().dim);
+  EXPECT_NEAR(wave::CellAngularFrequency(q, material_, hrz), 2.0 * omega, 1e-9 * omega);
+  std::printf("  %s: %" PetscInt_FMT " LTS level(s), ω of the first cell %.4g rad/s\n", BoxCaseName({GetParam(), 0}).c_str(),
+              levels.levels, omega);
 }
 
 INSTANTIATE_TEST_SUITE_P(BoxMeshes, DimensionFromDm,
