@@ -230,11 +230,6 @@ PetscErrorCode LagrangeSpace::QuadraturePoints(PetscInt cell, std::vector<double
   PetscFunctionReturn(0);
 }
 
-namespace {
-
-/// Whether reference coordinates r (dim of them) lie in PETSc's reference cell:
-/// [-1,1]^dim, or the simplex with vertices (-1,…,-1) and the unit vectors
-/// from it (Σ r ≤ 2 − dim), within tol.
 bool InReferenceCell(const double* r, int dim, bool simplex, double tol) {
   // Written as "not inside" so that a NaN (no inverse map) is outside.
   if (!simplex) {
@@ -248,8 +243,6 @@ bool InReferenceCell(const double* r, int dim, bool simplex, double tol) {
     if (!(r[d] >= -1 - tol)) return false;
   return sum <= (2 - dim) + tol;
 }
-
-}  // namespace
 
 PetscErrorCode LagrangeSpace::Locate(const double* point, PetscInt* cell, ReferencePoint* ref) const {
   PetscFunctionBeginUser;

@@ -5,12 +5,14 @@
 // capacity is positive on quads/hexes (Q2 included) and P1 simplices. On P2
 // tetrahedra it is negative at the vertices, which is why the solver refuses
 // -heat_lumped_mass there. Points located in the mesh (fe::LocatePoints) give
-// a linear temperature exactly, and points outside are reported as such.
+// a linear temperature exactly, and points outside are reported as such; the
+// fast CellLocator finds the same cells and reference points as PETSc's inverse map.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "box_mesh_support.hpp"
+#include "vibrotherm/fe/cell_locator.hpp"
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_element.hpp"
 
@@ -103,6 +105,16 @@ TEST_P(HeatElement, LumpedCapacityTotalAndSign) {
   }
 }
 
+/// Points spread through the box (a corner included), then one outside it.
+std::vector<double> SamplePoints(int dim) {
+  std::vector<double> xyz;
+  for (int k = 0; k < 7; ++k)
+    for (int d = 0; d < dim; ++d)
+      xyz.push_back(kBoxUpper[d] * std::fmod(0.37 * (k + 1) * (d + 1) + (k == 0 ? 0.63 : 0.0), 1.0));
+  for (int d = 0; d < dim; ++d) xyz.push_back(d == 0 ? 1.5 * kBoxUpper[0] : 0.1);
+  return xyz;
+}
+
 TEST_P(HeatElement, LocatedPointsInterpolateLinearTemperatureExactly) {
   const int D = GetParam().dim;
   const auto linear = [=](const double* x) {
@@ -114,11 +126,7 @@ TEST_P(HeatElement, LocatedPointsInterpolateLinearTemperatureExactly) {
   ASSERT_EQ(NodalField(space_, [&](const double* x, double* t) { t[0] = linear(x); }, &T), 0);
   DMGetLocalVector(dm_, &T_local);
   DMGlobalToLocal(dm_, T, INSERT_VALUES, T_local);
-  // Points spread through the box (corners and faces included), then one outside.
-  std::vector<double> xyz;
-  for (int k = 0; k < 7; ++k)
-    for (int d = 0; d < D; ++d) xyz.push_back(kBoxUpper[d] * std::fmod(0.37 * (k + 1) * (d + 1) + (k == 0 ? 0.63 : 0.0), 1.0));
-  for (int d = 0; d < D; ++d) xyz.push_back(d == 0 ? 1.5 * kBoxUpper[0] : 0.1);
+  const std::vector<double> xyz = SamplePoints(D);
   std::vector<fe::LocatedPoint> points;
   std::vector<bool> inside;
   std::vector<double> values;
@@ -134,6 +142,36 @@ TEST_P(HeatElement, LocatedPointsInterpolateLinearTemperatureExactly) {
   std::printf("  %s: located points: largest |T_h − T| %.3g K\n", BoxCaseName({GetParam(), 0}).c_str(), worst);
   DMRestoreLocalVector(dm_, &T_local);
   VecDestroy(&T);
+}
+
+TEST_P(HeatElement, CellLocatorAgreesWithPetscInverseMap) {
+  const int D = GetParam().dim;
+  const std::vector<double> xyz = SamplePoints(D);
+  fe::CellLocator locator;
+  ASSERT_EQ(locator.Setup(space_), 0);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < xyz.size() / D; ++i) {
+    PetscInt fast_cell, petsc_cell;
+    fe::ReferencePoint fast{}, petsc{};
+    locator.Locate(&xyz[D * i], &fast_cell, &fast);
+    ASSERT_EQ(space_.Locate(&xyz[D * i], &petsc_cell, &petsc), 0);
+    EXPECT_EQ(fast_cell >= 0, petsc_cell >= 0) << "point " << i;
+    if (fast_cell < 0 || petsc_cell < 0) continue;
+    // A point on a shared face may be found in either cell: map back through PETSc.
+    double mapped[3] = {0, 0, 0};
+    DMPlexReferenceToCoordinates(dm_, fast_cell, 1, fast.data(), mapped);
+    for (int d = 0; d < D; ++d) worst = std::max(worst, std::abs(mapped[d] - xyz[D * i + d]));
+    if (fast_cell == petsc_cell) {
+      for (int d = 0; d < D; ++d) EXPECT_NEAR(fast[d], petsc[d], 1e-9) << "point " << i;
+    }
+    const auto J = locator.Jacobian(fast_cell, fast);
+    const double det = D == 2 ? J[0] * J[3] - J[1] * J[2]
+                              : J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
+                                    J[2] * (J[3] * J[7] - J[4] * J[6]);
+    EXPECT_GT(std::abs(det), 0.0);
+  }
+  EXPECT_LT(worst, 1e-12);
+  std::printf("  %s: CellLocator: largest |x(ξ) − x| %.3g m\n", BoxCaseName({GetParam(), 0}).c_str(), worst);
 }
 
 INSTANTIATE_TEST_SUITE_P(BoxMeshes, HeatElement,

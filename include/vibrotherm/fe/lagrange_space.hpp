@@ -28,6 +28,11 @@ struct CellQuadrature {
 /// A point in reference coordinates: the first dim of them are used (2D: z = 0).
 using ReferencePoint = std::array<double, 3>;
 
+/// Whether reference coordinates r (dim of them) lie in PETSc's reference cell
+/// within tol: [-1,1]^dim, or the simplex with vertices (-1,…,-1) and the unit
+/// vectors from it (Σ r ≤ 2 − dim). NaN coordinates are outside.
+bool InReferenceCell(const double* r, int dim, bool simplex, double tol);
+
 /// ∇φ_a·∇φ_b of two gradients of `dim` entries, summed in the order x, y, z
 /// (the 2D sum is the same expression as a·b = a0 b0 + a1 b1, bit for bit).
 inline double GradientDot(const double* ga, const double* gb, int dim) {
