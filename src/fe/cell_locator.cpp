@@ -55,7 +55,10 @@ PetscErrorCode CellLocator::Setup(const LagrangeSpace& space) {
     Cell cell{c, {}};
     PetscCall(DMPlexReferenceToCoordinates(dm, c, corners_, ref_corners.data(), cell.corners.data()));
     for (int k = 0; k < corners_; ++k)
-      for (int d = 0; d < D; ++d) lo[d] = std::min(lo[d], cell.corners[D * k + d]), hi[d] = std::max(hi[d], cell.corners[D * k + d]);
+      for (int d = 0; d < D; ++d) {
+        lo[d] = std::min(lo[d], cell.corners[D * k + d]);
+        hi[d] = std::max(hi[d], cell.corners[D * k + d]);
+      }
     cells_.push_back(cell);
   }
   if (cells_.empty()) PetscFunctionReturn(0);
@@ -83,8 +86,10 @@ void CellLocator::FillBins(const double* lo, const double* hi) {
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int k = 0; k < corners_; ++k)
-      for (int d = 0; d < D; ++d)
-        clo[d] = std::min(clo[d], cells_[i].corners[D * k + d]), chi[d] = std::max(chi[d], cells_[i].corners[D * k + d]);
+      for (int d = 0; d < D; ++d) {
+        clo[d] = std::min(clo[d], cells_[i].corners[D * k + d]);
+        chi[d] = std::max(chi[d], cells_[i].corners[D * k + d]);
+      }
     int first[3] = {0, 0, 0}, last[3] = {0, 0, 0};
     for (int d = 0; d < D; ++d) {
       first[d] = std::clamp(static_cast<int>((clo[d] - origin_[d]) / bin_), 0, bins_per_axis_[d] - 1);
@@ -172,7 +177,8 @@ void CellLocator::Locate(const double* x, PetscInt* cell, ReferencePoint* ref) c
     if (i > bins_per_axis_[d] || i < -1) return;  // a point on the far side of the box belongs to the last bin
     index[d] = std::clamp(i, 0, bins_per_axis_[d] - 1);
   }
-  const std::size_t b = (static_cast<std::size_t>(index[2]) * bins_per_axis_[1] + index[1]) * bins_per_axis_[0] + index[0];
+  const std::size_t b =
+      (static_cast<std::size_t>(index[2]) * bins_per_axis_[1] + index[1]) * bins_per_axis_[0] + index[0];
   for (std::size_t k : bins_[b])
     if (Inside(cells_[k], x, ref)) {
       *cell = cells_[k].point;

@@ -15,13 +15,18 @@ namespace {
 /// tensor (cohesive) points, which carry none.
 PetscInt DofCarrierDimension(DMPolytopeType type) {
   switch (type) {
-    case DM_POLYTOPE_POINT: return 0;
-    case DM_POLYTOPE_SEGMENT: return 1;
+    case DM_POLYTOPE_POINT:
+      return 0;
+    case DM_POLYTOPE_SEGMENT:
+      return 1;
     case DM_POLYTOPE_TRIANGLE:
-    case DM_POLYTOPE_QUADRILATERAL: return 2;
+    case DM_POLYTOPE_QUADRILATERAL:
+      return 2;
     case DM_POLYTOPE_TETRAHEDRON:
-    case DM_POLYTOPE_HEXAHEDRON: return 3;
-    default: return -1;
+    case DM_POLYTOPE_HEXAHEDRON:
+      return 3;
+    default:
+      return -1;
   }
 }
 
@@ -86,7 +91,8 @@ PetscErrorCode SetSpaceSection(DM dm, PetscFE fe, PetscInt components) {
 PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  PetscCheck(degree == 1 || degree == 2, comm, PETSC_ERR_USER_INPUT, "degree must be 1 or 2, got %" PetscInt_FMT, degree);
+  PetscCheck(degree == 1 || degree == 2, comm, PETSC_ERR_USER_INPUT, "degree must be 1 or 2, got %" PetscInt_FMT,
+             degree);
   PetscInt dim, coordinate_dim;
   PetscCall(DMGetDimension(dm, &dim));
   PetscCall(DMGetCoordinateDim(dm, &coordinate_dim));
@@ -100,7 +106,8 @@ PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components)
   components_ = components;
   PetscCall(BulkCells(dm, dim, &cells_, &simplex_));
   // Quadrature exact for the mass matrix on affine cells.
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, dim, 1, simplex_ ? PETSC_TRUE : PETSC_FALSE, degree, 2 * degree + 1, &fe_));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, dim, 1, simplex_ ? PETSC_TRUE : PETSC_FALSE, degree, 2 * degree + 1,
+                                  &fe_));
   PetscCall(PetscFEGetQuadrature(fe_, &quad_));
   PetscInt np;
   PetscCall(PetscQuadratureGetData(quad_, nullptr, nullptr, &np, nullptr, &qweights_));
@@ -185,8 +192,8 @@ PetscErrorCode LagrangeSpace::NodeCoordinates(std::vector<std::array<double, 2>>
 
 PetscErrorCode LagrangeSpace::RequirePlanar(const char* what) const {
   PetscFunctionBeginUser;
-  PetscCheck(dim_ == 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "LagrangeSpace::%s is 2D only (mesh of dimension %d)",
-             what, dim_);
+  PetscCheck(dim_ == 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "LagrangeSpace::%s is 2D only (mesh of dimension %d)", what,
+             dim_);
   PetscFunctionReturn(0);
 }
 
@@ -262,7 +269,10 @@ PetscErrorCode LagrangeSpace::Locate(const double* point, PetscInt* cell, Refere
     PetscInt n;
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     PetscCall(DMPlexVecGetClosure(cdm, csection, coordinates, c, &n, &xc));
-    for (PetscInt i = 0; i < n; ++i) lo[i % D] = std::min(lo[i % D], PetscRealPart(xc[i])), hi[i % D] = std::max(hi[i % D], PetscRealPart(xc[i]));
+    for (PetscInt i = 0; i < n; ++i) {
+      lo[i % D] = std::min(lo[i % D], PetscRealPart(xc[i]));
+      hi[i % D] = std::max(hi[i % D], PetscRealPart(xc[i]));
+    }
     PetscCall(DMPlexVecRestoreClosure(cdm, csection, coordinates, c, &n, &xc));
     double extent = hi[0] - lo[0];
     for (int d = 1; d < D; ++d) extent = std::max(extent, hi[d] - lo[d]);

@@ -99,8 +99,9 @@ PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
   PetscSection section;
   PetscCall(DMGetLocalSection(dm_, &section));
   // Row sums of P2 tetrahedra are negative at the vertices (−V/20): no lumped capacity there.
-  PetscCheck(!(lumped && space_.simplex() && space_.degree() == 2 && space_.dim() == 3), PetscObjectComm((PetscObject)dm_),
-             PETSC_ERR_SUP, "-heat_lumped_mass: row-sum lumping of P2 tetrahedra gives negative capacities; use the "
+  PetscCheck(!(lumped && space_.simplex() && space_.degree() == 2 && space_.dim() == 3),
+             PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
+             "-heat_lumped_mass: row-sum lumping of P2 tetrahedra gives negative capacities; use the "
              "consistent mass or degree 1");
   PetscCall(DMCreateMatrix(dm_, &M_));
   PetscCall(DMCreateMatrix(dm_, &K_));

@@ -13,7 +13,8 @@ PetscErrorCode VertexCoordinates::Setup(DM dm) {
   PetscInt dim;
   PetscCall(DMGetCoordinateDim(dm, &dim));
   // Two coordinates a vertex: reading them from a 3D mesh would silently drop z.
-  PetscCheck(dim == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP, "VertexCoordinates: 2D meshes only (%" PetscInt_FMT "D)", dim);
+  PetscCheck(dim == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
+             "VertexCoordinates: 2D meshes only (%" PetscInt_FMT "D)", dim);
   PetscCall(DMGetCoordinatesLocalSetUp(dm));
   PetscCall(DMGetCoordinatesLocal(dm, &local));
   PetscCall(DMGetCoordinateSection(dm, &section));

@@ -38,7 +38,8 @@ void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double
   }
   double diag_sum = 0.0;
   for (double d : diag) diag_sum += d;
-  for (int a = 0; a < Nb; ++a) std::fill(me + D * a, me + D * (a + 1), hrz ? diag[a] * cell_mass / diag_sum : row_sum[a]);
+  for (int a = 0; a < Nb; ++a)
+    std::fill(me + D * a, me + D * (a + 1), hrz ? diag[a] * cell_mass / diag_sum : row_sum[a]);
 }
 
 namespace {

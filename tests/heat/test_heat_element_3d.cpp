@@ -67,10 +67,14 @@ TEST_P(HeatElement, ExactForConstantAndLinearTemperatures) {
   MatNorm(K_, NORM_INFINITY, &K_norm);
   for (int linear = 0; linear < 2; ++linear) {
     Vec T, KT;
-    ASSERT_EQ(NodalField(space_, [=](const double* x, double* t) {
-      t[0] = 300.0;
-      for (int d = 0; linear && d < D; ++d) t[0] += (d + 1) * 10.0 * x[d];
-    }, &T), 0);
+    ASSERT_EQ(NodalField(
+                  space_,
+                  [=](const double* x, double* t) {
+                    t[0] = 300.0;
+                    for (int d = 0; linear && d < D; ++d) t[0] += (d + 1) * 10.0 * x[d];
+                  },
+                  &T),
+              0);
     VecDuplicate(T, &KT);
     MatMult(K_, T, KT);
     PetscReal T_norm, residual;
@@ -94,8 +98,7 @@ TEST_P(HeatElement, LumpedCapacityTotalAndSign) {
   VecSum(lumped_, &total);
   const double exact = kRhoC * BoxVolume(c.dim);
   EXPECT_NEAR(total, exact, 1e-12 * exact);
-  std::printf("  %s: smallest element row sum %.4g J/K\n", BoxCaseName({c, 0}).c_str(),
-              smallest_row_sum_);
+  std::printf("  %s: smallest element row sum %.4g J/K\n", BoxCaseName({c, 0}).c_str(), smallest_row_sum_);
   if (c.simplex && c.degree == 2) {
     if (c.dim == 3) {
       EXPECT_LT(smallest_row_sum_, 0.0);  // the reason for the refusal
@@ -123,7 +126,9 @@ TEST_P(HeatElement, LocatedPointsInterpolateLinearTemperatureExactly) {
     return t;
   };
   Vec T, T_local;
-  ASSERT_EQ(NodalField(space_, [&](const double* x, double* t) { t[0] = linear(x); }, &T), 0);
+  ASSERT_EQ(NodalField(
+                space_, [&](const double* x, double* t) { t[0] = linear(x); }, &T),
+            0);
   DMGetLocalVector(dm_, &T_local);
   DMGlobalToLocal(dm_, T, INSERT_VALUES, T_local);
   const std::vector<double> xyz = SamplePoints(D);
@@ -174,8 +179,7 @@ TEST_P(HeatElement, CellLocatorAgreesWithPetscInverseMap) {
   std::printf("  %s: CellLocator: largest |x(ξ) − x| %.3g m\n", BoxCaseName({GetParam(), 0}).c_str(), worst);
 }
 
-INSTANTIATE_TEST_SUITE_P(BoxMeshes, HeatElement,
-                         ::testing::ValuesIn(AllBoxCases()), BoxCaseName);
+INSTANTIATE_TEST_SUITE_P(BoxMeshes, HeatElement, ::testing::ValuesIn(AllBoxCases()), BoxCaseName);
 
 }  // namespace
 }  // namespace vibrotherm::testing

@@ -42,7 +42,9 @@ inline std::string BoxCaseName(const ::testing::TestParamInfo<BoxCase>& info) {
 /// The box [0, 1] × [0, 0.75] (× [0, 0.5]): its extent along each axis.
 inline constexpr std::array<double, 3> kBoxUpper = {1.0, 0.75, 0.5};
 
-inline double BoxVolume(int dim) { return dim == 2 ? kBoxUpper[0] * kBoxUpper[1] : kBoxUpper[0] * kBoxUpper[1] * kBoxUpper[2]; }
+inline double BoxVolume(int dim) {
+  return dim == 2 ? kBoxUpper[0] * kBoxUpper[1] : kBoxUpper[0] * kBoxUpper[1] * kBoxUpper[2];
+}
 
 /// The box's grid split into simplices: every square or cube into 2 or 6 along
 /// its main diagonal (Kuhn's split: conforming, as every cell uses the same
@@ -69,7 +71,8 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
           for (int s = 0; s < dim; ++s) ++ijk[axes[s]], corners[s + 1] = vertex(ijk);
           double e[3][3];
           for (int s = 0; s < dim; ++s)
-            for (int d = 0; d < dim; ++d) e[s][d] = coordinates[dim * corners[s + 1] + d] - coordinates[dim * corners[0] + d];
+            for (int d = 0; d < dim; ++d)
+              e[s][d] = coordinates[dim * corners[s + 1] + d] - coordinates[dim * corners[0] + d];
           const double volume = dim == 2 ? e[0][0] * e[1][1] - e[0][1] * e[1][0]
                                          : e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
                                                e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
@@ -103,7 +106,8 @@ inline PetscErrorCode BoxMesh(const BoxCase& c, DM* dm) {
   PetscCall(VecGetArray(coordinates, &x));
   for (PetscInt v = 0; v < n / c.dim; ++v) {
     bool interior = true;
-    for (int d = 0; d < c.dim; ++d) interior = interior && x[v * c.dim + d] > 1e-12 && x[v * c.dim + d] < upper[d] - 1e-12;
+    for (int d = 0; d < c.dim; ++d)
+      interior = interior && x[v * c.dim + d] > 1e-12 && x[v * c.dim + d] < upper[d] - 1e-12;
     if (interior)
       for (int d = 0; d < c.dim; ++d) x[v * c.dim + d] += 0.03 * (d + 1) * upper[d] * (v % 2 ? 1.0 : -1.0);
   }

@@ -117,12 +117,14 @@ TEST_P(DimensionFromDm, PatchTestLinearDisplacement) {
       energy_density += sigma[i][j] * 0.5 * (Gradient(i, j) + Gradient(j, i));
     }
   Vec u, Ku;
-  Apply([=](const double* x, double* v) {
-    for (int i = 0; i < D; ++i) {
-      v[i] = 1e-5 * (i + 1);
-      for (int j = 0; j < D; ++j) v[i] += Gradient(i, j) * x[j];
-    }
-  }, &u, &Ku);
+  Apply(
+      [=](const double* x, double* v) {
+        for (int i = 0; i < D; ++i) {
+          v[i] = 1e-5 * (i + 1);
+          for (int j = 0; j < D; ++j) v[i] += Gradient(i, j) * x[j];
+        }
+      },
+      &u, &Ku);
   PetscReal boundary_force;
   VecNorm(Ku, NORM_INFINITY, &boundary_force);
   const double interior = InteriorMax(space_, Ku) / boundary_force;
@@ -156,9 +158,10 @@ TEST_P(DimensionFromDm, PatchTestLinearDisplacement) {
     DMPlexVecRestoreClosure(dm_, section, u_local, c, nullptr, &cu);
   }
   DMRestoreLocalVector(dm_, &u_local);
-  std::printf("  %s: patch test: stress error %.3g, interior residual %.3g (of the boundary force), "
-              "uKu/exact − 1 = %.3g\n",
-              BoxCaseName({GetParam(), 0}).c_str(), stress_error, interior, PetscRealPart(uKu) / exact - 1);
+  std::printf(
+      "  %s: patch test: stress error %.3g, interior residual %.3g (of the boundary force), "
+      "uKu/exact − 1 = %.3g\n",
+      BoxCaseName({GetParam(), 0}).c_str(), stress_error, interior, PetscRealPart(uKu) / exact - 1);
   EXPECT_LT(stress_error, 1e-10);
   EXPECT_LT(interior, 1e-10);
   EXPECT_NEAR(PetscRealPart(uKu), exact, 1e-10 * exact);
@@ -169,9 +172,11 @@ TEST_P(DimensionFromDm, PatchTestLinearDisplacement) {
 TEST_P(DimensionFromDm, BlockKernelAgreesWithMatMult) {
   const int D = GetParam().dim;
   Vec u, Ku, blocked;
-  Apply([=](const double* x, double* v) {
-    for (int i = 0; i < D; ++i) v[i] = std::sin(3.0 * x[0] + i) * std::cos(2.0 * x[D - 1]);
-  }, &u, &Ku);
+  Apply(
+      [=](const double* x, double* v) {
+        for (int i = 0; i < D; ++i) v[i] = std::sin(3.0 * x[0] + i) * std::cos(2.0 * x[D - 1]);
+      },
+      &u, &Ku);
   VecDuplicate(Ku, &blocked);
   for (bool compress : {false, true}) {
     wave::BlockKernel kernel;
@@ -214,12 +219,11 @@ TEST_P(DimensionFromDm, LtsLevelsReachEveryDof) {
   for (double& g : q.grad) g *= 2.0;
   for (double& w : q.weight) w /= std::pow(2.0, GetParam().dim);
   EXPECT_NEAR(wave::CellAngularFrequency(q, material_, hrz), 2.0 * omega, 1e-9 * omega);
-  std::printf("  %s: %" PetscInt_FMT " LTS level(s), ω of the first cell %.4g rad/s\n", BoxCaseName({GetParam(), 0}).c_str(),
-              levels.levels, omega);
+  std::printf("  %s: %" PetscInt_FMT " LTS level(s), ω of the first cell %.4g rad/s\n",
+              BoxCaseName({GetParam(), 0}).c_str(), levels.levels, omega);
 }
 
-INSTANTIATE_TEST_SUITE_P(BoxMeshes, DimensionFromDm,
-                         ::testing::ValuesIn(AllBoxCases()), BoxCaseName);
+INSTANTIATE_TEST_SUITE_P(BoxMeshes, DimensionFromDm, ::testing::ValuesIn(AllBoxCases()), BoxCaseName);
 
 }  // namespace
 }  // namespace vibrotherm::testing

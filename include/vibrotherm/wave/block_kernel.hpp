@@ -67,8 +67,8 @@ class BlockKernel {
   mutable std::vector<std::int32_t> used_columns_;    ///< compressed rows: the owned block columns they read
   PetscLogEvent event_ = -1;
   bool wide_ = false, compress_rows_ = false, fallback_ = false;
-  Vec product_ = nullptr;                     ///< fallback with compressed rows: A x before the copy
-  std::vector<PetscInt> rows_with_entries_;   ///< fallback with compressed rows: local rows to write
+  Vec product_ = nullptr;                    ///< fallback with compressed rows: A x before the copy
+  std::vector<PetscInt> rows_with_entries_;  ///< fallback with compressed rows: local rows to write
 };
 
 }  // namespace vibrotherm::wave
