@@ -1,6 +1,7 @@
 // A Lagrange finite-element space (degree 1 or 2, any number of components) on
 // the bulk cells of a DMPlex: its section (set on the DM), the element
-// tabulation and quadrature, and physical node coordinates.
+// tabulation and quadrature, and physical node coordinates. The dimension (2 or
+// 3) and the cell shape (simplex or tensor) are the DM's.
 //
 // Cohesive (crack) cells carry no unknowns: the space lives on the bulk cells,
 // whose closures hold every vertex, so split crack faces get independent dofs.
@@ -65,7 +66,7 @@ class LagrangeSpace {
   PetscErrorCode Evaluate(PetscInt cell, CellQuadrature* q) const;
 
   /// Physical coordinates of every local node: nodes × 2, indexed by local
-  /// node = local dof offset / components.
+  /// node = local dof offset / components. 2D only; refused in 3D.
   PetscErrorCode NodeCoordinates(std::vector<std::array<double, 2>>* coords) const;
   /// The same for any dimension: dim() coordinates per local node, node-major.
   PetscErrorCode NodePositions(std::vector<double>* coords) const;
