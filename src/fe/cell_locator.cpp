@@ -5,112 +5,201 @@
 #include <limits>
 
 namespace vibrotherm::fe {
+namespace {
+
+/// Sign (±1) of axis d at tensor corner k, corners in Gray-code order so that
+/// consecutive corners share an edge (2D: counter-clockwise from (−1, −1)).
+double CornerSign(int k, int d) { return ((k ^ (k >> 1)) >> d) & 1 ? 1.0 : -1.0; }
+
+/// The reference corners the locator maps: the simplex's vertices, or the
+/// 2^dim tensor corners (CornerSign).
+std::vector<double> ReferenceCorners(int dim, bool simplex) {
+  std::vector<double> corners;
+  if (simplex) {
+    for (int k = 0; k <= dim; ++k)
+      for (int d = 0; d < dim; ++d) corners.push_back(k == d + 1 ? 1.0 : -1.0);
+    return corners;
+  }
+  for (int k = 0; k < 1 << dim; ++k)
+    for (int d = 0; d < dim; ++d) corners.push_back(CornerSign(k, d));
+  return corners;
+}
+
+/// One Newton correction: J d = f for a dim × dim row-major J, by its adjugate.
+void SolveJacobian(const std::array<double, 9>& J, const double* f, int dim, double* d) {
+  if (dim == 2) {
+    const double det = J[0] * J[3] - J[1] * J[2];
+    d[0] = (J[3] * f[0] - J[1] * f[1]) / det, d[1] = (-J[2] * f[0] + J[0] * f[1]) / det;
+    return;
+  }
+  const double adj[9] = {J[4] * J[8] - J[5] * J[7], J[2] * J[7] - J[1] * J[8], J[1] * J[5] - J[2] * J[4],
+                         J[5] * J[6] - J[3] * J[8], J[0] * J[8] - J[2] * J[6], J[2] * J[3] - J[0] * J[5],
+                         J[3] * J[7] - J[4] * J[6], J[1] * J[6] - J[0] * J[7], J[0] * J[4] - J[1] * J[3]};
+  const double det = J[0] * adj[0] + J[1] * adj[3] + J[2] * adj[6];
+  for (int i = 0; i < 3; ++i) d[i] = (adj[3 * i] * f[0] + adj[3 * i + 1] * f[1] + adj[3 * i + 2] * f[2]) / det;
+}
+
+}  // namespace
 
 PetscErrorCode CellLocator::Setup(const LagrangeSpace& space) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
   simplex_ = space.simplex();
-  const std::vector<double> ref_corners = simplex_ ? std::vector<double>{-1, -1, 1, -1, -1, 1}
-                                                   : std::vector<double>{-1, -1, 1, -1, 1, 1, -1, 1};
-  const PetscInt ncorners = static_cast<PetscInt>(ref_corners.size() / 2);
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  dim_ = space.dim();
+  const int D = dim_;
+  const std::vector<double> ref_corners = ReferenceCorners(D, simplex_);
+  corners_ = static_cast<int>(ref_corners.size()) / D;
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   cells_.clear();
   for (PetscInt c : space.cells()) {
     Cell cell{c, {}};
-    PetscCall(DMPlexReferenceToCoordinates(dm, c, ncorners, ref_corners.data(), cell.corners.data()));
-    for (PetscInt k = 0; k < ncorners; ++k)
-      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], cell.corners[2 * k + d]), hi[d] = std::max(hi[d], cell.corners[2 * k + d]);
+    PetscCall(DMPlexReferenceToCoordinates(dm, c, corners_, ref_corners.data(), cell.corners.data()));
+    for (int k = 0; k < corners_; ++k)
+      for (int d = 0; d < D; ++d) {
+        lo[d] = std::min(lo[d], cell.corners[D * k + d]);
+        hi[d] = std::max(hi[d], cell.corners[D * k + d]);
+      }
     cells_.push_back(cell);
   }
   if (cells_.empty()) PetscFunctionReturn(0);
   first_point_ = cells_.front().point;
   index_of_point_.assign(cells_.back().point - first_point_ + 1, std::numeric_limits<std::size_t>::max());
   for (std::size_t i = 0; i < cells_.size(); ++i) index_of_point_[cells_[i].point - first_point_] = i;
-  // About one cell a bin.
-  const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
-  bin_ = std::max(1e-300, std::sqrt(area / static_cast<double>(cells_.size())));
-  x0_ = lo[0], y0_ = lo[1];
-  nx_ = std::max(1, static_cast<int>(std::ceil((hi[0] - lo[0]) / bin_)));
-  ny_ = std::max(1, static_cast<int>(std::ceil((hi[1] - lo[1]) / bin_)));
-  bins_.assign(static_cast<std::size_t>(nx_) * ny_, {});
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    double clo[2] = {INFINITY, INFINITY}, chi[2] = {-INFINITY, -INFINITY};
-    for (PetscInt k = 0; k < ncorners; ++k)
-      for (int d = 0; d < 2; ++d)
-        clo[d] = std::min(clo[d], cells_[i].corners[2 * k + d]), chi[d] = std::max(chi[d], cells_[i].corners[2 * k + d]);
-    const int i0 = std::clamp(static_cast<int>((clo[0] - x0_) / bin_), 0, nx_ - 1);
-    const int i1 = std::clamp(static_cast<int>((chi[0] - x0_) / bin_), 0, nx_ - 1);
-    const int j0 = std::clamp(static_cast<int>((clo[1] - y0_) / bin_), 0, ny_ - 1);
-    const int j1 = std::clamp(static_cast<int>((chi[1] - y0_) / bin_), 0, ny_ - 1);
-    for (int j = j0; j <= j1; ++j)
-      for (int k = i0; k <= i1; ++k) bins_[static_cast<std::size_t>(j) * nx_ + k].push_back(i);
-  }
+  FillBins(lo, hi);
   PetscFunctionReturn(0);
 }
 
-std::array<double, 2> CellLocator::Map(const Cell& c, const std::array<double, 2>& r) const {
-  const auto& p = c.corners;
-  if (simplex_) {  // affine: x = p0 + (p1 − p0)(ξ + 1)/2 + (p2 − p0)(η + 1)/2
-    const double s = 0.5 * (r[0] + 1), t = 0.5 * (r[1] + 1);
-    return {p[0] + s * (p[2] - p[0]) + t * (p[4] - p[0]), p[1] + s * (p[3] - p[1]) + t * (p[5] - p[1])};
+void CellLocator::FillBins(const double* lo, const double* hi) {
+  const int D = dim_;
+  // About one cell a bin.
+  double measure = hi[0] - lo[0];
+  for (int d = 1; d < D; ++d) measure *= hi[d] - lo[d];
+  const double per_cell = measure / static_cast<double>(cells_.size());
+  bin_ = std::max(1e-300, D == 2 ? std::sqrt(per_cell) : std::cbrt(per_cell));
+  bins_per_axis_ = {1, 1, 1};
+  for (int d = 0; d < D; ++d) {
+    origin_[d] = lo[d];
+    bins_per_axis_[d] = std::max(1, static_cast<int>(std::ceil((hi[d] - lo[d]) / bin_)));
   }
-  const double n[4] = {0.25 * (1 - r[0]) * (1 - r[1]), 0.25 * (1 + r[0]) * (1 - r[1]), 0.25 * (1 + r[0]) * (1 + r[1]),
-                       0.25 * (1 - r[0]) * (1 + r[1])};
-  return {n[0] * p[0] + n[1] * p[2] + n[2] * p[4] + n[3] * p[6], n[0] * p[1] + n[1] * p[3] + n[2] * p[5] + n[3] * p[7]};
+  const auto [nx, ny, nz] = bins_per_axis_;
+  bins_.assign(static_cast<std::size_t>(nx) * ny * nz, {});
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int k = 0; k < corners_; ++k)
+      for (int d = 0; d < D; ++d) {
+        clo[d] = std::min(clo[d], cells_[i].corners[D * k + d]);
+        chi[d] = std::max(chi[d], cells_[i].corners[D * k + d]);
+      }
+    int first[3] = {0, 0, 0}, last[3] = {0, 0, 0};
+    for (int d = 0; d < D; ++d) {
+      first[d] = std::clamp(static_cast<int>((clo[d] - origin_[d]) / bin_), 0, bins_per_axis_[d] - 1);
+      last[d] = std::clamp(static_cast<int>((chi[d] - origin_[d]) / bin_), 0, bins_per_axis_[d] - 1);
+    }
+    for (int l = first[2]; l <= last[2]; ++l)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int k = first[0]; k <= last[0]; ++k) bins_[(static_cast<std::size_t>(l) * ny + j) * nx + k].push_back(i);
+  }
 }
 
-std::array<double, 4> CellLocator::MapJacobian(const Cell& c, const std::array<double, 2>& r) const {
+ReferencePoint CellLocator::Map(const Cell& c, const ReferencePoint& r) const {
+  const int D = dim_;
   const auto& p = c.corners;
-  if (simplex_) return {0.5 * (p[2] - p[0]), 0.5 * (p[4] - p[0]), 0.5 * (p[3] - p[1]), 0.5 * (p[5] - p[1])};
-  const double dxi[4] = {-0.25 * (1 - r[1]), 0.25 * (1 - r[1]), 0.25 * (1 + r[1]), -0.25 * (1 + r[1])};
-  const double deta[4] = {-0.25 * (1 - r[0]), -0.25 * (1 + r[0]), 0.25 * (1 + r[0]), 0.25 * (1 - r[0])};
-  std::array<double, 4> J{};
-  for (int k = 0; k < 4; ++k) {
-    J[0] += dxi[k] * p[2 * k], J[1] += deta[k] * p[2 * k];
-    J[2] += dxi[k] * p[2 * k + 1], J[3] += deta[k] * p[2 * k + 1];
+  ReferencePoint x = {0.0, 0.0, 0.0};
+  if (simplex_) {  // affine: x = p0 + Σ_d (p_{d+1} − p0)(ξ_d + 1)/2
+    for (int i = 0; i < D; ++i) {
+      x[i] = p[i];
+      for (int d = 0; d < D; ++d) x[i] += 0.5 * (r[d] + 1) * (p[D * (d + 1) + i] - p[i]);
+    }
+    return x;
+  }
+  double n[8] = {};  // multilinear: the corner's product of (1 ± ξ_d)/2
+  for (int k = 0; k < corners_; ++k) {
+    n[k] = D == 2 ? 0.25 : 0.125;
+    for (int d = 0; d < D; ++d) n[k] *= CornerSign(k, d) > 0 ? 1 + r[d] : 1 - r[d];
+  }
+  for (int i = 0; i < D; ++i) {
+    x[i] = n[0] * p[i];
+    for (int k = 1; k < corners_; ++k) x[i] += n[k] * p[D * k + i];
+  }
+  return x;
+}
+
+std::array<double, 9> CellLocator::MapJacobian(const Cell& c, const ReferencePoint& r) const {
+  const int D = dim_;
+  const auto& p = c.corners;
+  std::array<double, 9> J{};
+  if (simplex_) {
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) J[D * i + j] = 0.5 * (p[D * (j + 1) + i] - p[i]);
+    return J;
+  }
+  for (int k = 0; k < corners_; ++k) {
+    double dn[3];  // ∂n_k/∂ξ_j
+    for (int j = 0; j < D; ++j) {
+      dn[j] = CornerSign(k, j) * (D == 2 ? 0.25 : 0.125);
+      for (int d = 0; d < D; ++d)
+        if (d != j) dn[j] *= CornerSign(k, d) > 0 ? 1 + r[d] : 1 - r[d];
+    }
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) J[D * i + j] += dn[j] * p[D * k + i];
   }
   return J;
 }
 
-bool CellLocator::Inside(const Cell& c, double x, double y, std::array<double, 2>* ref) const {
-  std::array<double, 2> r = {0.0, 0.0};
-  if (simplex_) r = {-1.0 / 3.0, -1.0 / 3.0};
+bool CellLocator::Inside(const Cell& c, const double* x, ReferencePoint* ref) const {
+  const int D = dim_;
+  ReferencePoint r = {0.0, 0.0, 0.0};
+  if (simplex_) r = D == 2 ? ReferencePoint{-1.0 / 3.0, -1.0 / 3.0, 0.0} : ReferencePoint{-0.5, -0.5, -0.5};
   bool converged = false;
-  for (int it = 0; it < 20 && !converged; ++it) {  // Newton on x(r) = (x, y); one step for triangles
+  for (int it = 0; it < 20 && !converged; ++it) {  // Newton on x(r) = x; one step for simplices
     const auto X = Map(c, r);
-    const auto J = MapJacobian(c, r);
-    const double fx = X[0] - x, fy = X[1] - y, det = J[0] * J[3] - J[1] * J[2];
-    const double d0 = (J[3] * fx - J[1] * fy) / det, d1 = (-J[2] * fx + J[0] * fy) / det;
-    r[0] -= d0, r[1] -= d1;
-    converged = std::abs(d0) + std::abs(d1) < 1e-12;
+    double f[3], d[3];
+    for (int i = 0; i < D; ++i) f[i] = X[i] - x[i];
+    SolveJacobian(MapJacobian(c, r), f, D, d);
+    double step = std::abs(d[0]);
+    for (int i = 1; i < D; ++i) step += std::abs(d[i]);
+    for (int i = 0; i < D; ++i) r[i] -= d[i];
+    converged = step < 1e-12;
   }
   *ref = r;
-  // From a point well outside a bilinear quad Newton may wander and stop inside
-  // [-1, 1]² without having converged: such a cell does not hold the point.
+  // From a point well outside a multilinear cell Newton may wander and stop
+  // inside the reference cell without having converged: such a cell does not hold the point.
   if (!converged && !simplex_) return false;
-  const double tol = 1e-10;
-  return simplex_ ? (r[0] >= -1 - tol && r[1] >= -1 - tol && r[0] + r[1] <= tol)
-                  : (std::abs(r[0]) <= 1 + tol && std::abs(r[1]) <= 1 + tol);
+  return InReferenceCell(r.data(), D, simplex_, 1e-10);
 }
 
-void CellLocator::Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const {
+void CellLocator::Locate(const double* x, PetscInt* cell, ReferencePoint* ref) const {
   *cell = -1;
   if (bins_.empty()) return;
-  const int i = static_cast<int>(std::floor((x - x0_) / bin_)), j = static_cast<int>(std::floor((y - y0_) / bin_));
-  if (i < 0 || j < 0 || i >= nx_ || j >= ny_) {
-    // a point on the far edge of the box belongs to the last bin
-    if (i > nx_ || j > ny_ || i < -1 || j < -1) return;
+  int index[3] = {0, 0, 0};
+  for (int d = 0; d < dim_; ++d) {
+    const int i = static_cast<int>(std::floor((x[d] - origin_[d]) / bin_));
+    if (i > bins_per_axis_[d] || i < -1) return;  // a point on the far side of the box belongs to the last bin
+    index[d] = std::clamp(i, 0, bins_per_axis_[d] - 1);
   }
-  const std::size_t b = static_cast<std::size_t>(std::clamp(j, 0, ny_ - 1)) * nx_ + std::clamp(i, 0, nx_ - 1);
+  const std::size_t b =
+      (static_cast<std::size_t>(index[2]) * bins_per_axis_[1] + index[1]) * bins_per_axis_[0] + index[0];
   for (std::size_t k : bins_[b])
-    if (Inside(cells_[k], x, y, ref)) {
+    if (Inside(cells_[k], x, ref)) {
       *cell = cells_[k].point;
       return;
     }
 }
 
-std::array<double, 4> CellLocator::Jacobian(PetscInt cell, const std::array<double, 2>& ref) const {
+void CellLocator::Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const {
+  const double point[2] = {x, y};
+  ReferencePoint r = {0.0, 0.0, 0.0};
+  Locate(point, cell, &r);
+  if (*cell >= 0) *ref = {r[0], r[1]};
+}
+
+std::array<double, 9> CellLocator::Jacobian(PetscInt cell, const ReferencePoint& ref) const {
   return MapJacobian(cells_[index_of_point_[cell - first_point_]], ref);
+}
+
+std::array<double, 4> CellLocator::Jacobian(PetscInt cell, const std::array<double, 2>& ref) const {
+  const auto J = Jacobian(cell, ReferencePoint{ref[0], ref[1], 0.0});
+  return {J[0], J[1], J[2], J[3]};
 }
 
 }  // namespace vibrotherm::fe

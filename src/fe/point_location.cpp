@@ -11,12 +11,12 @@ PetscErrorCode LocatePoints(const LagrangeSpace& space, const std::vector<double
   MPI_Comm comm = PetscObjectComm((PetscObject)space.dm());
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  const std::size_t n = xy.size() / 2;
+  const std::size_t D = static_cast<std::size_t>(space.dim()), n = xy.size() / D;
   points->assign(n, LocatedPoint{});
-  std::vector<std::array<double, 2>> refs(n);
+  std::vector<ReferencePoint> refs(n);
   std::vector<int> mine(n, INT_MAX), owner(n);
   for (std::size_t i = 0; i < n; ++i) {
-    PetscCall(space.Locate(xy[2 * i], xy[2 * i + 1], &(*points)[i].cell, &refs[i]));
+    PetscCall(space.Locate(&xy[D * i], &(*points)[i].cell, &refs[i]));
     if ((*points)[i].cell >= 0) mine[i] = rank;
   }
   if (n > 0) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));

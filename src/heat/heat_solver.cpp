@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/heat/heat_element.hpp"
 #include "vibrotherm/heat/step_ladder.hpp"
 
 namespace vibrotherm::heat {
@@ -94,6 +95,11 @@ PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
   // M = ∫ρ c_p φ_a φ_b, K = ∫ k ∇φ_a·∇φ_b (assembled at the end of AddConvectiveFilm).
   PetscSection section;
   PetscCall(DMGetLocalSection(dm_, &section));
+  // Row sums of P2 tetrahedra are negative at the vertices (−V/20): no lumped capacity there.
+  PetscCheck(!(lumped && space_.simplex() && space_.degree() == 2 && space_.dim() == 3),
+             PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
+             "-heat_lumped_mass: row-sum lumping of P2 tetrahedra gives negative capacities; use the "
+             "consistent mass or degree 1");
   PetscCall(DMCreateMatrix(dm_, &M_));
   PetscCall(DMCreateMatrix(dm_, &K_));
   const int Nb = space_.nodes_per_cell();
@@ -102,17 +108,7 @@ PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
   const double rc = material_.density * material_.capacity, k = material_.conductivity;
   for (PetscInt c : space_.cells()) {
     PetscCall(space_.Evaluate(c, &q));
-    std::fill(Me.begin(), Me.end(), 0.0);
-    std::fill(Ke.begin(), Ke.end(), 0.0);
-    for (int p = 0; p < q.points; ++p) {
-      const double* phi = q.value + p * Nb;
-      const double* g = &q.grad[p * Nb * 2];
-      for (int a = 0; a < Nb; ++a)
-        for (int b = 0; b < Nb; ++b) {
-          Me[lumped ? a * Nb + a : a * Nb + b] += q.weight[p] * rc * phi[a] * phi[b];
-          Ke[a * Nb + b] += q.weight[p] * k * (g[2 * a] * g[2 * b] + g[2 * a + 1] * g[2 * b + 1]);
-        }
-    }
+    ElementHeatMatrices(q, rc, k, lumped, Me.data(), Ke.data());
     PetscCall(DMPlexMatSetClosure(dm_, section, nullptr, M_, c, Me.data(), ADD_VALUES));
     PetscCall(DMPlexMatSetClosure(dm_, section, nullptr, K_, c, Ke.data(), ADD_VALUES));
   }

@@ -68,7 +68,9 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave_dm);
   material_ = material;
-  PetscCall(space_.Setup(wave_dm, degree, 2));
+  PetscInt dim;
+  PetscCall(DMGetDimension(wave_dm, &dim));
+  PetscCall(space_.Setup(wave_dm, degree, dim));
   Mat K;
   Vec mass;
   PetscCall(wave::AssembleElasticOperators(space_, material, &K, &mass));
@@ -131,7 +133,7 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<boo
   PetscCall(DMGlobalToLocal(dm, phi, INSERT_VALUES, local));
   PetscSection section;
   PetscCall(DMGetLocalSection(dm, &section));
-  const int n = 2 * space_.nodes_per_cell();
+  const int n = space_.dim() * space_.nodes_per_cell();
   std::vector<double> Ke(n * n);
   fe::CellQuadrature q;
   double energy[2] = {0.0, 0.0};  // near the cracks, everywhere

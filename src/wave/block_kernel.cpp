@@ -38,6 +38,7 @@ PetscErrorCode CopyPart(Mat seq, bool compress, BlockCsr* part) {
 }  // namespace
 
 BlockKernel::~BlockKernel() {
+  (void)VecDestroy(&product_);
   (void)VecScatterDestroy(&scatter_);
   (void)VecDestroy(&ghosts_);
 }
@@ -50,13 +51,17 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide, bool compress_rows) {
   PetscCall(MatGetBlockSize(A, &bs));
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATMPIBAIJ, &mpi));
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQBAIJ, &seq));
-  PetscCheck((mpi || seq) && bs == 2, comm, PETSC_ERR_SUP,
-             "block kernel: needs a BAIJ matrix of block size 2, got block size %" PetscInt_FMT, bs);
+  PetscCheck(mpi || seq, comm, PETSC_ERR_SUP, "block kernel: needs a BAIJ matrix");
+  A_ = A;
+  compress_rows_ = compress_rows;
+  fallback_ = bs != 2;
+  if (fallback_) {
+    PetscCall(FallbackSetup());
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscLogEventGetId("WaveBlockMult", &event_));
   if (event_ < 0) PetscCall(PetscLogEventRegister("WaveBlockMult", MAT_CLASSID, &event_));
-  A_ = A;
   wide_ = allow_wide && WideKernelAvailable();
-  compress_rows_ = compress_rows;
   PetscCall(VecScatterDestroy(&scatter_));
   PetscCall(VecDestroy(&ghosts_));
   PetscCall(CopyArrays());
@@ -108,10 +113,49 @@ PetscErrorCode BlockKernel::CopyArrays() const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode BlockKernel::FallbackSetup() {
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&product_));
+  rows_with_entries_.clear();
+  if (!compress_rows_) PetscFunctionReturn(0);
+  PetscCall(MatCreateVecs(A_, nullptr, &product_));
+  PetscInt start, end;
+  PetscCall(MatGetOwnershipRange(A_, &start, &end));
+  for (PetscInt r = start; r < end; ++r) {
+    PetscInt entries;
+    PetscCall(MatGetRow(A_, r, &entries, nullptr, nullptr));
+    if (entries > 0) rows_with_entries_.push_back(r - start);
+    PetscCall(MatRestoreRow(A_, r, &entries, nullptr, nullptr));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BlockKernel::FallbackApply(Vec x, Vec y) const {
+  PetscFunctionBeginUser;
+  if (!compress_rows_) {
+    PetscCall(MatMult(A_, x, y));
+    PetscFunctionReturn(0);
+  }
+  // Only the rows with entries are written, as the blocked loop does.
+  PetscCall(MatMult(A_, x, product_));
+  const PetscScalar* p;
+  PetscScalar* ya;
+  PetscCall(VecGetArrayRead(product_, &p));
+  PetscCall(VecGetArray(y, &ya));
+  for (PetscInt i : rows_with_entries_) ya[i] = p[i];
+  PetscCall(VecRestoreArray(y, &ya));
+  PetscCall(VecRestoreArrayRead(product_, &p));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscFunctionBeginUser;
   PetscCheck(A_, PetscObjectComm((PetscObject)x), PETSC_ERR_ORDER, "block kernel: Apply before Setup");
   PetscCheck(x != y, PetscObjectComm((PetscObject)x), PETSC_ERR_ARG_IDN, "block kernel: x and y must differ");
+  if (fallback_) {
+    PetscCall(FallbackApply(x, y));
+    PetscFunctionReturn(0);
+  }
   PetscObjectState state;
   PetscCall(PetscObjectStateGet((PetscObject)A_, &state));
   if (state != state_) PetscCall(CopyArrays());  // A was rescaled or reassembled since

@@ -7,24 +7,24 @@
 namespace vibrotherm::wave {
 
 void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, double* Ke) {
-  const int Nb = q.nodes, n = 2 * Nb;
+  const int Nb = q.nodes, D = q.dim, n = D * Nb;
   std::fill(Ke, Ke + n * n, 0.0);
   for (int p = 0; p < q.points; ++p) {
     const double w = q.weight[p];
-    const double* g = &q.grad[p * Nb * 2];
+    const double* g = &q.grad[p * Nb * D];
     for (int a = 0; a < Nb; ++a)
       for (int b = 0; b < Nb; ++b) {
-        const double dot = g[2 * a] * g[2 * b] + g[2 * a + 1] * g[2 * b + 1];
-        for (int i = 0; i < 2; ++i)
-          for (int j = 0; j < 2; ++j)
-            Ke[(2 * a + i) * n + 2 * b + j] +=
-                w * (lambda * g[2 * a + i] * g[2 * b + j] + G * ((i == j ? dot : 0.0) + g[2 * a + j] * g[2 * b + i]));
+        const double dot = fe::GradientDot(g + D * a, g + D * b, D);
+        for (int i = 0; i < D; ++i)
+          for (int j = 0; j < D; ++j)
+            Ke[(D * a + i) * n + D * b + j] +=
+                w * (lambda * g[D * a + i] * g[D * b + j] + G * ((i == j ? dot : 0.0) + g[D * a + j] * g[D * b + i]));
       }
   }
 }
 
 void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double* me) {
-  const int Nb = q.nodes;
+  const int Nb = q.nodes, D = q.dim;
   std::vector<double> row_sum(Nb, 0.0), diag(Nb, 0.0);
   double cell_mass = 0.0;
   for (int p = 0; p < q.points; ++p) {
@@ -38,7 +38,8 @@ void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double
   }
   double diag_sum = 0.0;
   for (double d : diag) diag_sum += d;
-  for (int a = 0; a < Nb; ++a) me[2 * a] = me[2 * a + 1] = hrz ? diag[a] * cell_mass / diag_sum : row_sum[a];
+  for (int a = 0; a < Nb; ++a)
+    std::fill(me + D * a, me + D * (a + 1), hrz ? diag[a] * cell_mass / diag_sum : row_sum[a]);
 }
 
 namespace {
@@ -52,7 +53,10 @@ PetscErrorCode AddCells(const fe::LagrangeSpace& space, const ElasticMaterial& m
   PetscSection section;
   PetscCall(DMGetLocalSection(dm, &section));
   const double lambda = material.lambda(), G = material.shear_modulus();
-  const int n = 2 * space.nodes_per_cell();
+  // The displacement has as many components as the mesh has dimensions.
+  PetscCheck(space.components() == space.dim(), PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG,
+             "elastic operator on a %" PetscInt_FMT "-component space of a %dD mesh", space.components(), space.dim());
+  const int n = space.dim() * space.nodes_per_cell();
   const bool hrz = space.simplex() && space.degree() == 2;
   std::vector<PetscScalar> Ke(n * n), me(n);
   fe::CellQuadrature q;

@@ -9,7 +9,7 @@
 namespace vibrotherm::wave {
 
 double CellAngularFrequency(const fe::CellQuadrature& q, const ElasticMaterial& material, bool hrz) {
-  const int n = 2 * q.nodes;
+  const int n = q.dim * q.nodes;
   std::vector<double> K(n * n), me(n), x(n), y(n);
   ElementStiffness(q, material.lambda(), material.shear_modulus(), K.data());
   ElementLumpedMass(q, material.density, hrz, me.data());
@@ -17,7 +17,7 @@ double CellAngularFrequency(const fe::CellQuadrature& q, const ElasticMaterial& 
     for (int j = 0; j < n; ++j) K[i * n + j] /= std::sqrt(me[i] * me[j]);  // symmetric M^-1/2 K M^-1/2
   // Power iteration from a checkerboard start (the highest mode's shape); the
   // estimate only groups cells: each level's exact spectrum sets the step.
-  for (int i = 0; i < n; ++i) x[i] = ((i / 2 + i) % 2 ? 1.0 : -1.0) * (1.0 + 0.01 * i);
+  for (int i = 0; i < n; ++i) x[i] = ((i / q.dim + i) % 2 ? 1.0 : -1.0) * (1.0 + 0.01 * i);
   double lambda = 0.0;
   for (int it = 0; it < 100; ++it) {
     double norm = 0.0, rayleigh = 0.0;
@@ -137,7 +137,7 @@ PetscErrorCode DofLevels(const fe::LagrangeSpace& space, const LtsLevels& levels
   PetscCall(VecGetLocalSize(global, &m));
   finest->assign(m, -1);
   touched->assign(levels.levels, std::vector<char>(m, 0));
-  const std::vector<PetscScalar> ones(2 * space.nodes_per_cell(), 1.0);
+  const std::vector<PetscScalar> ones(space.components() * space.nodes_per_cell(), 1.0);
   for (PetscInt l = 0; l < levels.levels; ++l) {
     PetscCall(VecSet(local, 0.0));
     for (std::size_t k = 0; k < levels.cell_level.size(); ++k)

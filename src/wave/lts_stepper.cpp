@@ -65,6 +65,7 @@ PetscErrorCode LtsStepper::Setup(const fe::LagrangeSpace& space, const ElasticMa
                                  double omega_dt_max, const LtsOptions& options) {
   PetscFunctionBeginUser;
   comm_ = PetscObjectComm((PetscObject)space.dm());
+  components_ = space.components();
   mass_ = mass;
   excitation_ = excitation;
   omega_dt_max_ = omega_dt_max;
@@ -93,7 +94,7 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
   for (std::size_t l = 0; l < level_.size(); ++l) {
     Level& L = *level_[l];
     L.boundary = std::make_unique<WaveBoundary>();
-    const auto here = [&](PetscInt node) { return element_finest_[2 * node] == static_cast<PetscInt>(l); };
+    const auto here = [&](PetscInt node) { return element_finest_[components_ * node] == static_cast<PetscInt>(l); };
     for (const Constraint& c : boundary.constraints)
       if (here(c.node)) L.boundary->constraints.push_back(c);
     for (const Dashpot& d : boundary.dashpots)

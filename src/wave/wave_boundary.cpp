@@ -202,6 +202,10 @@ void KeepDashpotsOnFreeDirections(PetscInt nodes, WaveBoundary* bc) {
 PetscErrorCode BuildWaveBoundary(const fe::LagrangeSpace& space, const ElasticMaterial& material,
                                  const Excitation& excitation, WaveBoundary* bc) {
   PetscFunctionBeginUser;
+  // Edges, 2×2 blocks and one constrained direction a node: a 3D face needs D×D
+  // blocks and up to two constrained directions (issue 25).
+  PetscCheck(space.dim() == 2, PetscObjectComm((PetscObject)space.dm()), PETSC_ERR_SUP,
+             "wave boundary: 2D meshes only (this one is %dD)", space.dim());
   EdgeSums sums[kKinds];
   double lengths[kKinds];
   PetscCall(SumEdgeKinds(space, material, excitation, sums, lengths));

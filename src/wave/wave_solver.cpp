@@ -82,7 +82,9 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   material_ = material;
   excitation_ = excitation;
   options_ = options;
-  PetscCall(space_.Setup(dm, options.degree, 2));
+  PetscInt dim;  // one displacement component per dimension of the mesh
+  PetscCall(DMGetDimension(dm, &dim));
+  PetscCall(space_.Setup(dm, options.degree, dim));
   PetscCall(AssembleElasticOperators(space_, material, &K_, &M_));
   PetscCall(VecDuplicate(M_, &Minv_));
   PetscCall(VecCopy(M_, Minv_));

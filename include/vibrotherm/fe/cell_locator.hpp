@@ -1,8 +1,10 @@
 // Many points located in the local bulk cells of a space, fast: a uniform grid
 // of bins over the cells' bounding boxes, then the cell's own map inverted by
-// Newton (bilinear quads, affine triangles) instead of DMPlexCoordinatesToReference
-// (~3 ms a call in PETSc 3.18). The map is PETSc's: its corners come from
-// DMPlexReferenceToCoordinates, so reference coordinates mean what PetscFE expects.
+// Newton (bilinear quads and trilinear hexahedra, affine triangles and
+// tetrahedra) instead of DMPlexCoordinatesToReference (~3 ms a call in PETSc
+// 3.18). The map is PETSc's: its corners come from DMPlexReferenceToCoordinates,
+// so reference coordinates mean what PetscFE expects. The dimension is the
+// space's (the DM's): 2 or 3.
 #pragma once
 
 #include <petscdmplex.h>
@@ -17,25 +19,35 @@ namespace vibrotherm::fe {
 class CellLocator {
  public:
   PetscErrorCode Setup(const LagrangeSpace& space);
-  /// The local bulk cell holding (x, y) (first found) and the reference coordinates; cell = -1 when none.
+  /// The local bulk cell holding point (dim coordinates; first found) and the
+  /// reference coordinates; cell = -1 when none.
+  void Locate(const double* point, PetscInt* cell, ReferencePoint* ref) const;
+  /// d x/d ξ of a located cell at a reference point (row-major dim × dim).
+  std::array<double, 9> Jacobian(PetscInt cell, const ReferencePoint& ref) const;
+  /// 2D forms of the two above.
   void Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
-  /// d(x, y)/d(ξ, η) of a located cell at a reference point (row-major 2 × 2).
   std::array<double, 4> Jacobian(PetscInt cell, const std::array<double, 2>& ref) const;
 
  private:
   struct Cell {
     PetscInt point;
-    std::array<double, 8> corners;  ///< x, y of the reference corners (3 used for triangles)
+    /// Coordinates of the reference corners, dim each: simplices' vertices, or
+    /// the tensor corners in Gray-code order (2D: counter-clockwise).
+    std::array<double, 24> corners;
   };
-  bool Inside(const Cell& c, double x, double y, std::array<double, 2>* ref) const;
-  std::array<double, 2> Map(const Cell& c, const std::array<double, 2>& ref) const;
-  std::array<double, 4> MapJacobian(const Cell& c, const std::array<double, 2>& ref) const;
+  bool Inside(const Cell& c, const double* x, ReferencePoint* ref) const;
+  ReferencePoint Map(const Cell& c, const ReferencePoint& ref) const;
+  std::array<double, 9> MapJacobian(const Cell& c, const ReferencePoint& ref) const;
+  /// The grid of bins over the box [lo, hi] and the cells listed in the bins they overlap.
+  void FillBins(const double* lo, const double* hi);
   std::vector<Cell> cells_;
   std::vector<std::size_t> index_of_point_;  ///< cell point − first cell → index in cells_
   PetscInt first_point_ = 0;
   bool simplex_ = false;
-  double x0_ = 0, y0_ = 0, bin_ = 1;
-  int nx_ = 0, ny_ = 0;
+  int dim_ = 2, corners_ = 4;
+  std::array<double, 3> origin_ = {0, 0, 0};
+  double bin_ = 1;
+  std::array<int, 3> bins_per_axis_ = {0, 0, 1};
   std::vector<std::vector<std::size_t>> bins_;
 };
 

@@ -1,6 +1,7 @@
 // A Lagrange finite-element space (degree 1 or 2, any number of components) on
 // the bulk cells of a DMPlex: its section (set on the DM), the element
-// tabulation and quadrature, and physical node coordinates.
+// tabulation and quadrature, and physical node coordinates. The dimension (2 or
+// 3) and the cell shape (simplex or tensor) are the DM's.
 //
 // Cohesive (crack) cells carry no unknowns: the space lives on the bulk cells,
 // whose closures hold every vertex, so split crack faces get independent dofs.
@@ -20,10 +21,26 @@ namespace vibrotherm::fe {
 /// Geometry of one cell at the quadrature points.
 struct CellQuadrature {
   std::vector<double> weight;  ///< w_q |det J_q| (physical measure)
-  std::vector<double> grad;    ///< [q][node][d]: ∂φ_node/∂x_d
+  std::vector<double> grad;    ///< [q][node][d]: ∂φ_node/∂x_d, d < dim
   const double* value = nullptr;  ///< [q][node]: φ_node (reference tabulation)
-  int points = 0, nodes = 0;
+  int points = 0, nodes = 0, dim = 2;
 };
+
+/// A point in reference coordinates: the first dim of them are used (2D: z = 0).
+using ReferencePoint = std::array<double, 3>;
+
+/// Whether reference coordinates r (dim of them) lie in PETSc's reference cell
+/// within tol: [-1,1]^dim, or the simplex with vertices (-1,…,-1) and the unit
+/// vectors from it (Σ r ≤ 2 − dim). NaN coordinates are outside.
+bool InReferenceCell(const double* r, int dim, bool simplex, double tol);
+
+/// ∇φ_a·∇φ_b of two gradients of `dim` entries, summed in the order x, y, z
+/// (the 2D sum is the same expression as a·b = a0 b0 + a1 b1, bit for bit).
+inline double GradientDot(const double* ga, const double* gb, int dim) {
+  double dot = ga[0] * gb[0];
+  for (int d = 1; d < dim; ++d) dot += ga[d] * gb[d];
+  return dot;
+}
 
 class LagrangeSpace {
  public:
@@ -36,6 +53,8 @@ class LagrangeSpace {
   PetscErrorCode Setup(DM dm, PetscInt degree, PetscInt components);
 
   DM dm() const { return dm_; }
+  /// The DM's topological dimension (= its coordinate dimension).
+  int dim() const { return dim_; }
   PetscInt degree() const { return degree_; }
   PetscInt components() const { return components_; }
   bool simplex() const { return simplex_; }
@@ -47,29 +66,41 @@ class LagrangeSpace {
   PetscErrorCode Evaluate(PetscInt cell, CellQuadrature* q) const;
 
   /// Physical coordinates of every local node: nodes × 2, indexed by local
-  /// node = local dof offset / components.
+  /// node = local dof offset / components. 2D only; refused in 3D.
   PetscErrorCode NodeCoordinates(std::vector<std::array<double, 2>>* coords) const;
+  /// The same for any dimension: dim() coordinates per local node, node-major.
+  PetscErrorCode NodePositions(std::vector<double>* coords) const;
 
   /// Local dof offsets of the nodes on a face (vertex nodes and, for degree 2,
   /// the edge node) with their 1D lumped weights ∫φ ds (exact, sum = length).
+  /// 2D only (a face is an edge); refused in 3D.
   PetscErrorCode FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
                            double* length) const;
 
-  /// Physical coordinates of cell's quadrature points (x, y per point).
+  /// Physical coordinates of cell's quadrature points (dim() per point).
   PetscErrorCode QuadraturePoints(PetscInt cell, std::vector<double>* xy) const;
-  /// The local bulk cell containing (x, y) and the reference coordinates there;
-  /// cell = -1 when no local cell contains it.
+  /// The local bulk cell containing point (dim() coordinates) and the
+  /// reference coordinates there (the first dim() of ref); cell = -1 when no
+  /// local cell contains it.
+  PetscErrorCode Locate(const double* point, PetscInt* cell, ReferencePoint* ref) const;
+  /// The same in 2D; refused in 3D.
   PetscErrorCode Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
-  /// Basis values at a reference point (nodes_per_cell values).
+  /// Basis values at a reference point (nodes_per_cell values; its first dim() coordinates).
+  PetscErrorCode BasisAt(const ReferencePoint& ref, std::vector<double>* phi) const;
+  /// The same in 2D; refused in 3D.
   PetscErrorCode BasisAt(const std::array<double, 2>& ref, std::vector<double>* phi) const;
-  /// Basis values and reference-coordinate derivatives ([node][2]) at a reference point.
+  /// Basis values and reference-coordinate derivatives ([node][2]) at a
+  /// reference point. 2D only; refused in 3D.
   PetscErrorCode BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
                                        std::vector<double>* dphi) const;
 
  private:
+  /// Refuses the 2D-only members on a 3D mesh (what: the member's name).
+  PetscErrorCode RequirePlanar(const char* what) const;
   DM dm_ = nullptr;
   PetscFE fe_ = nullptr;  ///< scalar Lagrange element
   PetscInt degree_ = 1, components_ = 1;
+  int dim_ = 2;
   bool simplex_ = false;
   int nodes_ = 0, qpoints_ = 0;
   std::vector<PetscInt> cells_;

@@ -15,7 +15,8 @@ struct LocatedPoint {
   std::vector<double> phi;  ///< basis values there (nodes_per_cell)
 };
 
-/// Locates the points xy = (x0, y0, x1, y1, ...). Collective. inside[i] is
+/// Locates the points xy = (x0, y0, x1, y1, ...), dim() coordinates a point
+/// (x0, y0, z0, ... in 3D). Collective. inside[i] is
 /// false (on every rank) when no rank holds point i.
 PetscErrorCode LocatePoints(const LagrangeSpace& space, const std::vector<double>& xy,
                             std::vector<LocatedPoint>* points, std::vector<bool>* inside);

@@ -19,6 +19,9 @@
 // The arrays are copied from A when it is set, and copied again by Apply when
 // A's object state has changed since (values rescaled or reassembled; a new
 // nonzero pattern with other ghost columns needs Setup again, and is refused).
+//
+// Other block sizes (3 components in 3D) fall back to MatMult, with the same
+// contract (compress_rows: only the rows with entries are written).
 #pragma once
 
 #include <petscmat.h>
@@ -37,7 +40,8 @@ class BlockKernel {
   ~BlockKernel();
 
   /// Takes A's pattern and values and builds the ghost scatter (collective).
-  /// A: SEQBAIJ or MPIBAIJ with block size 2, square, assembled. allow_wide:
+  /// A: SEQBAIJ or MPIBAIJ, square, assembled; the blocked loop for block
+  /// size 2, MatMult for the others. allow_wide:
   /// the AVX2 path where the machine has it (false: the portable path, for tests).
   /// compress_rows: only the block rows with entries are written by Apply (the
   /// others keep their values): a level of local time stepping.
@@ -50,6 +54,9 @@ class BlockKernel {
 
  private:
   PetscErrorCode CopyArrays() const;
+  /// Block sizes other than 2: MatMult (and the rows it may write, if compressed).
+  PetscErrorCode FallbackSetup();
+  PetscErrorCode FallbackApply(Vec x, Vec y) const;
 
   Mat A_ = nullptr;  ///< referenced
   mutable PetscObjectState state_ = -1;
@@ -59,7 +66,9 @@ class BlockKernel {
   mutable std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
   mutable std::vector<std::int32_t> used_columns_;    ///< compressed rows: the owned block columns they read
   PetscLogEvent event_ = -1;
-  bool wide_ = false, compress_rows_ = false;
+  bool wide_ = false, compress_rows_ = false, fallback_ = false;
+  Vec product_ = nullptr;                    ///< fallback with compressed rows: A x before the copy
+  std::vector<PetscInt> rows_with_entries_;  ///< fallback with compressed rows: local rows to write
 };
 
 }  // namespace vibrotherm::wave

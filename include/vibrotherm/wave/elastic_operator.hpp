@@ -1,12 +1,14 @@
-// The assembled operators of plane-strain elastodynamics on a LagrangeSpace
-// with 2 components: stiffness K (BAIJ, block size 2, assembled once) and the
-// lumped mass M (a vector; both components of a node share its mass).
+// The assembled operators of elastodynamics (plane strain in 2D) on a
+// LagrangeSpace with one component per mesh dimension D (read from the DM):
+// stiffness K (BAIJ, block size D, assembled once) and the lumped mass M (a
+// vector; all components of a node share its mass).
 //
 //   K_ab^ij = ∫ λ ∂_i φ_a ∂_j φ_b + G (δ_ij ∇φ_a·∇φ_b + ∂_j φ_a ∂_i φ_b)
 //   M_a     = ∫ ρ φ_a            (row-sum lumping: P1, Q1, and Q2 where the row
 //                                 sums are the Gauss–Lobatto weights, all > 0)
-//   M_a     = M_aa^cons · m_e / Σ_b M_bb^cons   (HRZ for P2 triangles, whose
-//                                 row sums vanish or go negative at vertices)
+//   M_a     = M_aa^cons · m_e / Σ_b M_bb^cons   (HRZ for P2 triangles and
+//                                 tetrahedra, whose row sums vanish (triangles)
+//                                 or go negative (tetrahedra) at vertices)
 #pragma once
 
 #include <petscmat.h>
@@ -18,11 +20,11 @@
 
 namespace vibrotherm::wave {
 
-/// The element stiffness of one cell (2·nodes square, node-major, components
-/// interleaved as the cell closure), from its quadrature data.
+/// The element stiffness of one cell (D·nodes square, D = q.dim, node-major,
+/// components interleaved as the cell closure), from its quadrature data.
 void ElementStiffness(const fe::CellQuadrature& q, double lambda, double G, double* Ke);
-/// The lumped mass of one cell (2·nodes entries, both components of a node
-/// share its mass): row sums, or HRZ (hrz: P2 triangles).
+/// The lumped mass of one cell (D·nodes entries, all components of a node
+/// share its mass): row sums, or HRZ (hrz: P2 simplices).
 void ElementLumpedMass(const fe::CellQuadrature& q, double rho, bool hrz, double* me);
 /// Creates and assembles the stiffness of the cells `include` accepts (by index
 /// in space.cells(); null: all) on the DM's full pattern (unused entries dropped at assembly).

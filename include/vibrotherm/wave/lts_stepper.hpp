@@ -123,6 +123,7 @@ class LtsStepper {
   Excitation excitation_;
   WaveInterface* contact_ = nullptr;
   PetscInt element_levels_ = 1, contact_level_ = -1, refinements_ = 0;
+  PetscInt components_ = 2;  ///< dofs per node (the space's components)
   PetscInt pending_level_ = -1;
   PetscInt crack_level_ = 0;   ///< finest level of the crack's cells
   PetscInt halvings_ = 0;      ///< times H was halved for the contact  ///< the contact's next level, moved to after the current kick

@@ -10,6 +10,11 @@ PetscErrorCode VertexCoordinates::Setup(DM dm) {
   Vec local;
   PetscSection section;
   const PetscScalar* array;
+  PetscInt dim;
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  // Two coordinates a vertex: reading them from a 3D mesh would silently drop z.
+  PetscCheck(dim == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
+             "VertexCoordinates: 2D meshes only (%" PetscInt_FMT "D)", dim);
   PetscCall(DMGetCoordinatesLocalSetUp(dm));
   PetscCall(DMGetCoordinatesLocal(dm, &local));
   PetscCall(DMGetCoordinateSection(dm, &section));
