@@ -68,4 +68,18 @@ inline std::unique_ptr<CrackLaw> one_cell(const ContactParameters& p, double a, 
   return one_cell(p, a, Tangential(b));
 }
 
+/// Work 2∫T·db of the step b1 → b2 on the path radial return solves exactly
+/// (PHYSICS.md §3.5): elastic to p = b0 + ρ e/|e| (e = b2 − b0, ρ = μN/k_t),
+/// then pulled radially to b2 at |T| = μN; a straight stick step if |e| ≤ ρ.
+inline double dog_leg_work(const Tangential& b1, const Tangential& T1, const Tangential& b0, const Tangential& b2,
+                    const Tangential& T2, double muN, double kt) {
+  auto minus = [](const Tangential& x, const Tangential& y) { return Tangential(x[0] - y[0], x[1] - y[1]); };
+  auto plus = [](const Tangential& x, const Tangential& y) { return Tangential(x[0] + y[0], x[1] + y[1]); };
+  const Tangential e = minus(b2, b0);
+  const double rho = muN / kt;
+  if (!(norm(e) > rho)) return dot(plus(T1, T2), minus(b2, b1));
+  const Tangential u = direction(e), p(b0[0] + rho * u[0], b0[1] + rho * u[1]), Tp(muN * u[0], muN * u[1]);
+  return dot(plus(T1, Tp), minus(p, b1)) + 2.0 * muN * distance(b2, p);
+}
+
 }  // namespace vibrotherm::contact::testing
