@@ -82,7 +82,7 @@ const ContactParameterList& mmd_law_parameters() {
                      "mmd crack law: shortest kept memory-diagram segment, relative to a"),
       integer_parameter("-crack_mmd_max_breakpoints", &P::mmd_max_breakpoints, "1024", Range::between(3, 1e7),
                         "mmd crack law: hard bound on the memory-diagram breakpoints per cell"),
-      integer_parameter("-crack_mmd_levels", &P::mmd_levels, "512", Range::between(2, 1e6),
+      integer_parameter("-crack_mmd_levels", &P::mmd_levels, "256", Range::between(2, 1e6),
                         "mmd crack law, two tangential components (3D): the most spring-bed levels per cell "
                         "(2 numbers each)"),
   };
