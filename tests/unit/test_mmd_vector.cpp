@@ -28,6 +28,10 @@ ContactParameters hertz_mmd(int levels) {
   return p;
 }
 
+/// Linear normal law: N'' = 0, so every level weighs 0 and the bed is the atom
+/// N'(0+) = k at α = 0: a Jenkins element of stiffness k/θ and limit μN.
+ContactParameters atom_only() { return testing::on_linear_normal_law("mmd"); }
+
 /// Full-slip displacement s₀ = θμa at kApproach.
 double full_slip(const ContactParameters& p) { return p.theta() * p.mu * kApproach; }
 
@@ -70,7 +74,9 @@ TEST(MmdVector, AFixedDirectionAtAnyAngleIsTheMemoryDiagramAsTheLevelsGrow) {
                   e.energy, e.traction);
       EXPECT_LT(e.energy, 20.0 / levels) << degrees << " deg, " << levels << " levels";
       EXPECT_LT(e.traction, 20.0 / levels) << degrees << " deg, " << levels << " levels";
-      if (previous > 0.0) EXPECT_LT(e.energy, 0.6 * previous) << "falls with the levels";
+      if (previous > 0.0) {
+        EXPECT_LT(e.energy, 0.6 * previous) << "falls with the levels";
+      }
       previous = e.energy;
     }
   }
@@ -89,13 +95,7 @@ double circle_cycle_energy(const ContactParameters& p, double r, int steps, int 
 }
 
 TEST(MmdVector, TheAtomAloneOnACircleIsTheJenkinsElementAtFirstOrder) {
-  // Linear normal law: N'' = 0, so every level weighs 0 and the bed is the atom
-  // N'(0+) = k at α = 0: a Jenkins element of stiffness k/θ and limit μN.
-  ContactParameters p;
-  p.crack_law = "mmd";
-  p.normal_law = "linear";
-  p.linear_k = 1e14;
-  p.mu = 0.5;
+  const ContactParameters p = atom_only();
   const double F = p.mu * p.linear_k * kApproach, kt = p.linear_k / p.theta(), r = 2.0 * F / kt;
   const double exact = 2.0 * 2.0 * M_PI * F * std::sqrt(r * r - (F / kt) * (F / kt));
   double previous = 0.0;
@@ -103,7 +103,9 @@ TEST(MmdVector, TheAtomAloneOnACircleIsTheJenkinsElementAtFirstOrder) {
     const double error = circle_cycle_energy(p, r, steps) / exact - 1.0;
     std::printf("atom on a circle, %d steps per cycle: relative error %.6g\n", steps, error);
     EXPECT_LT(std::abs(error), 2.0 / steps) << steps;
-    if (previous != 0.0) EXPECT_NEAR(previous / error, 2.0, 0.02) << "first order";
+    if (previous != 0.0) {
+      EXPECT_NEAR(previous / error, 2.0, 0.02) << "first order";
+    }
     previous = error;
   }
 }
@@ -143,31 +145,14 @@ TEST(MmdVector, AHertzBedOnASmallCircleDissipatesPiTimesTheStraightCycle) {
 }
 
 TEST(MmdVector, TheAtomAloneClosesTheEnergyIdentityEveryStep) {
-  ContactParameters p;
-  p.crack_law = "mmd";
-  p.normal_law = "linear";
-  p.linear_k = 1e14;
-  p.mu = 0.5;
-  const double muN = p.mu * p.linear_k * kApproach, kt = p.linear_k / p.theta(), rho = muN / kt;
-  auto path = [&](int k) {  // a drifting ellipse: stick, slip, reversals and rotation
-    const double t = k / 100.0;
-    return Tangential(rho * (1.5 * std::cos(2 * M_PI * t) + 0.3 * t), rho * 0.8 * std::sin(2 * M_PI * 1.3 * t));
-  };
-  auto law = testing::one_cell(p, kApproach, path(0));
-  Tangential b1 = path(0), T1 = law->trial(0, kApproach, b1).T;
-  double worst = 0.0, dissipated = 0.0;
-  for (int k = 1; k <= 500; ++k) {
-    const Tangential b2 = path(k), b0 = law->slip_offset(0);
-    const double U1 = law->stored_energy(0);
-    const StepResult r = law->commit(0, kApproach, b2);
-    const double work = testing::dog_leg_work(b1, T1, b0, b2, r.T, muN, kt);
-    worst = std::max(worst, std::abs(law->stored_energy(0) - U1 + r.dW - work) / (muN * rho));
-    dissipated += r.dW;
-    b1 = b2, T1 = r.T;
-  }
+  const ContactParameters p = atom_only();
+  const double muN = p.mu * p.linear_k * kApproach, kt = p.linear_k / p.theta();
+  auto law = testing::one_cell(p, kApproach, testing::drifting_ellipse(muN / kt, 0));
+  double dissipated;
+  const double worst = testing::worst_dog_leg_imbalance(*law, kApproach, muN, kt, &dissipated);
   std::printf("atom, energy identity per step: largest error %.3g of mu N rho\n", worst);
   EXPECT_LT(worst, 1e-12);
-  EXPECT_GT(dissipated, 10.0 * muN * rho) << "the path slips";
+  EXPECT_GT(dissipated, 10.0 * muN * muN / kt) << "the path slips";
 }
 
 /// A combined path: a and b oscillate, b rotates, contact is lost and regained.
@@ -201,7 +186,9 @@ TEST(MmdVector, AHertzBedBalancesStoredDissipatedAndWorkAsTheStepsShrink) {
     std::printf("combined path, %d steps per cycle: imbalance %.3g of the work exchanged (dissipated %.3g)\n", steps,
                 imbalance, dissipated / scale);
     EXPECT_LT(imbalance, 1e-4) << steps;
-    if (previous > 0.0) EXPECT_LT(imbalance, 0.35 * previous) << "second order";
+    if (previous > 0.0) {
+      EXPECT_LT(imbalance, 0.35 * previous) << "second order";
+    }
     previous = imbalance;
   }
 }
