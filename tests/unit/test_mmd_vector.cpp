@@ -215,6 +215,7 @@ TEST(MmdVector, AHertzBedBalancesStoredDissipatedAndWorkAsTheStepsShrink) {
     for (int k = 1; k <= 2 * steps; ++k) {
       combined_path(double(k) / steps, a, b);
       const StepResult r = law->commit(0, a, b);
+      EXPECT_LE(norm(r.T), p.mu * r.N * (1.0 + 1e-13)) << "|T| <= mu N, step " << k;
       const double dwork = dot(Tangential(T_prev.T[0] + r.T[0], T_prev.T[1] + r.T[1]),
                                Tangential(b[0] - b_prev[0], b[1] - b_prev[1])) + (T_prev.N + r.N) * (a - a_prev);
       work += dwork, scale += std::abs(dwork), dissipated += r.dW;

@@ -9,12 +9,13 @@
 //
 // Discretisation: levels j on the cells [j h, (j+1) h] of α, weight
 // w_j = ∫ N'' over the cell, placed at the cell's N''-centroid (so the bed's
-// normal force Σ w (a − α) is N(a) exactly for cells wholly in contact), plus
-// the atom N'(0+) at α = 0. h = 2a/L at first contact (a in mid-range), kept
-// through contact loss; when a grows past L levels, h doubles and pairs of
-// levels merge (anchors averaged by weight: a cell's first loading from a
-// small a loses some stored energy there, once). So at most L levels per cell: state 2 numbers per level, the
-// atom's anchor, a, b and h (save(): 6 + 2n numbers, n ≤ L).
+// normal force Σ w (a − α)⁺ is N(a) exactly for cells wholly in contact and
+// never above it: |T| ≤ μN), plus the atom N'(0+) at α = 0. h = 2a/L at first
+// contact (a in mid-range), kept through contact loss; when a grows past L
+// levels, h doubles and pairs of levels merge (anchors averaged by weight: a
+// cell's first loading from a small a loses some stored energy there, once).
+// So at most L levels per cell: state 2 numbers per level, the atom's anchor,
+// a, b and h (save(): 6 + 2n numbers, n ≤ L).
 //
 // A step from (a1, b1) to (a2, b2): a spring entering contact starts stuck
 // where the straight path reaches a = α; one leaving contact slips to where
