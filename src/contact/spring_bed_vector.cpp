@@ -134,15 +134,26 @@ Tangential traction_of(const Tangential& sum, double theta) {
 }
 }  // namespace
 
+void VectorSpringBed::cover(const NormalLaw& law, const SpringBedConfig& cfg, double a2) {
+  // Before the step, so that a jump in a never creates more than L levels.
+  while (h_ > 0.0 && a2 > cfg.levels * h_) coarsen(law);
+}
+
 Traction VectorSpringBed::trial(const NormalLaw& law, const SpringBedConfig& cfg, double a,
                                 const Tangential& b) const {
   if (!(a > 0.0)) return {0.0, Tangential::zero(b.components())};
+  if (h_ > 0.0 && a > cfg.levels * h_) {  // rare: the step coarsens first, as commit does
+    VectorSpringBed covering = *this;
+    covering.cover(law, cfg, a);
+    return covering.trial(law, cfg, a, b);
+  }
   const Sweep s = sweep(law, cfg, a, b, [](std::size_t, const Level&) {});
   return {law.eval(a).N, traction_of(s.sum, cfg.theta)};
 }
 
 StepResult VectorSpringBed::commit(const NormalLaw& law, const SpringBedConfig& cfg, double a2,
                                    const Tangential& b2) {
+  cover(law, cfg, a2);
   const double h = spacing_for(cfg, a2);
   // Levels are visited in order and each is read before it is written: update in place.
   const Sweep s = sweep(law, cfg, a2, b2, [this](std::size_t j, const Level& level) {
@@ -162,7 +173,6 @@ StepResult VectorSpringBed::commit(const NormalLaw& law, const SpringBedConfig& 
     r.N = law.eval(a2).N;
     r.T = traction_of(s.sum, cfg.theta);
   }
-  while (levels_.size() > static_cast<std::size_t>(cfg.levels)) coarsen(law);
   return r;
 }
 

@@ -255,6 +255,19 @@ TEST(MmdVector, ASavedStateContinuesBitForBit) {
   EXPECT_THROW(one_component->restore_state(0, saved.data(), saved.size()), std::runtime_error);
 }
 
+TEST(MmdVector, AJumpInApproachKeepsAtMostLLevels) {
+  // First touch at a = 1e-20 m sets h = 2a/L; the next step to 1e-8 m coarsens 40 times first.
+  const ContactParameters p = hertz_mmd(64);
+  auto law = testing::one_cell(p, 0.0, Tangential(0.0, 0.0));
+  law->commit(0, 1e-20, Tangential(1e-22, 0.0));
+  const Traction trial = law->trial(0, 1e-8, Tangential(1e-9, 2e-9));
+  const StepResult r = law->commit(0, 1e-8, Tangential(1e-9, 2e-9));
+  EXPECT_EQ(trial.T[0], r.T[0]);
+  EXPECT_EQ(trial.T[1], r.T[1]);
+  EXPECT_GT(norm(r.T), 0.0);
+  EXPECT_LE(law->save_state(0).size(), 6u + 2u * 64u);
+}
+
 TEST(MmdVector, ABadLevelCountIsOneLineNamingTheOption) {
   for (int levels : {1, 0, -5, 2000000}) {
     const ContactParameters p = hertz_mmd(levels);

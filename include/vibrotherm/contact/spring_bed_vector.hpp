@@ -11,11 +11,11 @@
 // w_j = ∫ N'' over the cell, placed at the cell's N''-centroid (so the bed's
 // normal force Σ w (a − α)⁺ is N(a) exactly for cells wholly in contact and
 // never above it: |T| ≤ μN), plus the atom N'(0+) at α = 0. h = 2a/L at first
-// contact (a in mid-range), kept through contact loss; when a grows past L
-// levels, h doubles and pairs of levels merge (anchors averaged by weight: a
-// cell's first loading from a small a loses some stored energy there, once).
-// So at most L levels per cell: state 2 numbers per level, the atom's anchor,
-// a, b and h (save(): 6 + 2n numbers, n ≤ L).
+// contact (a in mid-range), kept through contact loss; before a step to an a
+// past L levels, h doubles (as often as needed) and pairs of levels merge
+// (anchors averaged by weight: a cell's first loading from a small a loses
+// some stored energy there, once). So at most L levels per cell: state 2
+// numbers per level, the atom's anchor, a, b and h (save(): 6 + 2n, n ≤ L).
 //
 // A step from (a1, b1) to (a2, b2): a spring entering contact starts stuck
 // where the straight path reaches a = α; one leaving contact slips to where
@@ -73,6 +73,8 @@ class VectorSpringBed {
               OnLevel on_level) const;
   double spacing_for(const SpringBedConfig& cfg, double a2) const;
   void coarsen(const NormalLaw& law);
+  /// Coarsens until L levels of spacing h reach a2.
+  void cover(const NormalLaw& law, const SpringBedConfig& cfg, double a2);
 
   double a_ = 0.0, h_ = 0.0;  ///< h = 0: never in contact yet, the spacing is chosen at the first contact
   Tangential b_ = Tangential::zero(2), atom_anchor_ = Tangential::zero(2);
