@@ -1,33 +1,41 @@
-// Rough crack faces: one memory diagram per contact cell. One tangential
-// component only: the 3D rule (a vector spring bed, PHYSICS.md §3.5) comes with 3D.
+// Rough crack faces: one memory diagram per contact cell with one tangential
+// component (2D); with two (3D) the MMD's 3D rule, a vector spring bed per cell
+// (PHYSICS.md §3.5, spring_bed_vector.hpp).
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/contact/normal_law_registry.hpp"
+#include "vibrotherm/contact/spring_bed_vector.hpp"
 
 namespace vibrotherm::contact {
 namespace {
 
 class MmdLaw final : public CrackLaw {
  public:
-  MmdLaw(std::unique_ptr<NormalLaw> law, const MmdConfig& cfg) : law_(std::move(law)), cfg_(cfg) {}
+  MmdLaw(std::unique_ptr<NormalLaw> law, const MmdConfig& cfg, const SpringBedConfig& bed_cfg)
+      : law_(std::move(law)), cfg_(cfg), bed_cfg_(bed_cfg) {}
   std::string name() const override { return "mmd"; }
   void initialize(std::size_t cells, const double* a, const Tangential* b) override {
+    vector_ = cells > 0 && b[0].components() == 2;
+    if (vector_) return initialize_beds(cells, a, b);
     diagrams_.assign(cells, MemoryDiagram{});
-    for (std::size_t i = 0; i < cells; ++i) {
-      if (b[i].components() != 1)
-        throw InputError("-crack_law mmd: two tangential components (3D) are not implemented yet; "
-                         "use -crack_law coulomb, linear or clapping");
-      diagrams_[i].reset(*law_, a[i], b[i][0]);
-    }
+    for (std::size_t i = 0; i < cells; ++i) diagrams_[i].reset(*law_, a[i], b[i][0]);
   }
-  std::size_t cells() const override { return diagrams_.size(); }
+  std::size_t cells() const override { return vector_ ? beds_.size() : diagrams_.size(); }
   Traction trial(std::size_t cell, double a, const Tangential& b) const override {
+    if (vector_) return beds_[cell].trial(*law_, bed_cfg_, a, b);
     return diagrams_[cell].trial(*law_, cfg_, a, b[0]);
   }
   StepResult commit(std::size_t cell, double a, const Tangential& b) override {
+    if (vector_) return beds_[cell].commit(*law_, bed_cfg_, a, b);
     return diagrams_[cell].commit(*law_, cfg_, a, b[0]);
   }
-  double stored_energy(std::size_t cell) const override { return diagrams_[cell].stored_energy(cfg_); }
-  Tangential slip_offset(std::size_t cell) const override { return Tangential(diagrams_[cell].b0()); }
+  double stored_energy(std::size_t cell) const override {
+    if (vector_) return beds_[cell].stored_energy(*law_, bed_cfg_);
+    return diagrams_[cell].stored_energy(cfg_);
+  }
+  Tangential slip_offset(std::size_t cell) const override {
+    if (vector_) return beds_[cell].slip_offset();
+    return Tangential(diagrams_[cell].b0());
+  }
   CellStiffness stiffness(std::size_t, double a) const override {
     // All springs stuck: dT/db = N'(a)/θ <= dN/da.
     const double k = a > 0.0 ? law_->eval(a).dN : law_->stiffness_at_zero();
@@ -36,15 +44,29 @@ class MmdLaw final : public CrackLaw {
   bool can_dissipate() const override { return cfg_.mu > 0.0; }
   double friction_bound() const override { return cfg_.mu; }
   bool has_contact() const override { return true; }
-  std::vector<double> save_state(std::size_t cell) const override { return diagrams_[cell].save(); }
-  void restore_state(std::size_t cell, const double* v, std::size_t n) override { diagrams_[cell].restore(v, n); }
-
-  const MemoryDiagram& diagram(std::size_t cell) const { return diagrams_[cell]; }
+  std::vector<double> save_state(std::size_t cell) const override {
+    return vector_ ? beds_[cell].save() : diagrams_[cell].save();
+  }
+  void restore_state(std::size_t cell, const double* v, std::size_t n) override {
+    if (vector_) beds_[cell].restore(*law_, v, n);
+    else diagrams_[cell].restore(v, n);
+  }
 
  private:
+  void initialize_beds(std::size_t cells, const double* a, const Tangential* b) {
+    beds_.assign(cells, VectorSpringBed{});
+    for (std::size_t i = 0; i < cells; ++i) {
+      if (b[i].components() != 2) throw InputError("-crack_law mmd: cells with 1 and 2 tangential components mixed");
+      beds_[i].reset(*law_, bed_cfg_, a[i], b[i]);
+    }
+  }
+
   std::unique_ptr<NormalLaw> law_;
   MmdConfig cfg_;
-  std::vector<MemoryDiagram> diagrams_;
+  SpringBedConfig bed_cfg_;
+  bool vector_ = false;                ///< two tangential components: the vector spring bed
+  std::vector<MemoryDiagram> diagrams_;  ///< one component (2D): the memory diagram
+  std::vector<VectorSpringBed> beds_;
 };
 
 }  // namespace
@@ -60,6 +82,9 @@ const ContactParameterList& mmd_law_parameters() {
                      "mmd crack law: shortest kept memory-diagram segment, relative to a"),
       integer_parameter("-crack_mmd_max_breakpoints", &P::mmd_max_breakpoints, "1024", Range::between(3, 1e7),
                         "mmd crack law: hard bound on the memory-diagram breakpoints per cell"),
+      integer_parameter("-crack_mmd_levels", &P::mmd_levels, "256", Range::between(2, 1e6),
+                        "mmd crack law, two tangential components (3D): the most spring-bed levels per cell "
+                        "(2 numbers each)"),
   };
   return list;
 }
@@ -67,7 +92,8 @@ const ContactParameterList& mmd_law_parameters() {
 std::unique_ptr<CrackLaw> create_mmd_law(const ContactParameters& params) {
   const MmdConfig cfg{params.mu, params.theta(), params.mmd_rel_tol,
                       static_cast<std::size_t>(params.mmd_max_breakpoints)};
-  return std::make_unique<MmdLaw>(create_normal_law(params), cfg);
+  const SpringBedConfig bed_cfg{params.mu, params.theta(), params.mmd_levels};
+  return std::make_unique<MmdLaw>(create_normal_law(params), cfg, bed_cfg);
 }
 
 }  // namespace vibrotherm::contact

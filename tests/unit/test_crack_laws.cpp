@@ -157,7 +157,7 @@ TEST(ContactParameters, EachLawDeclaresItsOwnOptions) {
   const std::vector<std::string> expected = {
       "-crack_law",        "-contact_normal_law", "-contact_mu",      "-contact_a0",
       "-crack_linear_kn",  "-crack_linear_kt",    "-crack_coulomb_kt", "-material_nu",
-      "-crack_mmd_tol",    "-crack_mmd_max_breakpoints", "-contact_power_C", "-contact_power_p",
+      "-crack_mmd_tol",    "-crack_mmd_max_breakpoints", "-crack_mmd_levels", "-contact_power_C", "-contact_power_p",
       "-contact_biwa_C",   "-contact_biwa_m",     "-contact_linear_k", "-contact_table_file"};
   EXPECT_EQ(names, expected);
   for (const NormalLawEntry& e : normal_laws())

@@ -4,7 +4,7 @@
 // form 2·2πF√(r² − (F/k)²), converging at first order; a path of fixed
 // direction at any angle is the one-component law to rounding; every step
 // closes the energy identity on the dog-leg path radial return is exact for.
-// Linear is k_t b per component; mmd refuses two components.
+// Linear is k_t b per component (mmd with two components: test_mmd_vector).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,18 +14,13 @@
 #include <vector>
 
 #include "contact_test_support.hpp"
-#include "input_error_message.hpp"
 
 namespace vibrotherm::contact {
 namespace {
 
 /// Coulomb on the linear normal law at a = 1e-8 m: F = μN = 5e5 Pa, F/k_t = 1e-8 m.
 ContactParameters coulomb_params() {
-  ContactParameters p;
-  p.crack_law = "coulomb";
-  p.normal_law = "linear";
-  p.linear_k = 1e14;
-  p.mu = 0.5;
+  ContactParameters p = testing::on_linear_normal_law("coulomb");
   p.coulomb_kt = 5e13;
   return p;
 }
@@ -121,43 +116,15 @@ TEST(VectorSlip, AFixedDirectionAtAnyAngleIsTheOneComponentLaw) {
   }
 }
 
-/// Work 2∫T·db of the step b1 → b2 on the path radial return solves exactly
-/// (PHYSICS.md §3.5): elastic to p = b0 + ρ e/|e| (e = b2 − b0, ρ = μN/k_t),
-/// then pulled radially to b2 at |T| = μN; a straight stick step if |e| ≤ ρ.
-double dog_leg_work(const Tangential& b1, const Tangential& T1, const Tangential& b0, const Tangential& b2,
-                    const Tangential& T2, double muN, double kt) {
-  auto minus = [](const Tangential& x, const Tangential& y) { return Tangential(x[0] - y[0], x[1] - y[1]); };
-  auto plus = [](const Tangential& x, const Tangential& y) { return Tangential(x[0] + y[0], x[1] + y[1]); };
-  const Tangential e = minus(b2, b0);
-  const double rho = muN / kt;
-  if (!(norm(e) > rho)) return dot(plus(T1, T2), minus(b2, b1));
-  const Tangential u = direction(e), p(b0[0] + rho * u[0], b0[1] + rho * u[1]), Tp(muN * u[0], muN * u[1]);
-  return dot(plus(T1, Tp), minus(p, b1)) + 2.0 * muN * distance(b2, p);
-}
-
 TEST(VectorSlip, CoulombClosesTheEnergyIdentityEveryStep) {
   const ContactParameters p = coulomb_params();
-  const double muN = p.mu * p.linear_k * kApproach, rho = muN / p.coulomb_kt;
-  // A drifting ellipse: stick, slip, reversals and rotation in one path.
-  auto path = [&](int k) {
-    const double t = k / 100.0;
-    return Tangential(rho * (1.5 * std::cos(2 * M_PI * t) + 0.3 * t), rho * 0.8 * std::sin(2 * M_PI * 1.3 * t));
-  };
-  auto law = testing::one_cell(p, kApproach, path(0));
-  Tangential b1 = path(0), T1 = law->trial(0, kApproach, b1).T;
-  double worst = 0.0, dissipated = 0.0;
-  for (int k = 1; k <= 500; ++k) {
-    const Tangential b2 = path(k), b0 = law->slip_offset(0);
-    const double U1 = law->stored_energy(0);
-    const StepResult r = law->commit(0, kApproach, b2);
-    const double work = dog_leg_work(b1, T1, b0, b2, r.T, muN, p.coulomb_kt);
-    worst = std::max(worst, std::abs(law->stored_energy(0) - U1 + r.dW - work) / (muN * rho));
-    dissipated += r.dW;
-    b1 = b2, T1 = r.T;
-  }
+  const double muN = p.mu * p.linear_k * kApproach;
+  auto law = testing::one_cell(p, kApproach, testing::drifting_ellipse(muN / p.coulomb_kt, 0));
+  double dissipated;
+  const double worst = testing::worst_dog_leg_imbalance(*law, kApproach, muN, p.coulomb_kt, &dissipated);
   std::printf("energy identity per step: largest error %.3g of mu N rho\n", worst);
   EXPECT_LT(worst, 1e-12);
-  EXPECT_GT(dissipated, 10.0 * muN * rho) << "the path slips";
+  EXPECT_GT(dissipated, 10.0 * muN * muN / p.coulomb_kt) << "the path slips";
 }
 
 TEST(VectorSlip, LinearIsTheSpringPerComponent) {
@@ -195,15 +162,6 @@ TEST(VectorSlip, CoulombWithTwoComponentsContinuesExactlyFromItsSavedState) {
   }
   auto one_component = testing::one_cell(p, 0.0, 0.0);
   EXPECT_THROW(one_component->restore_state(0, saved.data(), saved.size()), std::runtime_error);
-}
-
-TEST(VectorSlip, MmdRefusesTwoComponentsNamingTheCrackLaw) {
-  ContactParameters p;
-  p.crack_law = "mmd";
-  const std::string message =
-      testing::input_error_message([&] { testing::one_cell(p, 1e-8, Tangential(0.0, 0.0)); });
-  EXPECT_NE(message.find("-crack_law"), std::string::npos) << message;
-  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ struct ContactParameters {
   double nu;                    ///< -material_nu: the material's Poisson ratio (mmd: Mindlin's θ)
   double mmd_rel_tol;           ///< -crack_mmd_tol: shortest kept segment / a
   int mmd_max_breakpoints;      ///< -crack_mmd_max_breakpoints: hard memory bound
+  int mmd_levels;               ///< -crack_mmd_levels: spring-bed levels per cell (3D)
 
   /// Mindlin's compliance ratio θ = (2 − ν) / (2 (1 − ν)).
   double theta() const { return (2.0 - nu) / (2.0 * (1.0 - nu)); }
