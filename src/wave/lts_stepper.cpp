@@ -95,10 +95,11 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
     Level& L = *level_[l];
     L.boundary = std::make_unique<WaveBoundary>();
     const auto here = [&](PetscInt node) { return element_finest_[components_ * node] == static_cast<PetscInt>(l); };
+    L.boundary->dim = L.boundary->dashpots.dim = boundary.dim;
     for (const Constraint& c : boundary.constraints)
       if (here(c.node)) L.boundary->constraints.push_back(c);
-    for (const Dashpot& d : boundary.dashpots)
-      if (here(d.node)) L.boundary->dashpots.push_back(d);
+    for (std::size_t k = 0; k < boundary.dashpots.size(); ++k)
+      if (here(boundary.dashpots.nodes[k])) L.boundary->dashpots.Add(boundary.dashpots.nodes[k], boundary.dashpots.block(k));
     bool loaded = false;  // a traction on nodes of this level, here
     if (boundary.traction_shape) {
       PetscCall(VecDuplicate(boundary.traction_shape, &L.boundary->traction_shape));
