@@ -98,8 +98,9 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
     L.boundary->dim = L.boundary->dashpots.dim = boundary.dim;
     for (const Constraint& c : boundary.constraints)
       if (here(c.node)) L.boundary->constraints.push_back(c);
-    for (std::size_t k = 0; k < boundary.dashpots.size(); ++k)
-      if (here(boundary.dashpots.nodes[k])) L.boundary->dashpots.Add(boundary.dashpots.nodes[k], boundary.dashpots.block(k));
+    const DashpotBlocks& dashpots = boundary.dashpots;
+    for (std::size_t k = 0; k < dashpots.size(); ++k)
+      if (here(dashpots.nodes[k])) L.boundary->dashpots.Add(dashpots.nodes[k], dashpots.block(k));
     bool loaded = false;  // a traction on nodes of this level, here
     if (boundary.traction_shape) {
       PetscCall(VecDuplicate(boundary.traction_shape, &L.boundary->traction_shape));

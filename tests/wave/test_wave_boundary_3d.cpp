@@ -7,7 +7,9 @@
 //    normal e_z alone, W ρ diag(c_s, c_s, c_p);
 //  - constraints: a roller face constrains its normal (e_z on z faces); a node on
 //    the edge where two roller faces meet gets two directions (their normals);
-//    an antisymmetry face the two tangents; a fixed face all three.
+//    an antisymmetry face the two tangents; a fixed face all three;
+//  - a plane wave's flux into an absorbing face: a uniform velocity V normal to
+//    it radiates ρ c_p V² per area, along it ρ c_s V² (the dashpots' account).
 #include <array>
 #include <cmath>
 #include <functional>
@@ -17,6 +19,7 @@
 #include "vibrotherm/geometry/symmetric_eigen.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
+#include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
 
 namespace vibrotherm::testing {
@@ -204,6 +207,36 @@ TEST_P(WaveBoundary3d, FixedFaceConstrainsAllThreeComponents) {
     ASSERT_EQ(d.size(), 3u) << "node " << node;
     for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(d[k][k], 1.0);
   }
+}
+
+TEST_P(WaveBoundary3d, AbsorbingFaceRadiatesThePlaneWaveFlux) {
+  Build(mesh::EdgeKind::Absorbing, [](const BoxFace& f) { return f.axis == 2 && !f.upper; });
+  Vec mass;
+  DMCreateGlobalVector(dm_, &mass);
+  VecSet(mass, 1.0);
+  std::vector<std::unique_ptr<wave::BoundaryTerm>> terms;
+  ASSERT_EQ(wave::CreateBoundaryTerms(boundary_, mass, false, &terms), 0);
+  PetscInt n;
+  VecGetLocalSize(mass, &n);
+  const double V = 0.3, h = 1e-7, area = kBoxUpper[0] * kBoxUpper[1];
+  const double impedance[3] = {material_.density * material_.cs(), material_.density * material_.cs(),
+                               material_.density * material_.cp()};
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<PetscScalar> u(n, 0.0), v(n, 0.0);
+    for (PetscInt i = axis; i < n; i += 3) v[i] = V;
+    wave::StepState step;
+    step.h = h;
+    step.u = u.data();
+    step.v = v.data();
+    wave::BoundaryEnergy e;
+    for (auto& term : terms) {
+      term->Resume(step);
+      term->Account(step, &e);
+    }
+    const double expected = h * impedance[axis] * V * V * area;
+    EXPECT_NEAR(e.radiated, expected, 1e-12 * expected) << "velocity along axis " << axis;
+  }
+  VecDestroy(&mass);
 }
 
 INSTANTIATE_TEST_SUITE_P(Boxes, WaveBoundary3d, ::testing::ValuesIn(SpatialCases()), BoxCaseName);
