@@ -239,10 +239,21 @@ PetscErrorCode LagrangeSpace::SurfaceFaceNodes(PetscInt face, std::vector<PetscI
   PetscCall(DMGetLocalSection(dm_, &section));
   std::vector<PetscInt> corners, edges;
   PetscCall(mesh::FaceCycle(dm_, face, &corners, &edges));
-  mesh::VertexPositions<3> x;
-  PetscCall(x.Setup(dm_));
+  // The corners' coordinates read directly: copying every vertex a face would cost O(faces × vertices).
+  Vec coordinates;
+  PetscSection coordinate_section;
+  const PetscScalar* xc;
+  PetscCall(DMGetCoordinatesLocalSetUp(dm_));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coordinates));
+  PetscCall(DMGetCoordinateSection(dm_, &coordinate_section));
+  PetscCall(VecGetArrayRead(coordinates, &xc));
   std::vector<geometry::Vec3> points;
-  for (PetscInt v : corners) points.push_back(x(v));
+  for (PetscInt v : corners) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(coordinate_section, v, &off));
+    points.push_back({PetscRealPart(xc[off]), PetscRealPart(xc[off + 1]), PetscRealPart(xc[off + 2])});
+  }
+  PetscCall(VecRestoreArrayRead(coordinates, &xc));
   const FaceNodeWeights w = FaceWeights(points, static_cast<int>(degree_));
   *area = w.area;
   const auto add = [&](PetscInt point, double weight) -> PetscErrorCode {
