@@ -80,6 +80,7 @@ struct KindRule {
   EdgeKind kind;
   double rho, cp, cs;
   bool tangential;  ///< acts along the tangent(s): an antisymmetry plane, a tangential source
+  bool load;        ///< a traction source: Σ w d is the load's shape ∫φ d dA
 };
 
 /// Write access to one kind's local sums.
@@ -103,8 +104,9 @@ void AddEdgeNode(const KindRule& r, const double n[2], const double s[2], double
   a.sum[o + 1] += w * d[1];
 }
 
-/// 3D: w B at the node with x dof o; B = n nᵀ (normal), I − n nᵀ (tangential), or the dashpot.
-void AddFaceNode(const KindRule& r, const geometry::Vec3& n, double w, PetscInt o, SumArrays a) {
+/// 3D: w B at the node with x dof o, B = n nᵀ (normal), I − n nᵀ (tangential) or
+/// the dashpot, and w_sum n.
+void AddFaceNode(const KindRule& r, const geometry::Vec3& n, double w, double w_sum, PetscInt o, SumArrays a) {
   constexpr int kRow[3] = {0, 0, 1}, kCol[3] = {1, 2, 2};  // xy, xz, yz
   const auto entry = [&](int i, int j) {
     const double normal = n[i] * n[j], tangential = (i == j ? 1.0 : 0.0) - normal;
@@ -114,7 +116,7 @@ void AddFaceNode(const KindRule& r, const geometry::Vec3& n, double w, PetscInt 
   for (int i = 0; i < 3; ++i) {
     a.diag[o + i] += w * entry(i, i);
     a.off[o + i] += w * entry(kRow[i], kCol[i]);
-    a.sum[o + i] += w * n[i];
+    a.sum[o + i] += w_sum * n[i];
   }
 }
 
@@ -140,8 +142,9 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
   const PetscInt* f;
   SumArrays a;
   PetscCall(ISGetLocalSize(faces, &nf));
-  PetscCheck(D == 2 || rule.kind != EdgeKind::Source || nf == 0, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "wave boundary: a source on a face of a 3D mesh is not supported yet");
+  // In 3D a face has two tangents: which one a tangential source would drive is not defined yet.
+  PetscCheck(D == 2 || rule.kind != EdgeKind::Source || !rule.tangential || nf == 0, PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "wave boundary: a tangential source on a face of a 3D mesh is not supported (-source_component normal)");
   PetscCall(ISGetIndices(faces, &f));
   PetscCall(VecGetArray(local->diag, &a.diag));
   PetscCall(VecGetArray(local->off, &a.off));
@@ -160,10 +163,11 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
     } else {
       geometry::Vec3 n;
       PetscCall(FaceNormal(dm, x, f[i], &n));
-      // A constraint's directions weigh each face by its area, not ∫φ: the
-      // vertex functions of a P2 triangle integrate to zero.
+      // A constraint's directions (and their signs) weigh each face by its area,
+      // not ∫φ: the vertex functions of a P2 triangle integrate to zero.
       const bool dashpot = rule.kind == EdgeKind::Absorbing;
-      for (std::size_t j = 0; j < offsets.size(); ++j) AddFaceNode(rule, n, dashpot ? weights[j] : size, offsets[j], a);
+      for (std::size_t j = 0; j < offsets.size(); ++j)
+        AddFaceNode(rule, n, dashpot ? weights[j] : size, dashpot || rule.load ? weights[j] : size, offsets[j], a);
     }
   }
   PetscCall(VecRestoreArray(local->diag, &a.diag));
@@ -189,7 +193,8 @@ PetscErrorCode SumEdgeKinds(const fe::LagrangeSpace& space, const ElasticMateria
     const bool tangential =
         (kind == EdgeKind::Source && excitation.component == SourceComponent::Tangential) ||
         kind == EdgeKind::Antisymmetric;
-    const KindRule rule{kind, material.density, material.cp(), material.cs(), tangential};
+    const bool load = kind == EdgeKind::Source && excitation.type == SourceType::Traction;
+    const KindRule rule{kind, material.density, material.cp(), material.cs(), tangential, load};
     EdgeSums local;
     PetscCall(AccumulateKind<D>(space, x, rule, &local, &measures[k]));
     for (int j = 0; j < 3; ++j) {

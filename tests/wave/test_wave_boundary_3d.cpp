@@ -8,6 +8,8 @@
 //  - constraints: a roller face constrains its normal (e_z on z faces); a node on
 //    the edge where two roller faces meet gets two directions (their normals);
 //    an antisymmetry face the two tangents; a fixed face all three;
+//  - a normal source on a face: the displacement prescribes the outward normal
+//    component of every node on it, the traction's load shape is W n;
 //  - a plane wave's flux into an absorbing face: a uniform velocity V normal to
 //    it radiates ρ c_p V² per area, along it ρ c_s V² (the dashpots' account).
 #include <array>
@@ -207,6 +209,51 @@ TEST_P(WaveBoundary3d, FixedFaceConstrainsAllThreeComponents) {
     ASSERT_EQ(d.size(), 3u) << "node " << node;
     for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(d[k][k], 1.0);
   }
+}
+
+TEST_P(WaveBoundary3d, NormalDisplacementSourcePrescribesTheOutwardNormal) {
+  excitation_.component = wave::SourceComponent::Normal;
+  const auto top = [](const BoxFace& f) { return f.axis == 2 && f.upper; };
+  Build(mesh::EdgeKind::Source, top);
+  const auto dirs = Directions();
+  EXPECT_EQ(dirs.size(), NodeWeights(top).size());
+  for (const wave::Constraint& c : boundary_.constraints) {
+    EXPECT_TRUE(c.source);
+    EXPECT_DOUBLE_EQ(c.d[2], 1.0) << "node " << c.node;
+  }
+}
+
+TEST_P(WaveBoundary3d, NormalTractionSourceLoadsWn) {
+  excitation_.type = wave::SourceType::Traction;
+  excitation_.component = wave::SourceComponent::Normal;
+  const auto top = [](const BoxFace& f) { return f.axis == 2 && f.upper; };
+  Build(mesh::EdgeKind::Source, top);
+  ASSERT_NE(boundary_.traction_shape, nullptr);
+  EXPECT_TRUE(boundary_.constraints.empty());
+  const auto W = NodeWeights(top);
+  const PetscScalar* shape;
+  PetscInt n;
+  VecGetLocalSize(boundary_.traction_shape, &n);
+  VecGetArrayRead(boundary_.traction_shape, &shape);
+  for (PetscInt node = 0; node < n / 3; ++node) {
+    const auto it = W.find(node);
+    const double w = it == W.end() ? 0.0 : it->second;
+    EXPECT_NEAR(shape[3 * node], 0.0, 1e-15);
+    EXPECT_NEAR(shape[3 * node + 1], 0.0, 1e-15);
+    EXPECT_NEAR(shape[3 * node + 2], w, 1e-15);
+  }
+  VecRestoreArrayRead(boundary_.traction_shape, &shape);
+}
+
+TEST_P(WaveBoundary3d, TangentialSourceIsRefused) {
+  excitation_.component = wave::SourceComponent::Tangential;
+  DMCreateLabel(dm_, mesh::to_string(mesh::EdgeKind::Source));
+  DMLabel label;
+  DMGetLabel(dm_, mesh::to_string(mesh::EdgeKind::Source), &label);
+  DMLabelSetValue(label, faces_.front().point, 1);
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  EXPECT_NE(wave::BuildWaveBoundary(space_, material_, excitation_, &boundary_), 0);
+  PetscPopErrorHandler();
 }
 
 TEST_P(WaveBoundary3d, AbsorbingFaceRadiatesThePlaneWaveFlux) {
