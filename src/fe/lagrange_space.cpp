@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/fe/face_weights.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::fe {
@@ -198,9 +199,14 @@ PetscErrorCode LagrangeSpace::RequirePlanar(const char* what) const {
 }
 
 PetscErrorCode LagrangeSpace::FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
-                                        double* length) const {
+                                        double* measure) const {
   PetscFunctionBeginUser;
-  PetscCall(RequirePlanar("FaceNodes"));
+  offsets->clear();
+  weights->clear();
+  if (dim_ == 3) {
+    PetscCall(SurfaceFaceNodes(face, offsets, weights, measure));
+    PetscFunctionReturn(0);
+  }
   PetscSection section;
   PetscCall(DMGetLocalSection(dm_, &section));
   const PetscInt* cone;
@@ -208,23 +214,61 @@ PetscErrorCode LagrangeSpace::FaceNodes(PetscInt face, std::vector<PetscInt>* of
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm_));
   const auto a = x(cone[0]), b = x(cone[1]);
-  *length = std::hypot(b[0] - a[0], b[1] - a[1]);
-  offsets->clear();
-  weights->clear();
+  *measure = std::hypot(b[0] - a[0], b[1] - a[1]);
   // ∫φ ds on a straight edge: P1: L/2, L/2; P2 (Simpson): L/6, L/6 and 4L/6 at the middle.
   const double end_weight = degree_ == 1 ? 0.5 : 1.0 / 6.0;
   for (int k = 0; k < 2; ++k) {
     PetscInt off;
     PetscCall(PetscSectionGetOffset(section, cone[k], &off));
     offsets->push_back(off);
-    weights->push_back(end_weight * *length);
+    weights->push_back(end_weight * *measure);
   }
   if (degree_ == 2) {
     PetscInt off;
     PetscCall(PetscSectionGetOffset(section, face, &off));
     offsets->push_back(off);
-    weights->push_back(4.0 / 6.0 * *length);
+    weights->push_back(4.0 / 6.0 * *measure);
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LagrangeSpace::SurfaceFaceNodes(PetscInt face, std::vector<PetscInt>* offsets,
+                                               std::vector<double>* weights, double* area) const {
+  PetscFunctionBeginUser;
+  PetscSection section;
+  PetscCall(DMGetLocalSection(dm_, &section));
+  std::vector<PetscInt> corners, edges;
+  PetscCall(mesh::FaceCycle(dm_, face, &corners, &edges));
+  // The corners' coordinates read directly: copying every vertex a face would cost O(faces × vertices).
+  Vec coordinates;
+  PetscSection coordinate_section;
+  const PetscScalar* xc;
+  PetscCall(DMGetCoordinatesLocalSetUp(dm_));
+  PetscCall(DMGetCoordinatesLocal(dm_, &coordinates));
+  PetscCall(DMGetCoordinateSection(dm_, &coordinate_section));
+  PetscCall(VecGetArrayRead(coordinates, &xc));
+  std::vector<geometry::Vec3> points;
+  for (PetscInt v : corners) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(coordinate_section, v, &off));
+    points.push_back({PetscRealPart(xc[off]), PetscRealPart(xc[off + 1]), PetscRealPart(xc[off + 2])});
+  }
+  PetscCall(VecRestoreArrayRead(coordinates, &xc));
+  const FaceNodeWeights w = FaceWeights(points, static_cast<int>(degree_));
+  *area = w.area;
+  const auto add = [&](PetscInt point, double weight) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscInt off, dofs;
+    PetscCall(PetscSectionGetDof(section, point, &dofs));
+    if (dofs == 0) PetscFunctionReturn(0);  // no node here (P2 triangle faces)
+    PetscCall(PetscSectionGetOffset(section, point, &off));
+    offsets->push_back(off);
+    weights->push_back(weight);
+    PetscFunctionReturn(0);
+  };
+  for (std::size_t k = 0; k < corners.size(); ++k) PetscCall(add(corners[k], w.corner[k]));
+  for (std::size_t k = 0; k < w.edge.size(); ++k) PetscCall(add(edges[k], w.edge[k]));
+  if (degree_ == 2) PetscCall(add(face, w.interior));
   PetscFunctionReturn(0);
 }
 

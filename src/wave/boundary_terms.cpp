@@ -58,63 +58,107 @@ class TractionLoad final : public BoundaryTerm {
   std::vector<double> load_, acceleration_, u_prev_;
 };
 
-/// Lysmer–Kuhlemeyer dashpots of the absorbing edges: f = −C v per node.
+/// Lysmer–Kuhlemeyer dashpots of the absorbing faces: f = −C v per node (C: D×D).
 class Dashpots final : public BoundaryTerm {
  public:
-  explicit Dashpots(std::vector<Dashpot> dashpots) : dashpots_(std::move(dashpots)), v_prev_(2 * dashpots_.size()) {}
+  explicit Dashpots(DashpotBlocks dashpots)
+      : dashpots_(std::move(dashpots)), D_(dashpots_.dim), v_prev_(D_ * dashpots_.size()) {}
   void Accelerate(const ForceState& s, PetscScalar* acc) override {
-    for (const Dashpot& d : dashpots_) {
-      const PetscInt i = 2 * d.node;
-      const double m = s.mass[i] * s.mass_factor, vx = s.velocity[i], vy = s.velocity[i + 1];
-      const double fx = m * acc[i] - (d.xx * vx + d.xy * vy), fy = m * acc[i + 1] - (d.xy * vx + d.yy * vy);
-      if (s.kick_dt > 0.0) {
-        // (m I + h/2 C) acc = F − C v: the dashpot acts on the mean velocity of the kick,
-        // so absorbing edges never limit the step.
-        const double h = 0.5 * s.kick_dt;
-        const double a11 = m + h * d.xx, a12 = h * d.xy, a22 = m + h * d.yy, det = a11 * a22 - a12 * a12;
-        acc[i] = (a22 * fx - a12 * fy) / det;
-        acc[i + 1] = (a11 * fy - a12 * fx) / det;
-      } else {
-        acc[i] = fx / m;
-        acc[i + 1] = fy / m;
-      }
+    for (std::size_t k = 0; k < dashpots_.size(); ++k) {
+      const PetscInt i = D_ * dashpots_.nodes[k];
+      const double m = s.mass[i] * s.mass_factor;
+      // (m I + h/2 C) acc = F − C v with h the kick: the dashpot acts on the mean
+      // velocity of the kick, so absorbing faces never limit the step.
+      const double h = s.kick_dt > 0.0 ? 0.5 * s.kick_dt : 0.0;
+      if (D_ == 2)
+        AcceleratePlanar(dashpots_.block(k), m, h, s.velocity + i, acc + i);
+      else
+        AccelerateSpatial(k, m, h, s.velocity + i, acc + i);
     }
   }
   void AddForce(const ForceState& s, PetscScalar* f) const override {
-    for (const Dashpot& d : dashpots_) {
-      const PetscInt i = 2 * d.node;
-      f[i] -= d.xx * s.velocity[i] + d.xy * s.velocity[i + 1];
-      f[i + 1] -= d.xy * s.velocity[i] + d.yy * s.velocity[i + 1];
+    for (std::size_t k = 0; k < dashpots_.size(); ++k) {
+      const PetscInt i = D_ * dashpots_.nodes[k];
+      for (int r = 0; r < D_; ++r) {
+        double Cv = dashpots_.at(k, r, 0) * s.velocity[i];
+        for (int c = 1; c < D_; ++c) Cv += dashpots_.at(k, r, c) * s.velocity[i + c];
+        f[i + r] -= Cv;
+      }
     }
   }
   PetscErrorCode AddJacobian(PetscReal shift_v, PetscInt rstart, Mat J) const override {
     PetscFunctionBeginUser;
-    for (const Dashpot& d : dashpots_) {
-      const PetscInt rows[2] = {rstart + 2 * d.node, rstart + 2 * d.node + 1};
-      const PetscScalar block[4] = {shift_v * d.xx, shift_v * d.xy, shift_v * d.xy, shift_v * d.yy};
-      PetscCall(MatSetValues(J, 2, rows, 2, rows, block, ADD_VALUES));
+    for (std::size_t k = 0; k < dashpots_.size(); ++k) {
+      PetscInt rows[3];
+      PetscScalar block[9];
+      for (int r = 0; r < D_; ++r) {
+        rows[r] = rstart + D_ * dashpots_.nodes[k] + r;
+        for (int c = 0; c < D_; ++c) block[r * D_ + c] = shift_v * dashpots_.at(k, r, c);
+      }
+      PetscCall(MatSetValues(J, D_, rows, D_, rows, block, ADD_VALUES));
     }
     PetscFunctionReturn(0);
   }
   void Account(const StepState& s, BoundaryEnergy* e) override {  // h v̄ᵀ C v̄ with the mean velocity of the step
     for (std::size_t k = 0; k < dashpots_.size(); ++k) {
-      const Dashpot& d = dashpots_[k];
-      const PetscInt i = 2 * d.node;
-      const double vx = 0.5 * (s.v[i] + v_prev_[2 * k]), vy = 0.5 * (s.v[i + 1] + v_prev_[2 * k + 1]);
-      e->radiated += s.h * (d.xx * vx * vx + 2.0 * d.xy * vx * vy + d.yy * vy * vy);
-      v_prev_[2 * k] = s.v[i];
-      v_prev_[2 * k + 1] = s.v[i + 1];
+      const PetscInt i = D_ * dashpots_.nodes[k];
+      double v[3];
+      for (int c = 0; c < D_; ++c) v[c] = 0.5 * (s.v[i + c] + v_prev_[D_ * k + c]);
+      e->radiated += s.h * Dissipation(dashpots_.block(k), v);
+      for (int c = 0; c < D_; ++c) v_prev_[D_ * k + c] = s.v[i + c];
     }
   }
   void Resume(const StepState& s) override {
-    for (std::size_t k = 0; k < dashpots_.size(); ++k) {
-      v_prev_[2 * k] = s.v[2 * dashpots_[k].node];
-      v_prev_[2 * k + 1] = s.v[2 * dashpots_[k].node + 1];
-    }
+    for (std::size_t k = 0; k < dashpots_.size(); ++k)
+      for (int c = 0; c < D_; ++c) v_prev_[D_ * k + c] = s.v[D_ * dashpots_.nodes[k] + c];
   }
 
  private:
-  std::vector<Dashpot> dashpots_;
+  /// 2D: the 2×2 solve by Cramer's rule (h = 0: no kick, acc = F / m).
+  static void AcceleratePlanar(const double* C, double m, double h, const PetscScalar* v, PetscScalar* acc) {
+    const double xx = C[0], xy = C[1], yy = C[2], vx = v[0], vy = v[1];
+    const double fx = m * acc[0] - (xx * vx + xy * vy), fy = m * acc[1] - (xy * vx + yy * vy);
+    if (h > 0.0) {
+      const double a11 = m + h * xx, a12 = h * xy, a22 = m + h * yy, det = a11 * a22 - a12 * a12;
+      acc[0] = (a22 * fx - a12 * fy) / det;
+      acc[1] = (a11 * fy - a12 * fx) / det;
+    } else {
+      acc[0] = fx / m;
+      acc[1] = fy / m;
+    }
+  }
+  /// 3D: the 3×3 solve by Cramer's rule.
+  void AccelerateSpatial(std::size_t k, double m, double h, const PetscScalar* v, PetscScalar* acc) const {
+    double A[3][3], f[3];
+    for (int r = 0; r < 3; ++r) {
+      f[r] = m * acc[r];
+      for (int c = 0; c < 3; ++c) {
+        f[r] -= dashpots_.at(k, r, c) * v[c];
+        A[r][c] = (r == c ? m : 0.0) + h * dashpots_.at(k, r, c);
+      }
+    }
+    const auto det3 = [](const double (&a)[3][3]) {
+      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double det = det3(A);
+    for (int c = 0; c < 3; ++c) {
+      double Ac[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int j = 0; j < 3; ++j) Ac[r][j] = j == c ? f[r] : A[r][j];
+      acc[c] = det3(Ac) / det;
+    }
+  }
+  /// vᵀ C v (2D: the expression the 2D code has always used).
+  double Dissipation(const double* C, const double* v) const {
+    if (D_ == 2) return C[0] * v[0] * v[0] + 2.0 * C[1] * v[0] * v[1] + C[2] * v[1] * v[1];
+    double q = 0.0;
+    for (int r = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c) q += (r == c ? 1.0 : 2.0) * C[UpperIndex(r, c, 3)] * v[r] * v[c];
+    return q;
+  }
+  DashpotBlocks dashpots_;
+  int D_;
   std::vector<double> v_prev_;  ///< velocities of the dashpot nodes at the last step
 };
 
@@ -123,37 +167,33 @@ class Dashpots final : public BoundaryTerm {
 /// force is what the source works with.
 class Constraints final : public BoundaryTerm {
  public:
-  Constraints(std::vector<Constraint> constraints, bool source)
-      : constraints_(std::move(constraints)), reaction_(constraints_.size(), 0.0), source_(source) {}
+  Constraints(std::vector<Constraint> constraints, int dim, bool source)
+      : constraints_(std::move(constraints)), reaction_(constraints_.size(), 0.0), D_(dim), source_(source) {}
   void Accelerate(const ForceState& s, PetscScalar* acc) override {
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
       const Constraint& c = constraints_[k];
-      const PetscInt i = 2 * c.node;
-      const double target = c.source ? s.signal.ddg : 0.0, along = acc[i] * c.d[0] + acc[i + 1] * c.d[1];
+      const PetscInt i = D_ * c.node;
+      const double target = c.source ? s.signal.ddg : 0.0, along = Along(acc + i, c.d);
       reaction_[k] = s.mass[i] * s.mass_factor * (target - along);  // what the support adds along d
-      acc[i] += (target - along) * c.d[0];
-      acc[i + 1] += (target - along) * c.d[1];
+      Shift(target - along, c.d, acc + i);
     }
   }
   void ConstrainResidual(const ForceState& s, const PetscScalar* acc, PetscScalar* r) const override {
     for (const Constraint& c : constraints_) {
-      const PetscInt i = 2 * c.node;
-      const double target = c.source ? s.signal.ddg : 0.0, along = r[i] * c.d[0] + r[i + 1] * c.d[1];
-      const double want = s.mass[i] * ((acc[i] * c.d[0] + acc[i + 1] * c.d[1]) - target);
-      r[i] += (want - along) * c.d[0];
-      r[i + 1] += (want - along) * c.d[1];
+      const PetscInt i = D_ * c.node;
+      const double target = c.source ? s.signal.ddg : 0.0, along = Along(r + i, c.d);
+      const double want = s.mass[i] * (Along(acc + i, c.d) - target);
+      Shift(want - along, c.d, r + i);
     }
   }
   PetscErrorCode ConstrainJacobian(PetscReal shift_a, PetscInt rstart, const PetscScalar* mass, Mat J) const override;
   void Impose(const SignalValues& s, PetscScalar* U, PetscScalar* V) const override {
     for (const Constraint& c : constraints_) {
-      const PetscInt i = 2 * c.node;
+      const PetscInt i = D_ * c.node;
       const double tu = c.source ? s.g : 0.0, tv = c.source ? s.dg : 0.0;
-      const double au = U[i] * c.d[0] + U[i + 1] * c.d[1], av = V[i] * c.d[0] + V[i + 1] * c.d[1];
-      U[i] += (tu - au) * c.d[0];
-      U[i + 1] += (tu - au) * c.d[1];
-      V[i] += (tv - av) * c.d[0];
-      V[i + 1] += (tv - av) * c.d[1];
+      const double au = Along(U + i, c.d), av = Along(V + i, c.d);
+      Shift(tu - au, c.d, U + i);
+      Shift(tv - av, c.d, V + i);
     }
   }
   bool needs_end_state_forces() const override { return source_; }
@@ -175,7 +215,18 @@ class Constraints final : public BoundaryTerm {
 
  private:
   std::vector<Constraint> constraints_;
+  /// a · d of the D components of a node (summed in index order: the 2D bits).
+  double Along(const PetscScalar* a, const double* d) const {
+    double along = a[0] * d[0];
+    for (int k = 1; k < D_; ++k) along += a[k] * d[k];
+    return along;
+  }
+  /// a += amount d.
+  void Shift(double amount, const double* d, PetscScalar* a) const {
+    for (int k = 0; k < D_; ++k) a[k] += amount * d[k];
+  }
   std::vector<double> reaction_;  ///< per constraint: force the support applies (last Accelerate)
+  int D_;
   bool source_;                   ///< a displacement source prescribes some of them (on some rank)
   double power_prev_ = 0.0;       ///< this rank's support power at the last step (trapezoid)
 };
@@ -183,13 +234,14 @@ class Constraints final : public BoundaryTerm {
 PetscErrorCode Constraints::ConstrainJacobian(PetscReal shift_a, PetscInt rstart, const PetscScalar* mass,
                                               Mat J) const {
   PetscFunctionBeginUser;
-  // Rows along x or y only (alpha2 refuses inclined constraints at setup).
+  // Rows along a coordinate axis only (alpha2 refuses inclined constraints at setup).
   std::vector<PetscInt> rows;
   std::vector<PetscScalar> diag;
   for (const Constraint& c : constraints_) {
-    const PetscInt comp = std::abs(c.d[0]) > 0.5 ? 0 : 1;
-    rows.push_back(rstart + 2 * c.node + comp);
-    diag.push_back(mass[2 * c.node] * shift_a);
+    PetscInt comp = 0;
+    while (comp + 1 < D_ && !(std::abs(c.d[comp]) > 0.5)) ++comp;
+    rows.push_back(rstart + D_ * c.node + comp);
+    diag.push_back(mass[D_ * c.node] * shift_a);
   }
   PetscCall(MatZeroRows(J, static_cast<PetscInt>(rows.size()), rows.data(), 0.0, nullptr, nullptr));
   for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(MatSetValue(J, rows[k], rows[k], diag[k], INSERT_VALUES));
@@ -211,7 +263,7 @@ PetscErrorCode CreateBoundaryTerms(const WaveBoundary& boundary, Vec mass, bool 
     terms->push_back(std::move(load));
   }
   terms->push_back(std::make_unique<Dashpots>(boundary.dashpots));
-  terms->push_back(std::make_unique<Constraints>(boundary.constraints, displacement_source));
+  terms->push_back(std::make_unique<Constraints>(boundary.constraints, boundary.dim, displacement_source));
   PetscFunctionReturn(0);
 }
 

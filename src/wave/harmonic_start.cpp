@@ -68,11 +68,12 @@ PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) cons
     if (material_.damping_rate > 0.0) PetscCall(AddDamping(*Z, g, g, omega * material_.damping_rate * m[i]));
   }
   PetscCall(VecRestoreArrayRead(M_, &m));
-  for (const Dashpot& d : boundary_.dashpots) {
-    const PetscInt x = rstart + 2 * d.node, y = x + 1;
-    const double block[2][2] = {{d.xx, d.xy}, {d.xy, d.yy}};
-    for (int p = 0; p < 2; ++p)
-      for (int q = 0; q < 2; ++q) PetscCall(AddDamping(*Z, p ? y : x, q ? y : x, omega * block[p][q]));
+  const int D = boundary_.dim;
+  for (std::size_t k = 0; k < boundary_.dashpots.size(); ++k) {
+    const PetscInt first = rstart + D * boundary_.dashpots.nodes[k];
+    for (int p = 0; p < D; ++p)
+      for (int q = 0; q < D; ++q)
+        PetscCall(AddDamping(*Z, first + p, first + q, omega * boundary_.dashpots.at(k, p, q)));
   }
   if (interface_) {
     std::vector<PetscInt> rows, cols;
@@ -96,11 +97,13 @@ PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) cons
   Vec known;
   PetscCall(VecDuplicate(*rhs, &known));
   for (const Constraint& c : boundary_.constraints) {
-    const bool along_x = std::abs(c.d[0]) > 1.0 - 1e-12, along_y = std::abs(c.d[1]) > 1.0 - 1e-12;
-    PetscCheck(along_x || along_y, comm, PETSC_ERR_SUP,
-               "-wave_start harmonic: a constrained direction (%g, %g) is not along x or y", c.d[0], c.d[1]);
-    const PetscInt g = rstart + 2 * c.node + (along_x ? 0 : 1);
-    const double value = c.source ? excitation_.signal.amplitude * (along_x ? c.d[0] : c.d[1]) : 0.0;
+    int axis = 0;
+    while (axis + 1 < D && !(std::abs(c.d[axis]) > 1.0 - 1e-12)) ++axis;
+    PetscCheck(std::abs(c.d[axis]) > 1.0 - 1e-12, comm, PETSC_ERR_SUP,
+               "-wave_start harmonic: a constrained direction (%g, %g, %g) is not along a coordinate axis", c.d[0],
+               c.d[1], c.d[2]);
+    const PetscInt g = rstart + D * c.node + axis;
+    const double value = c.source ? excitation_.signal.amplitude * c.d[axis] : 0.0;
     fixed.insert(fixed.end(), {2 * g, 2 * g + 1});
     PetscCall(VecSetValue(known, 2 * g, value, INSERT_VALUES));
   }

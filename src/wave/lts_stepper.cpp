@@ -95,10 +95,12 @@ PetscErrorCode LtsStepper::SetupBoundary(const WaveBoundary& boundary) {
     Level& L = *level_[l];
     L.boundary = std::make_unique<WaveBoundary>();
     const auto here = [&](PetscInt node) { return element_finest_[components_ * node] == static_cast<PetscInt>(l); };
+    L.boundary->dim = L.boundary->dashpots.dim = boundary.dim;
     for (const Constraint& c : boundary.constraints)
       if (here(c.node)) L.boundary->constraints.push_back(c);
-    for (const Dashpot& d : boundary.dashpots)
-      if (here(d.node)) L.boundary->dashpots.push_back(d);
+    const DashpotBlocks& dashpots = boundary.dashpots;
+    for (std::size_t k = 0; k < dashpots.size(); ++k)
+      if (here(dashpots.nodes[k])) L.boundary->dashpots.Add(dashpots.nodes[k], dashpots.block(k));
     bool loaded = false;  // a traction on nodes of this level, here
     if (boundary.traction_shape) {
       PetscCall(VecDuplicate(boundary.traction_shape, &L.boundary->traction_shape));

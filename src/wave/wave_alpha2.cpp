@@ -16,9 +16,11 @@ PetscErrorCode WaveSolver::SetupAlpha2(MPI_Comm comm) {
   PetscCall(TSSetI2Function(ts_, nullptr, I2Function, this));
   PetscCall(TSSetI2Jacobian(ts_, J_, J_, I2Jacobian, this));
   for (const Constraint& c : boundary_.constraints)
-    PetscCheck(std::abs(c.d[0] * c.d[1]) < 1e-12, comm, PETSC_ERR_SUP,
-               "-wave_ts_type alpha2 supports prescribed components along x or y only (inclined source or roller "
-               "edge found)");
+    PetscCheck(std::abs(c.d[0] * c.d[1]) < 1e-12 && std::abs(c.d[0] * c.d[2]) < 1e-12 &&
+                   std::abs(c.d[1] * c.d[2]) < 1e-12,
+               comm, PETSC_ERR_SUP,
+               "-wave_ts_type alpha2 supports prescribed components along a coordinate axis only (inclined source or "
+               "roller face found)");
   PetscFunctionReturn(0);
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <petscvec.h>
 
+#include <array>
 #include <cmath>
 
 #include "vibrotherm/wave/boundary_terms.hpp"
@@ -33,7 +34,7 @@ std::vector<std::unique_ptr<BoundaryTerm>> Terms(const WaveBoundary& boundary, V
 TEST(BoundaryTerms, DashpotKickSolvesTheTrapezoidalBalance) {
   Vec mass = MassVector(1);
   WaveBoundary boundary;
-  boundary.dashpots.push_back({0, 3.0e3, -1.0e3, 5.0e3});
+  boundary.dashpots.Add(0, std::array<double, 3>{3.0e3, -1.0e3, 5.0e3}.data());
   auto terms = Terms(boundary, mass, false);
   const double C[2][2] = {{3.0e3, -1.0e3}, {-1.0e3, 5.0e3}}, v[2] = {0.2, -0.7}, a0[2] = {40.0, -15.0};
   const PetscScalar masses[2] = {kMass, kMass};
@@ -96,7 +97,7 @@ TEST(BoundaryTerms, ConstraintFollowsTheSourceAlongItsDirectionOnly) {
 TEST(BoundaryTerms, EnergyOfAStepIsItsClosedFormWork) {
   Vec mass = MassVector(2);
   WaveBoundary boundary;
-  boundary.dashpots.push_back({1, 4.0e3, 0.5e3, 2.0e3});
+  boundary.dashpots.Add(1, std::array<double, 3>{4.0e3, 0.5e3, 2.0e3}.data());
   EXPECT_EQ(VecCreateSeq(PETSC_COMM_SELF, 4, &boundary.traction_shape), 0);
   EXPECT_EQ(VecSet(boundary.traction_shape, 0.0), 0);
   EXPECT_EQ(VecSetValue(boundary.traction_shape, 1, 1e-3, INSERT_VALUES), 0);  // node 0, y

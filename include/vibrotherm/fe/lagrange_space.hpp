@@ -71,11 +71,12 @@ class LagrangeSpace {
   /// The same for any dimension: dim() coordinates per local node, node-major.
   PetscErrorCode NodePositions(std::vector<double>* coords) const;
 
-  /// Local dof offsets of the nodes on a face (vertex nodes and, for degree 2,
-  /// the edge node) with their 1D lumped weights ∫φ ds (exact, sum = length).
-  /// 2D only (a face is an edge); refused in 3D.
+  /// Local dof offsets of the nodes on a boundary face with their lumped
+  /// weights ∫φ dA (sum = *measure). 2D: an edge, its vertex nodes and (degree
+  /// 2) its middle node, weights ∫φ ds, measure its length. 3D: a quadrilateral
+  /// or triangle, its corner, edge and interior nodes, measure its area.
   PetscErrorCode FaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
-                           double* length) const;
+                           double* measure) const;
 
   /// Physical coordinates of cell's quadrature points (dim() per point).
   PetscErrorCode QuadraturePoints(PetscInt cell, std::vector<double>* xy) const;
@@ -97,6 +98,9 @@ class LagrangeSpace {
  private:
   /// Refuses the 2D-only members on a 3D mesh (what: the member's name).
   PetscErrorCode RequirePlanar(const char* what) const;
+  /// FaceNodes on a 3D mesh (see fe/face_weights.hpp).
+  PetscErrorCode SurfaceFaceNodes(PetscInt face, std::vector<PetscInt>* offsets, std::vector<double>* weights,
+                                  double* area) const;
   DM dm_ = nullptr;
   PetscFE fe_ = nullptr;  ///< scalar Lagrange element
   PetscInt degree_ = 1, components_ = 1;

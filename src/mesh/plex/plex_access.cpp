@@ -4,7 +4,8 @@
 
 namespace vibrotherm::mesh {
 
-PetscErrorCode VertexCoordinates::Setup(DM dm) {
+template <std::size_t D>
+PetscErrorCode VertexPositions<D>::Setup(DM dm) {
   PetscFunctionBeginUser;
   // Copied once per vertex, so that a lookup is an array access with nothing to fail.
   Vec local;
@@ -12,9 +13,8 @@ PetscErrorCode VertexCoordinates::Setup(DM dm) {
   const PetscScalar* array;
   PetscInt dim;
   PetscCall(DMGetCoordinateDim(dm, &dim));
-  // Two coordinates a vertex: reading them from a 3D mesh would silently drop z.
-  PetscCheck(dim == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
-             "VertexCoordinates: 2D meshes only (%" PetscInt_FMT "D)", dim);
+  PetscCheck(dim == static_cast<PetscInt>(D), PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
+             "VertexPositions<%d> on a mesh with %" PetscInt_FMT " coordinates", static_cast<int>(D), dim);
   PetscCall(DMGetCoordinatesLocalSetUp(dm));
   PetscCall(DMGetCoordinatesLocal(dm, &local));
   PetscCall(DMGetCoordinateSection(dm, &section));
@@ -26,26 +26,59 @@ PetscErrorCode VertexCoordinates::Setup(DM dm) {
   for (PetscInt v = vStart_; v < vEnd; ++v) {
     PetscInt offset;
     PetscCall(PetscSectionGetOffset(section, v, &offset));
-    coords_[v - vStart_] = {PetscRealPart(array[offset]), PetscRealPart(array[offset + 1])};
+    for (std::size_t d = 0; d < D; ++d) coords_[v - vStart_][d] = PetscRealPart(array[offset + d]);
   }
   PetscCall(VecRestoreArrayRead(local, &array));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, std::array<double, 2>* centroid) {
+template <std::size_t D>
+PetscErrorCode CellCentroid(DM dm, const VertexPositions<D>& x, PetscInt cell, geometry::Point<D>* centroid) {
   PetscFunctionBeginUser;
   PetscInt* closure = nullptr;
   PetscInt n, vStart, vEnd, count = 0;
-  std::array<double, 2> c = {0, 0};
+  geometry::Point<D> c{};
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure));
   for (PetscInt i = 0; i < 2 * n; i += 2)
     if (closure[i] >= vStart && closure[i] < vEnd) {
       const auto p = x(closure[i]);
-      c[0] += p[0], c[1] += p[1], ++count;
+      for (std::size_t d = 0; d < D; ++d) c[d] += p[d];
+      ++count;
     }
   PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &n, &closure));
-  *centroid = {c[0] / count, c[1] / count};
+  for (std::size_t d = 0; d < D; ++d) (*centroid)[d] = c[d] / count;
+  PetscFunctionReturn(0);
+}
+
+template class VertexPositions<2>;
+template class VertexPositions<3>;
+template PetscErrorCode CellCentroid<2>(DM, const VertexPositions<2>&, PetscInt, geometry::Point<2>*);
+template PetscErrorCode CellCentroid<3>(DM, const VertexPositions<3>&, PetscInt, geometry::Point<3>*);
+
+PetscErrorCode FaceCycle(DM dm, PetscInt face, std::vector<PetscInt>* corners, std::vector<PetscInt>* edges) {
+  PetscFunctionBeginUser;
+  const PetscInt* cone;
+  PetscInt n;
+  PetscCall(DMPlexGetConeSize(dm, face, &n));
+  PetscCall(DMPlexGetCone(dm, face, &cone));
+  std::vector<std::array<PetscInt, 2>> ends(n);
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscInt* v;
+    PetscCall(DMPlexGetCone(dm, cone[k], &v));
+    ends[k] = {v[0], v[1]};
+  }
+  std::vector<bool> used(n, false);
+  corners->assign(1, ends[0][0]);
+  edges->clear();
+  for (PetscInt step = 0; step < n; ++step)
+    for (PetscInt k = 0; k < n; ++k) {
+      if (used[k] || (ends[k][0] != corners->back() && ends[k][1] != corners->back())) continue;
+      used[k] = true;
+      edges->push_back(cone[k]);
+      if (step + 1 < n) corners->push_back(ends[k][0] == corners->back() ? ends[k][1] : ends[k][0]);
+      break;
+    }
   PetscFunctionReturn(0);
 }
 

@@ -6,21 +6,35 @@
 #include <array>
 #include <vector>
 
+#include "vibrotherm/geometry/point.hpp"
+
 namespace vibrotherm::mesh {
 
-/// Coordinates of the vertices of a DM (copied once by Setup).
-class VertexCoordinates {
+/// Coordinates of the vertices of a DM with D coordinates (copied once by
+/// Setup, which refuses a mesh of another coordinate dimension: reading a 3D
+/// mesh with two coordinates would silently drop z).
+template <std::size_t D>
+class VertexPositions {
  public:
   PetscErrorCode Setup(DM dm);
-  std::array<double, 2> operator()(PetscInt vertex) const { return coords_[vertex - vStart_]; }
+  geometry::Point<D> operator()(PetscInt vertex) const { return coords_[vertex - vStart_]; }
 
  private:
-  std::vector<std::array<double, 2>> coords_;
+  std::vector<geometry::Point<D>> coords_;
   PetscInt vStart_ = 0;
 };
 
-/// Centroid of a cell: the mean of its closure vertices.
-PetscErrorCode CellCentroid(DM dm, const VertexCoordinates& x, PetscInt cell, std::array<double, 2>* centroid);
+/// The planar accessor the 2D code uses.
+using VertexCoordinates = VertexPositions<2>;
+
+/// Centroid of a cell: the mean of its closure vertices (D = 2 or 3).
+template <std::size_t D>
+PetscErrorCode CellCentroid(DM dm, const VertexPositions<D>& x, PetscInt cell, geometry::Point<D>* centroid);
+
+/// The corners of a 2D polygon point (a face of a 3D mesh) in cyclic order,
+/// found by walking its edges, and its edges in the same order: edges[k] joins
+/// corners[k] and corners[k + 1] (mod the corner count).
+PetscErrorCode FaceCycle(DM dm, PetscInt face, std::vector<PetscInt>* corners, std::vector<PetscInt>* edges);
 
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);
