@@ -60,6 +60,7 @@ struct MeshSource {
 
 PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
   PetscFunctionBeginUser;
+  PetscBool refine_given = PETSC_FALSE;
   PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
   PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves: source, absorbing, free, roller, "
                                "fixed, sink, crack*); default: generate from -specimen_* and -crack_*",
@@ -68,13 +69,18 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
                                "physical curve names; default: the unsplit -mesh_file mesh)",
                                nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
   PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
-                            m->refinements, &m->refinements, nullptr));
+                            m->refinements, &m->refinements, &refine_given));
   PetscCall(PetscOptionsBool("-force", "Run even when the memory estimate exceeds the memory available", nullptr,
                              m->force, &m->force, nullptr));
   PetscOptionsEnd();
   // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
   PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
              m->refinements);
+  // -dm_refine has PETSc's dm_ prefix, so the audit of missing values leaves it to PETSc,
+  // which takes "-dm_refine" with no value as not given: vibrotherm reads it, so it checks.
+  PetscBool refine_named;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_refine", &refine_named));
+  PetscCheck(!refine_named || refine_given, comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
   PetscCheck(!m->from_file || m->file[0], comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->heat_file[0], comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
