@@ -7,11 +7,9 @@
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
 
-#include <algorithm>
-#include <array>
 #include <cmath>
-#include <vector>
 
+#include "box_mesh_support.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
@@ -25,46 +23,12 @@ struct CrackBox {
   ~CrackBox() { (void)DMDestroy(&dm); }
 };
 
-/// [-1,1]³ in n³ cubes, each cut into the 6 tets of Kuhn's triangulation (conforming;
-/// Debian's PETSc has no tet generator), positively oriented.
-PetscErrorCode KuhnTets(PetscInt n, DM* dm) {
-  PetscFunctionBeginUser;
-  auto id = [n](PetscInt i, PetscInt j, PetscInt k) { return static_cast<PetscInt>((k * (n + 1) + j) * (n + 1) + i); };
-  std::vector<PetscReal> xyz;
-  for (PetscInt k = 0; k <= n; ++k)
-    for (PetscInt j = 0; j <= n; ++j)
-      for (PetscInt i = 0; i <= n; ++i) xyz.insert(xyz.end(), {-1 + 2.0 * i / n, -1 + 2.0 * j / n, -1 + 2.0 * k / n});
-  std::vector<PetscInt> cells;
-  std::array<int, 3> axes = {0, 1, 2};
-  for (PetscInt k = 0; k < n; ++k)
-    for (PetscInt j = 0; j < n; ++j)
-      for (PetscInt i = 0; i < n; ++i) do {  // one tet per order in which the axes are stepped
-          std::array<PetscInt, 3> at = {i, j, k};
-          std::array<PetscInt, 4> tet;
-          tet[0] = id(at[0], at[1], at[2]);
-          for (int s = 0; s < 3; ++s) ++at[axes[s]], tet[s + 1] = id(at[0], at[1], at[2]);
-          const PetscReal* p[4] = {&xyz[3 * tet[0]], &xyz[3 * tet[1]], &xyz[3 * tet[2]], &xyz[3 * tet[3]]};
-          double d[3][3];
-          for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) d[r][c] = p[r + 1][c] - p[0][c];
-          const double volume = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
-                                d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-                                d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-          if (volume < 0) std::swap(tet[2], tet[3]);
-          cells.insert(cells.end(), tet.begin(), tet.end());
-        } while (std::next_permutation(axes.begin(), axes.end()));
-  PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, 3, static_cast<PetscInt>(cells.size() / 4),
-                                          static_cast<PetscInt>(xyz.size() / 3), 4, PETSC_TRUE, cells.data(), 3,
-                                          xyz.data(), dm));
-  PetscFunctionReturn(0);
-}
-
 /// [-1,1]³ in 8³ hexes (or Kuhn tets) with the crack x0 ≤ x ≤ x1, |y| ≤ 0.5 in the plane z = 0.
 PetscErrorCode MakeCrackBox(bool simplex, double x0, double x1, CrackBox* box) {
   PetscFunctionBeginUser;
   const PetscInt faces[3] = {8, 8, 8};
   const PetscReal lower[3] = {-1, -1, -1}, upper[3] = {1, 1, 1};
-  if (simplex) PetscCall(KuhnTets(8, &box->dm));
+  if (simplex) PetscCall(KuhnSimplices(3, faces, lower, upper, &box->dm));
   else PetscCall(DMPlexCreateBoxMesh(PETSC_COMM_SELF, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, &box->dm));
   PetscCall(DMCreateLabel(box->dm, mesh::labels::crack));
   PetscCall(DMCreateLabel(box->dm, mesh::labels::crack_tip));

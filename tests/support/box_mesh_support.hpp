@@ -46,10 +46,12 @@ inline double BoxVolume(int dim) {
   return dim == 2 ? kBoxUpper[0] * kBoxUpper[1] : kBoxUpper[0] * kBoxUpper[1] * kBoxUpper[2];
 }
 
-/// The box's grid split into simplices: every square or cube into 2 or 6 along
-/// its main diagonal (Kuhn's split: conforming, as every cell uses the same
-/// diagonal), each simplex ordered to have a positive volume.
-inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
+/// The grid of faces[d] cells between lower and upper split into simplices: every
+/// square or cube into 2 or 6 along its main diagonal (Kuhn's split: conforming, as
+/// every cell uses the same diagonal), each simplex ordered to have a positive volume.
+/// (Debian's PETSc 3.18 has no simplex generator and no registered refine_tosimplex.)
+inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, const double* lower, const double* upper,
+                                    DM* dm) {
   PetscFunctionBeginUser;
   const PetscInt n[3] = {faces[0] + 1, faces[1] + 1, dim == 3 ? faces[2] + 1 : 1};
   std::vector<PetscReal> coordinates;
@@ -57,7 +59,7 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
     for (PetscInt j = 0; j < n[1]; ++j)
       for (PetscInt i = 0; i < n[0]; ++i) {
         const PetscInt ijk[3] = {i, j, k};
-        for (int d = 0; d < dim; ++d) coordinates.push_back(kBoxUpper[d] * ijk[d] / faces[d]);
+        for (int d = 0; d < dim; ++d) coordinates.push_back(lower[d] + (upper[d] - lower[d]) * ijk[d] / faces[d]);
       }
   const auto vertex = [&](const PetscInt* ijk) { return ijk[0] + n[0] * (ijk[1] + n[1] * (dim == 3 ? ijk[2] : 0)); };
   std::vector<PetscInt> cells;
@@ -84,6 +86,12 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
                                           static_cast<PetscInt>(coordinates.size()) / dim, dim + 1, PETSC_TRUE,
                                           cells.data(), dim, coordinates.data(), dm));
   PetscFunctionReturn(0);
+}
+
+/// The same on the box [0, kBoxUpper].
+inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
+  const double origin[3] = {0.0, 0.0, 0.0};
+  return KuhnSimplices(dim, faces, origin, kBoxUpper.data(), dm);
 }
 
 /// A box mesh with 3 × 2 (× 2) squares or cubes, interpolated, as they are or
