@@ -111,6 +111,8 @@ void WritePeriodic(JsonWriter& json, const RunSummary& s) {
         .value("period_multiple", p.period_multiple)
         .value("periods_continued", p.periods_continued)
         .value("change", p.change)
+        .value("friction_drift", p.drift)
+        .value("drift_projected", p.projected)
         .end_object();
   json.end_array();
 }

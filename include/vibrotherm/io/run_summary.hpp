@@ -35,6 +35,8 @@ struct PeriodicSegment {
   double period_multiple = 0.0;    ///< source periods in the period recorded and replayed
   double periods_continued = 0.0;  ///< source periods the waves did not simulate
   double change = 0.0;             ///< the detector's change when it was found periodic
+  double drift = 0.0;              ///< the friction per period's relative change per source period then
+  double projected = 0.0;          ///< half the drift over the periods continued: the frozen heat's error if it went on
 };
 
 /// The largest rise over every heat dof at every heat step, when and where.

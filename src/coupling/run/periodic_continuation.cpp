@@ -99,6 +99,13 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
     detector_.Reset();
     PetscFunctionReturn(0);
   }
+  double drift, projected;
+  bool allows;
+  PetscCall(DriftAllows(t, n, end, &drift, &projected, &allows));
+  if (!allows) {  // watch on: the drift and the periods left both shrink
+    phase_ = Phase::kWatch;
+    PetscFunctionReturn(0);
+  }
   // What grows over the continuation: n times the recorded period's increase; the clock exactly n·P.
   const std::vector<double> now = waves_->Accumulated();
   increments_.resize(now.size());
@@ -112,8 +119,33 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
   increments_[2] = increments_[1] - increments_[3] + increments_[4] + increments_[5] +
                    (crack ? increments_.back() : 0.0);
   row_end_ = row;
-  segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change()});
+  segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change(), drift, projected});
   PetscCall(Continue(recorder, t, n, continued));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double stretch_end, double* drift,
+                                                 double* projected, bool* allows) {
+  PetscFunctionBeginUser;
+  double error;
+  detector_.FrictionDrift(multiple_ / scene_->periodic.window, drift, &error);
+  *projected = 0.5 * std::abs(*drift) * static_cast<double>(n * multiple_);
+  const double tol = scene_->periodic.drift_tol;
+  *allows = tol <= 0.0 || *projected <= tol;
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
+  if (!*allows && drift_said_ != stretch_end) {
+    drift_said_ = stretch_end;
+    PetscCall(PetscPrintf(comm,
+                          "Periodic at t = %.6g s but the friction per period still drifts by %.2g (+-%.1g) per period: "
+                          "continuing %" PetscInt_FMT " periods would be off by ~%.2g (-periodic_drift_tol %g); the "
+                          "waves run on\n",
+                          t, *drift, error, n * multiple_, *projected, tol));
+  } else if (*allows && tol <= 0.0 && *projected > 10.0 * scene_->periodic.tol) {
+    PetscCall(PetscPrintf(comm,
+                          "Warning: the friction per period still drifts by %.2g (+-%.1g) per period; if that went on, "
+                          "the %" PetscInt_FMT " periods continued would be off by ~%.2g (-periodic_drift_tol bounds it)\n",
+                          *drift, error, n * multiple_, *projected));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -280,12 +312,15 @@ PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
   summary->derived["periodic_periods_continued"] = static_cast<double>(continued);
   if (!segments_.empty()) summary->derived["periodic_reached_at"] = segments_.front().detected;
   summary->derived["periodic_last_change"] = detector_.last_change();
+  double projected = 0.0;
+  for (const Segment& s : segments_) projected = std::max(projected, s.projected);
+  summary->derived["periodic_drift_projected"] = projected;
   summary->derived_rules["periodic"] = on_ ? (segments_.empty() ? "on: never periodic within -periodic_tol" : "on")
                                            : "off: " + note_;
   summary->periodic.clear();
   for (const Segment& s : segments_)
     summary->periodic.push_back({s.detected, s.suspended, s.resumed, static_cast<double>(s.multiple),
-                                 static_cast<double>(s.periods * s.multiple), s.change});
+                                 static_cast<double>(s.periods * s.multiple), s.change, s.drift, s.projected});
   PetscFunctionReturn(0);
 }
 

@@ -171,6 +171,28 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
   PetscFunctionReturn(0);
 }
 
+void PeriodicDetector::FrictionDrift(PetscInt m, double* slope, double* error) const {
+  *slope = *error = 0.0;
+  std::vector<double> F;  // oldest first
+  for (std::ptrdiff_t k = static_cast<std::ptrdiff_t>(samples_.size()) - 1; k >= m; k -= m)
+    F.insert(F.begin(), samples_[k].energy.dissipated - samples_[k - m].energy.dissipated);
+  const std::size_t n = F.size();
+  if (n < 4) return;
+  double mean = 0.0, x_mean = 0.5 * static_cast<double>(n - 1);
+  for (double f : F) mean += f / static_cast<double>(n);
+  double sxx = 0.0, sxy = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    sxx += (j - x_mean) * (j - x_mean);
+    sxy += (j - x_mean) * (F[j] - mean);
+  }
+  const double b = sxy / sxx;
+  double residual = 0.0;
+  for (std::size_t j = 0; j < n; ++j) residual += std::pow(F[j] - mean - b * (j - x_mean), 2);
+  if (mean <= 0.0) return;
+  *slope = b / mean / static_cast<double>(m);
+  *error = std::sqrt(residual / static_cast<double>(n - 2) / sxx) / mean / static_cast<double>(m);
+}
+
 PetscErrorCode PeriodicDetector::Finish() {
   PetscFunctionBeginUser;
   if (file_) VibrothermCallIo(PETSC_COMM_SELF, file_->commit());

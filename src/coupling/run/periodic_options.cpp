@@ -34,6 +34,9 @@ PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
                             &o->fine_periods, nullptr));
   PetscCall(PetscOptionsInt("-periodic_min_continued", "A continuation shorter than this many periods is simulated "
                             "instead", nullptr, o->min_continued, &o->min_continued, nullptr));
+  PetscCall(PetscOptionsReal("-periodic_drift_tol", "Largest projected error of a continuation from the measured drift "
+                             "of the friction per period (half the drift over the periods continued); above it the waves "
+                             "run on (0: report the drift only)", nullptr, o->drift_tol, &o->drift_tol, nullptr));
   PetscOptionsEnd();
   o->on = o->choice != PeriodicChoice::Off;
   PetscCheck(o->tol > 0.0 && o->tol < 1.0, comm, PETSC_ERR_USER_INPUT, "-periodic_tol must be in (0, 1), got %g", o->tol);
@@ -45,6 +48,8 @@ PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
              "-periodic_window must be in [1, 64], got %" PetscInt_FMT, o->window);
   PetscCheck(o->refresh >= 0.0 && std::isfinite(o->refresh), comm, PETSC_ERR_USER_INPUT,
              "-periodic_refresh must be >= 0, got %g", o->refresh);
+  PetscCheck(o->drift_tol >= 0.0 && o->drift_tol < 1.0, comm, PETSC_ERR_USER_INPUT,
+             "-periodic_drift_tol must be in [0, 1), got %g", o->drift_tol);
   PetscCheck(o->ladder_steps >= 1, comm, PETSC_ERR_USER_INPUT, "-periodic_ladder_steps must be >= 1, got %" PetscInt_FMT,
              o->ladder_steps);
   PetscCheck(o->fine_periods >= 1, comm, PETSC_ERR_USER_INPUT, "-periodic_fine_periods must be >= 1, got %" PetscInt_FMT,

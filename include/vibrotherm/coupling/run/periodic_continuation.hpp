@@ -84,6 +84,9 @@ class PeriodicContinuation {
   bool AtPeriodBoundary(double t) const;
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
   PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
+  /// Whether the friction's drift (measured over the detector's samples) allows continuing n
+  /// recorded periods; says so once per steady stretch when it does not. *drift, *projected: as Segment.
+  PetscErrorCode DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* projected, bool* allows);
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
   PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
@@ -114,6 +117,7 @@ class PeriodicContinuation {
   PetscInt multiple_ = 0;     ///< source periods in the period recorded and replayed (the found one × the window)
   double record_start_ = 0.0, record_end_ = 0.0;
   double skip_stretch_ = -1.0;  ///< end of a steady stretch too short to continue (watch no more in it)
+  double drift_said_ = -1.0;    ///< end of the steady stretch whose drift held the waves on (said once)
   std::vector<double> accumulated_start_;  ///< the waves' growing accounts at the recording's start (this rank)
   std::vector<double> increments_;         ///< what they grow by over the continuation
   io::EnergyRow row_start_, row_end_;
@@ -127,6 +131,7 @@ class PeriodicContinuation {
     double detected, suspended, resumed;
     PetscInt multiple, periods;
     double change;
+    double drift, projected;  ///< the friction's relative drift per source period; half of it over the periods
   };
   std::vector<Segment> segments_;
   std::string note_;  ///< why it is off

@@ -51,6 +51,10 @@ class PeriodicDetector {
   PetscErrorCode Sample(WaveComponent& waves, const io::EnergyRow& row, PetscInt* multiple);
   /// Forgets the samples (the source changed, or the waves jumped ahead).
   void Reset();
+  /// The drift of the crack's friction: a least-squares line through the dissipated energy of
+  /// each stretch of m source periods between the samples; *slope is its rise per source period
+  /// relative to the mean, *error the slope's standard error (both 0 with fewer than 4 stretches).
+  void FrictionDrift(PetscInt m, double* slope, double* error) const;
   /// The smallest change of any multiple at the last sample (inf before 2 samples).
   double last_change() const { return last_change_; }
   /// Publishes periodic.csv (a complete run).

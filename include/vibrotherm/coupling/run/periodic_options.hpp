@@ -25,6 +25,10 @@ struct PeriodicOptions {
   PetscInt ladder_steps = 16;  ///< -periodic_ladder_steps: heat steps per rung (the step doubles after them)
   PetscInt fine_periods = 4;   ///< -periodic_fine_periods: phase-resolved heat periods before the ladder
   PetscInt min_continued = 8;  ///< -periodic_min_continued: fewer periods to skip are simply simulated
+  /// -periodic_drift_tol: a continuation freezes the friction per period it recorded; while that still
+  /// drifts (a ratcheting crack), half the drift over the continuation, relative, is what the frozen
+  /// heat would miss if the drift went on. Above this the waves run on (0: measured and reported only)
+  double drift_tol = 0.0;
 };
 
 /// Reads -periodic*, checked, named errors. Collective.
