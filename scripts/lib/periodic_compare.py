@@ -4,6 +4,9 @@ figures issue 24 asks for. Used by tests/scene/test_periodic_continuation.py,
 scripts/convergence --study periodic and scripts/bench periodic."""
 import json
 import os
+import signal
+import subprocess
+import time
 
 import numpy as np
 
@@ -63,3 +66,32 @@ def compare(out, ref, crack_probe, period, t0=0.0, t1=np.inf):
     if "camera" in s and "camera" in r and r["camera"].get("peak_rise"):
         result["camera_peak"] = relative(s["camera"]["peak_rise"], r["camera"]["peak_rise"])
     return result
+
+
+def check_restart_inside_continuation(check, exe, args, tmp):
+    """A run stopped by SIGUSR1 inside a continuation's heat ladder (args must make the
+    ladder long enough to catch, e.g. camera windows) restarts from its checkpoint and ends
+    identical to the run never stopped: energy.csv, probes.csv, periodic.csv, summary figures."""
+    whole, stopped = os.path.join(tmp, "whole"), os.path.join(tmp, "stopped")
+    r = subprocess.run([exe] + args + ["-output_dir", whole], capture_output=True, text=True)
+    check(r.returncode == 0, "%s: %s" % (whole, r.stderr[-1500:]))
+    if r.returncode != 0:
+        return
+    p = subprocess.Popen([exe] + args + ["-output_dir", stopped], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True)
+    for line in p.stdout:
+        if line.startswith("Periodic at"):
+            time.sleep(0.3)
+            p.send_signal(signal.SIGUSR1)
+            break
+    p.communicate()
+    check(p.returncode == 128 + signal.SIGUSR1, "stopped by SIGUSR1 inside the continuation: exit %s" % p.returncode)
+    r = subprocess.run([exe] + args + ["-restart", stopped, "-output_dir", stopped], capture_output=True, text=True)
+    check(r.returncode == 0, "restart: %s" % r.stderr[-800:])
+    if r.returncode == 0:
+        for name in ("energy.csv", "probes.csv", "periodic.csv"):
+            same = open(os.path.join(whole, name)).read() == open(os.path.join(stopped, name)).read()
+            check(same, "restart inside the continuation: %s differs from the run never stopped" % name)
+        a, b = summary(whole), summary(stopped)
+        check(a["dissipated_energy"] == b["dissipated_energy"] and a.get("camera") == b.get("camera"),
+              "restart: summary figures differ")

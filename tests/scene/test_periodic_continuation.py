@@ -12,7 +12,7 @@ resolved run of the same scene (same quantized step, no continuation):
   - a tolerance nothing meets: the run is simulated fully and says how close it came.
 
 usage: test_periodic_continuation.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, os, signal, subprocess, sys, tempfile, time
+import json, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
@@ -58,27 +58,7 @@ with tempfile.TemporaryDirectory() as tmp:
               "2 ranks = serial: %r vs %r" % (b["dissipated_energy"], a["dissipated_energy"]))
     # A signal inside the heat ladder: camera windows make the ladder long enough to catch.
     camera = ["-camera", "-camera_fps", "20000", "-camera_integration", "2e-5", "-checkpoint_every_s", "0"]
-    whole, stopped = os.path.join(tmp, "whole"), os.path.join(tmp, "stopped")
-    if run_scene(check, exe, SCENE + camera, whole):
-        p = subprocess.Popen([exe] + SCENE + camera + ["-output_dir", stopped], stdout=subprocess.PIPE,
-                             stderr=subprocess.STDOUT, text=True)
-        for line in p.stdout:
-            if line.startswith("Periodic at"):
-                time.sleep(0.3)
-                p.send_signal(signal.SIGUSR1)
-                break
-        p.communicate()
-        check(p.returncode == 128 + signal.SIGUSR1, "stopped by SIGUSR1 inside the continuation: exit %s" % p.returncode)
-        r = subprocess.run([exe] + SCENE + camera + ["-restart", stopped, "-output_dir", stopped], capture_output=True,
-                           text=True)
-        check(r.returncode == 0, "restart: %s" % r.stderr[-800:])
-        if r.returncode == 0:
-            for name in ("energy.csv", "probes.csv", "periodic.csv"):
-                same = open(os.path.join(whole, name)).read() == open(os.path.join(stopped, name)).read()
-                check(same, "restart inside the continuation: %s differs from the run never stopped" % name)
-            a, b = summary(whole), summary(stopped)
-            check(a["dissipated_energy"] == b["dissipated_energy"] and a["camera"] == b["camera"],
-                  "restart: summary figures differ")
+    periodic_compare.check_restart_inside_continuation(check, exe, SCENE + camera, tmp)
     never = os.path.join(tmp, "never")
     if run_scene(check, exe, BASE + ["-periodic_tol", "1e-12", "-source_duration", "5e-4", "-final_time", "3e-4"],
                  never):

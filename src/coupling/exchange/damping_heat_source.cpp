@@ -1,5 +1,8 @@
 #include "vibrotherm/coupling/exchange/damping_heat_source.hpp"
 
+#include "vibrotherm/coupling/exchange/replay_checkpoint.hpp"
+#include "vibrotherm/mesh/plex/point_origin.hpp"
+
 namespace vibrotherm::coupling {
 
 DampingHeatSource::~DampingHeatSource() {
@@ -18,14 +21,65 @@ PetscErrorCode DampingHeatSource::Setup(wave::WaveSolver* waves, Mat transfer) {
   PetscCall(PetscObjectReference((PetscObject)transfer));
   D_ = transfer;
   PetscCall(MatCreateVecs(D_, &energy_, &work_));
+  PetscInt n;
+  PetscCall(VecGetLocalSize(work_, &n));
+  cumulative_.assign(n, 0.0);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DampingHeatSource::AddLoad(double, double interval, Vec Q) {
+PetscErrorCode DampingHeatSource::StepEnergy(double t) {
   PetscFunctionBeginUser;
-  PetscCall(waves_->TakeDampingEnergy(energy_));
-  PetscCall(MatMult(D_, energy_, work_));
+  PetscScalar* E;
+  if (mode_ == ReplayMode::Off) {
+    PetscCall(waves_->TakeDampingEnergy(energy_));
+    PetscCall(MatMult(D_, energy_, work_));
+    PetscCall(VecGetArray(work_, &E));
+    for (std::size_t i = 0; i < cumulative_.size(); ++i) cumulative_[i] += PetscRealPart(E[i]);
+  } else {  // what the replay has deposited by t, less what was already
+    const std::vector<double> now = replay_.At(t, mode_);
+    PetscCall(VecGetArray(work_, &E));
+    for (std::size_t i = 0; i < cumulative_.size(); ++i) E[i] = now[i] - cumulative_[i];
+    cumulative_ = now;
+  }
+  PetscCall(VecRestoreArray(work_, &E));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DampingHeatSource::AddLoad(double t, double interval, Vec Q) {
+  PetscFunctionBeginUser;
+  PetscCall(StepEnergy(t));
+  if (replay_.recording()) replay_.Sample(t, cumulative_);
   PetscCall(AddEnergyLoad(work_, interval, Q, &deposited_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DampingHeatSource::StartRecording(double t) {
+  PetscFunctionBeginUser;
+  replay_.Start(t, cumulative_);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DampingHeatSource::StopRecording() {
+  PetscFunctionBeginUser;
+  replay_.Stop();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DampingHeatSource::Replay(ReplayMode mode) {
+  PetscFunctionBeginUser;
+  PetscCheck(mode == ReplayMode::Off || !replay_.empty(), PetscObjectComm((PetscObject)D_), PETSC_ERR_ORDER,
+             "damping heat: nothing recorded to replay");
+  mode_ = mode;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DampingHeatSource::AddAverageLoad(Vec Q) {
+  PetscFunctionBeginUser;
+  const std::vector<double> rise = replay_.increase();
+  PetscScalar* q;
+  PetscCall(VecGetArray(Q, &q));
+  for (std::size_t i = 0; i < rise.size(); ++i) q[i] += rise[i] / replay_.span();
+  PetscCall(VecRestoreArray(Q, &q));
   PetscFunctionReturn(0);
 }
 
@@ -35,18 +89,26 @@ PetscErrorCode DampingHeatSource::Finish(const std::string&) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DampingHeatSource::Save(store::Checkpoint& checkpoint, const mesh::Specimen&) const {
+PetscErrorCode DampingHeatSource::Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
   checkpoint.PutShared("damping_heat/deposited", {deposited_});
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(specimen.heat, specimen.heat_origin, &keys));
+  checkpoint.PutKeyed("damping_heat/cumulative", keys, 1, cumulative_);
+  PutReplay(checkpoint, "damping_heat", keys, replay_, mode_);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DampingHeatSource::Restore(const store::Checkpoint& checkpoint, const mesh::Specimen&) {
+PetscErrorCode DampingHeatSource::Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
   PetscFunctionBeginUser;
   // Checkpoints follow a heat step: nothing was taken since (the restored waves start counting afresh).
   std::vector<double> deposited;
   PetscCall(checkpoint.GetShared("damping_heat/deposited", &deposited, 1));
   deposited_ = deposited[0];
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(specimen.heat, specimen.heat_origin, &keys));
+  PetscCall(checkpoint.GetKeyed("damping_heat/cumulative", keys, 1, &cumulative_));
+  PetscCall(GetReplay(checkpoint, "damping_heat", keys, &replay_, &mode_));
   PetscFunctionReturn(0);
 }
 

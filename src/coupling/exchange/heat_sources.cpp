@@ -1,5 +1,7 @@
 #include "vibrotherm/coupling/exchange/heat_sources.hpp"
 
+#include "vibrotherm/coupling/exchange/replay_checkpoint.hpp"
+
 namespace vibrotherm::coupling {
 
 PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited) {
@@ -85,16 +87,7 @@ PetscErrorCode FrictionHeatSource::Save(store::Checkpoint& checkpoint, const mes
   checkpoint.PutShared("friction_heat/deposited", {deposited_});
   const std::vector<long long> keys = CellKeys(specimen);
   record_.Save(checkpoint, keys);
-  // A periodic recording (under way or replayed): its phases, and per cell its samples.
-  std::vector<double> samples;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    const std::vector<double> item = replay_.item(i);
-    samples.insert(samples.end(), item.begin(), item.end());
-  }
-  std::vector<double> phases = replay_.phases();
-  phases.insert(phases.begin(), {static_cast<double>(mode_), replay_.recording() ? 1.0 : 0.0, replay_.start()});
-  checkpoint.PutShared("friction_heat/replay", phases);
-  checkpoint.PutKeyed("friction_heat/replay_samples", keys, static_cast<int>(replay_.phases().size()), samples);
+  PutReplay(checkpoint, "friction_heat", keys, replay_, mode_);  // a periodic recording, under way or replayed
   checkpoint.PutKeyed("friction_heat/previous", keys, 1, transfer_.previous());
   PetscFunctionReturn(0);
 }
@@ -106,16 +99,7 @@ PetscErrorCode FrictionHeatSource::Restore(const store::Checkpoint& checkpoint, 
   deposited_ = deposited[0];
   const std::vector<long long> keys = CellKeys(specimen);
   PetscCall(record_.Restore(checkpoint, keys));
-  std::vector<double> replay, samples;
-  PetscCall(checkpoint.GetShared("friction_heat/replay", &replay));
-  const std::size_t phases = replay.size() - 3;
-  PetscCall(checkpoint.GetKeyed("friction_heat/replay_samples", keys, static_cast<int>(phases), &samples));
-  std::vector<std::vector<double>> items(keys.size());
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    items[i].assign(samples.begin() + static_cast<std::ptrdiff_t>(i * phases),
-                    samples.begin() + static_cast<std::ptrdiff_t>((i + 1) * phases));
-  replay_.Restore(replay[2], std::vector<double>(replay.begin() + 3, replay.end()), items, replay[1] != 0.0);
-  mode_ = static_cast<ReplayMode>(static_cast<int>(replay[0]));
+  PetscCall(GetReplay(checkpoint, "friction_heat", keys, &replay_, &mode_));
   // The energies the last exchange took (the interface's, or a replay's during a periodic continuation).
   std::vector<double> previous;
   PetscCall(checkpoint.GetKeyed("friction_heat/previous", keys, 1, &previous));

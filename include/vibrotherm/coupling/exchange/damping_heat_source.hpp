@@ -4,12 +4,15 @@
 // dofs' energies E since the last step arrive as the load D E / Δt, with D of
 // thermoelastic_transfer.hpp (AssembleDampingTransfer: every column sums to 1), so
 // the heat deposited equals the waves' `damped` column to rounding. A whole-specimen
-// source: most scenes want it off (the crack's friction is the signal).
+// source: most scenes want it off (the crack's friction is the signal). A periodic
+// continuation replays it like the friction: each heat dof's cumulative energy over
+// the recorded period, phase-locked or averaged (periodic_replay.hpp).
 #pragma once
 
 #include <petscmat.h>
 
 #include <string>
+#include <vector>
 
 #include "vibrotherm/coupling/exchange/heat_sources.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -32,12 +35,22 @@ class DampingHeatSource final : public HeatSource {
   const char* name() const override { return "damping"; }
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
+  bool replayable() const override { return true; }
+  PetscErrorCode StartRecording(double t) override;
+  PetscErrorCode StopRecording() override;
+  PetscErrorCode Replay(ReplayMode mode) override;
+  PetscErrorCode AddAverageLoad(Vec Q) override;
 
  private:
+  /// work_ = the energy per heat dof of the step ending at t: the waves' (live), or the replay's.
+  PetscErrorCode StepEnergy(double t);
   wave::WaveSolver* waves_ = nullptr;
   Mat D_ = nullptr;
   Vec energy_ = nullptr, work_ = nullptr;
   double deposited_ = 0.0;
+  std::vector<double> cumulative_;  ///< energy deposited so far per owned heat dof [J/m]
+  PeriodicReplay replay_;
+  ReplayMode mode_ = ReplayMode::Off;
 };
 
 }  // namespace vibrotherm::coupling
