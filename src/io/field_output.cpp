@@ -39,9 +39,12 @@ PetscErrorCode FieldFile::AddMesh(const std::string& name, DM dm) {
   g.points = name;
   g.owned_vertices = static_cast<PetscInt>(vertices.rows.size());
   g.xdmf.vertices = vertices.global;
-  g.xdmf.topology_type = corners == 3 ? "Triangle" : "Quadrilateral";
+  g.xdmf.dim = vertices.dim;
+  PetscInt dim;
+  PetscCall(DMGetDimension(dm, &dim));
+  g.xdmf.topology_type = XdmfTopologyType(static_cast<int>(dim), corners);
   PetscCall(AddGrid(name, g, corners, cells));
-  PetscCall(Write({name, "geometry", "m", 2, false}, vertices.rows, vertices.xy, -1, 0.0));
+  PetscCall(Write({name, "geometry", "m", vertices.dim, false}, vertices.rows, vertices.coordinates, -1, 0.0));
   PetscFunctionReturn(0);
 }
 
@@ -55,9 +58,10 @@ PetscErrorCode FieldFile::AddMesh(const std::string& name, const fe::LagrangeSpa
 PetscErrorCode FieldFile::AddCohesiveCells(const std::string& name, const std::string& mesh) {
   PetscFunctionBeginUser;
   const Grid& m = grids_.at(mesh);
-  std::vector<PetscInt> segments;
-  PetscCall(OwnedCohesiveSegments(m.dm, &segments));
-  PetscInt count = static_cast<PetscInt>(segments.size());
+  std::vector<PetscInt> faces;
+  PetscInt corners;
+  PetscCall(OwnedCohesiveFaces(m.dm, &faces, &corners));
+  PetscInt count = static_cast<PetscInt>(faces.size());
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPIU_INT, MPI_SUM, comm_));
   if (count == 0) PetscFunctionReturn(0);  // an unsplit mesh
   Grid g;
@@ -65,8 +69,9 @@ PetscErrorCode FieldFile::AddCohesiveCells(const std::string& name, const std::s
   g.numbering = m.numbering;
   g.points = mesh;  // lines on the mesh's own vertices: no geometry of its own
   g.xdmf.vertices = m.xdmf.vertices;
-  g.xdmf.topology_type = "Polyline";
-  PetscCall(AddGrid(name, g, 2, segments));
+  g.xdmf.dim = m.xdmf.dim;
+  g.xdmf.topology_type = XdmfTopologyType(m.xdmf.dim - 1, corners);
+  PetscCall(AddGrid(name, g, corners, faces));
   PetscFunctionReturn(0);
 }
 

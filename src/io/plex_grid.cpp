@@ -40,7 +40,29 @@ PetscErrorCode OwnedCells(DM dm, bool cohesive, std::vector<PetscInt>* cells) {
   PetscFunctionReturn(0);
 }
 
+/// The owned vertices' global numbers and D coordinates (number: DMPlexGetVertexNumbering's).
+template <std::size_t D>
+PetscErrorCode AppendOwned(DM dm, const PetscInt* number, PetscInt vStart, PetscInt vEnd, PlexVertices* out) {
+  PetscFunctionBeginUser;
+  mesh::VertexPositions<D> x;
+  PetscCall(x.Setup(dm));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    if (number[v - vStart] < 0) continue;  // owned by another rank
+    out->rows.push_back(number[v - vStart]);
+    const auto p = x(v);
+    out->coordinates.insert(out->coordinates.end(), p.begin(), p.end());
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
+
+const char* XdmfTopologyType(int dim, PetscInt corners) {
+  if (corners == 2) return "Polyline";
+  if (dim == 3 && corners == 4) return "Tetrahedron";
+  if (dim == 3 && corners == 8) return "Hexahedron";
+  return corners == 3 ? "Triangle" : "Quadrilateral";
+}
 
 PetscErrorCode OwnedVertices(DM dm, PlexVertices* out) {
   PetscFunctionBeginUser;
@@ -49,16 +71,13 @@ PetscErrorCode OwnedVertices(DM dm, PlexVertices* out) {
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   const PetscInt* number;
   PetscCall(ISGetIndices(out->numbering, &number));
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
+  PetscInt dim;
+  PetscCall(DMGetCoordinateDim(dm, &dim));
+  out->dim = static_cast<int>(dim);
   out->rows.clear();
-  out->xy.clear();
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    if (number[v - vStart] < 0) continue;  // owned by another rank
-    out->rows.push_back(number[v - vStart]);
-    const auto p = x(v);
-    out->xy.insert(out->xy.end(), {p[0], p[1]});
-  }
+  out->coordinates.clear();
+  if (dim == 3) PetscCall(AppendOwned<3>(dm, number, vStart, vEnd, out));
+  else PetscCall(AppendOwned<2>(dm, number, vStart, vEnd, out));
   PetscCall(ISRestoreIndices(out->numbering, &number));
   const PetscInt owned = static_cast<PetscInt>(out->rows.size());
   PetscCallMPI(MPI_Allreduce(&owned, &out->global, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
@@ -71,6 +90,8 @@ PetscErrorCode OwnedBulkCells(DM dm, std::vector<PetscInt>* cells, PetscInt* cor
   std::vector<PetscInt> number, owned;
   PetscCall(GlobalVertexNumbers(dm, &vStart, &number));
   PetscCall(OwnedCells(dm, false, &owned));
+  PetscInt dim;
+  PetscCall(DMGetDimension(dm, &dim));
   cells->clear();
   for (PetscInt c : owned) {
     PetscInt n, *closure = nullptr;
@@ -83,25 +104,39 @@ PetscErrorCode OwnedBulkCells(DM dm, std::vector<PetscInt>* cells, PetscInt* cor
       ++k;
     }
     PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &n, &closure));
+    if (dim == 3) {  // Plex's first face points inward: VTK's order is the inverted one
+      DMPolytopeType type;
+      PetscCall(DMPlexGetCellType(dm, c, &type));
+      PetscCall(DMPlexInvertCell(type, cells->data() + cells->size() - k));
+    }
   }
   // A rank without cells has seen no corners: take the others' count.
   PetscCallMPI(MPI_Allreduce(&k, corners, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OwnedCohesiveSegments(DM dm, std::vector<PetscInt>* segments) {
+PetscErrorCode OwnedCohesiveFaces(DM dm, std::vector<PetscInt>* faces, PetscInt* corners) {
   PetscFunctionBeginUser;
-  PetscInt vStart;
-  std::vector<PetscInt> number, owned;
+  PetscInt vStart, dim, k = 0;
+  std::vector<PetscInt> number, owned, face_corners, edges;
   PetscCall(GlobalVertexNumbers(dm, &vStart, &number));
   PetscCall(OwnedCells(dm, true, &owned));
-  segments->clear();
+  PetscCall(DMGetDimension(dm, &dim));
+  faces->clear();
   for (PetscInt c : owned) {
-    const PetscInt *faces, *ends;
-    PetscCall(DMPlexGetCone(dm, c, &faces));  // cone: − face, + face, tensor edges
-    PetscCall(DMPlexGetCone(dm, faces[0], &ends));
-    for (int e = 0; e < 2; ++e) segments->push_back(number[ends[e] - vStart]);
+    const PetscInt* cone;
+    PetscCall(DMPlexGetCone(dm, c, &cone));  // cone: − face, + face, tensor edges or faces
+    if (dim == 2) {
+      const PetscInt* ends;
+      PetscCall(DMPlexGetCone(dm, cone[0], &ends));
+      face_corners.assign(ends, ends + 2);
+    } else {
+      PetscCall(mesh::FaceCycle(dm, cone[0], &face_corners, &edges));
+    }
+    k = static_cast<PetscInt>(face_corners.size());
+    for (PetscInt v : face_corners) faces->push_back(number[v - vStart]);
   }
+  PetscCallMPI(MPI_Allreduce(&k, corners, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);
 }
 

@@ -23,8 +23,8 @@ void WriteUniformGrid(std::ostream& out, const std::string& pad, const XdmfGrid&
   out << pad << "  <Topology TopologyType=\"" << g.topology_type << "\" NumberOfElements=\"" << g.cells << "\""
       << (g.topology_type == "Polyline" ? " NodesPerElement=\"2\"" : "") << ">\n";
   WriteDataItem(out, pad + "    ", "Int", g.cells, g.corners, g.topology);
-  out << pad << "  </Topology>\n" << pad << "  <Geometry GeometryType=\"XY\">\n";
-  WriteDataItem(out, pad + "    ", "Float", g.vertices, 2, g.geometry);
+  out << pad << "  </Topology>\n" << pad << "  <Geometry GeometryType=\"" << (g.dim == 3 ? "XYZ" : "XY") << "\">\n";
+  WriteDataItem(out, pad + "    ", "Float", g.vertices, g.dim, g.geometry);
   out << pad << "  </Geometry>\n";
   for (const XdmfAttribute& a : attributes) {
     out << pad << "  <Attribute Name=\"" << a.name << "\" AttributeType=\"" << (a.components == 1 ? "Scalar" : "Vector")

@@ -80,6 +80,8 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, const double
                                                e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
                                                e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
           if (volume < 0) std::swap(corners[1], corners[2]);
+          // Positive in VTK's sense; Plex takes a tetrahedron with its first face inward: inverted.
+          if (dim == 3) PetscCall(DMPlexInvertCell(DM_POLYTOPE_TETRAHEDRON, corners));
           cells.insert(cells.end(), corners, corners + dim + 1);
         } while (std::next_permutation(axes, axes + dim));
   PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, dim, static_cast<PetscInt>(cells.size()) / (dim + 1),

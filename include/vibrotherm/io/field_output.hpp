@@ -1,14 +1,15 @@
 // HDF5 fields of several grids at chosen outputs, indexed by XDMF for ParaView.
 // Layout of the .h5 (every dataset has a string attribute `units`; every
 // per-output dataset has the attribute `time` [s], or `frequency` [Hz] for modes):
-//   /<grid>/geometry            vertices × 2 [m]
+//   /<grid>/geometry            vertices × dim (2 or 3) [m]
 //   /<grid>/topology            cells × corners (global vertex numbers; no units)
 //   /<grid>/<field>_<k>         vertices × components (node fields) or cells × 1
 //                               (cell fields) at output k; vectors have 3
 //                               components (z = 0) so ParaView sees vectors
-// Grids: a mesh's bulk cells (AddMesh), its cohesive cells as segments on the
-// mesh's vertices (AddCohesiveCells), or free segments with their own points
-// (AddSegments). The .h5 is written as .partial and renamed; the .xmf files
+// Grids: a mesh's bulk cells (AddMesh: triangles, quads; tetrahedra, hexahedra in
+// VTK's corner order), its cohesive cells as their − faces on the mesh's vertices
+// (AddCohesiveCells: segments in 2D, triangles or quads in 3D), or free segments
+// with their own points (AddSegments). The .h5 is written as .partial and renamed; the .xmf files
 // appear last, so a crash never leaves files that look complete.
 #pragma once
 
@@ -49,8 +50,8 @@ class FieldFile {
   PetscErrorCode AddMesh(const std::string& name, DM dm);
   /// The same for the DM of space, whose global vectors WriteField then takes.
   PetscErrorCode AddMesh(const std::string& name, const fe::LagrangeSpace& space);
-  /// The cohesive cells of grid `mesh`'s DM as grid `name` of 2-node lines on its
-  /// vertices; nothing when the DM has none.
+  /// The cohesive cells of grid `mesh`'s DM as grid `name` of their − faces on its
+  /// vertices (2-node lines in 2D); nothing when the DM has none.
   PetscErrorCode AddCohesiveCells(const std::string& name, const std::string& mesh);
   /// Grid `name` of this rank's line segments, x0 y0 x1 y1 each, with points of their own.
   PetscErrorCode AddSegments(const std::string& name, const std::vector<double>& ends);

@@ -1,6 +1,9 @@
 // A DMPlex as the flat arrays an HDF5/XDMF grid needs: this rank's owned
 // vertices with their global numbers and coordinates, its owned bulk cells and
-// its owned cohesive (crack) cells, all by global vertex number.
+// its owned cohesive (crack) cells, all by global vertex number, in 2D and 3D.
+// Corners are in XDMF's (VTK's) order: cyclic for triangles and quads as DMPlex
+// has them; 3D cells through DMPlexInvertCell (Plex stores the first face of a
+// hexahedron or tetrahedron with its normal inward, VTK outward).
 #pragma once
 
 #include <petscdm.h>
@@ -12,17 +15,20 @@ namespace vibrotherm::io {
 struct PlexVertices {
   IS numbering = nullptr;     ///< DMPlexGetVertexNumbering (owned by the DM)
   std::vector<PetscInt> rows;  ///< global number of each owned vertex
-  std::vector<double> xy;      ///< their coordinates, 2 per vertex
+  int dim = 2;                 ///< coordinates per vertex (the DM's coordinate dimension)
+  std::vector<double> coordinates;  ///< dim per vertex
   PetscInt global = 0;         ///< vertices on all ranks
 };
 PetscErrorCode OwnedVertices(DM dm, PlexVertices* vertices);
 
-/// Owned bulk cells, corners in closure order (cyclic for triangles and quads);
-/// *corners: the corners per cell (the same on every rank).
+/// Owned bulk cells, corners in XDMF order; *corners: the corners per cell (the same on every rank).
 PetscErrorCode OwnedBulkCells(DM dm, std::vector<PetscInt>* cells, PetscInt* corners);
 
-/// Owned cohesive cells as line segments: the two vertices of each one's − face.
-/// (The ± faces coincide, so the segment is the crack element itself.)
-PetscErrorCode OwnedCohesiveSegments(DM dm, std::vector<PetscInt>* segments);
+/// Owned cohesive cells as the vertices of each one's − face: segments in 2D, triangles or
+/// quadrilaterals in 3D (the ± faces coincide, so the face is the crack element itself).
+PetscErrorCode OwnedCohesiveFaces(DM dm, std::vector<PetscInt>* faces, PetscInt* corners);
+
+/// XDMF's TopologyType of cells of dimension `dim` with `corners` corners ("Polyline": 2-node lines).
+const char* XdmfTopologyType(int dim, PetscInt corners);
 
 }  // namespace vibrotherm::io

@@ -15,9 +15,10 @@ namespace vibrotherm::io {
 
 struct XdmfGrid {
   std::string name;
-  std::string topology_type;  ///< "Triangle", "Quadrilateral" or "Polyline" (2-node lines)
+  std::string topology_type;  ///< plex_grid.hpp's XdmfTopologyType: "Triangle", "Hexahedron", "Polyline" (2-node lines)...
   PetscInt cells = 0, corners = 0, vertices = 0;
-  std::string topology, geometry;  ///< "<file>.h5:/<path>" of cells × corners and vertices × 2
+  int dim = 2;                     ///< coordinates per vertex (XY or XYZ)
+  std::string topology, geometry;  ///< "<file>.h5:/<path>" of cells × corners and vertices × dim
 };
 
 struct XdmfAttribute {
