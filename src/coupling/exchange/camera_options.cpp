@@ -43,7 +43,8 @@ PetscErrorCode CheckCameraOptions(MPI_Comm comm, const CameraOptions& o) {
 PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o) {
   PetscFunctionBeginUser;
   PetscBool on = o->on ? PETSC_TRUE : PETSC_FALSE, on_set = PETSC_FALSE;
-  PetscBool given[8] = {};
+  PetscBool given[9] = {};
+  char face[64] = "";
   PetscOptionsBegin(comm, nullptr, "IR camera (README \"IR camera\")", nullptr);
   PetscCall(PetscOptionsBool("-camera", "Film the specimen's face with an IR camera: camera.h5/xmf (any -camera_* "
                              "option switches it on too; -camera 0: off)", nullptr, on, &on, &on_set));
@@ -62,7 +63,10 @@ PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o) {
   PetscCall(PetscOptionsInt("-camera_seed", "Camera: seed of the NETD noise", nullptr, o->seed, &o->seed, &given[6]));
   PetscCall(PetscOptionsReal("-camera_detect_snr", "Camera: peak SNR (peak rise / NETD) from which the heating "
                              "counts as detectable", nullptr, o->detect_snr, &o->detect_snr, &given[7]));
+  PetscCall(PetscOptionsString("-camera_face", "Camera (3D specimens): the face it films, front|back|top|bottom|left|"
+                               "right (front: z = max)", nullptr, face, face, sizeof(face), &given[8]));
   PetscOptionsEnd();
+  o->face = face;
   bool any = false;
   for (PetscBool g : given) any = any || g;
   o->on = (on_set ? static_cast<bool>(on) : any) && o->fps > 0.0;

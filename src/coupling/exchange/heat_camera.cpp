@@ -28,19 +28,25 @@ HeatCamera::~HeatCamera() {
 
 PetscErrorCode HeatCamera::Setup(const heat::HeatSolver& heat, const CameraOptions& options, double final_time,
                                  PetscInt* frames) {
+  return Setup(heat.space(), options, final_time, frames);
+}
+
+PetscErrorCode HeatCamera::Setup(const fe::LagrangeSpace& space, const CameraOptions& options, double final_time,
+                                 PetscInt* frames) {
   PetscFunctionBeginUser;
   options_ = options;
-  comm_ = PetscObjectComm((PetscObject)heat.space().dm());
+  comm_ = PetscObjectComm((PetscObject)space.dm());
   PetscClassId id;
   PetscLogEvent setup_event;
   PetscCall(PetscClassIdRegister("vibrotherm camera", &id));
   PetscCall(PetscLogEventRegister("CameraSetup", id, &setup_event));
   PetscCall(PetscLogEventRegister("CameraFrames", id, &event_));
   PetscCall(PetscLogEventBegin(setup_event, 0, 0, 0, 0));
-  PetscCall(Grid(heat.space().dm(), final_time));
+  PetscCall(face_.Setup(space.dm(), options_.face));
+  PetscCall(Grid(final_time));
   *frames = frames_;
   if (frames_ > 0) {
-    PetscCall(Assemble(heat.space()));
+    PetscCall(Assemble(space));
     PetscCall(MatCreateVecs(S_, nullptr, &current_));
     PetscCall(VecDuplicate(current_, &previous_));
     PetscCall(VecDuplicate(current_, &integral_));
@@ -52,11 +58,11 @@ PetscErrorCode HeatCamera::Setup(const heat::HeatSolver& heat, const CameraOptio
   PetscFunctionReturn(0);
 }
 
-/// The window (given, or the body's bounding box), the pixel grid centred in it, the frames before final_time.
-PetscErrorCode HeatCamera::Grid(DM dm, double final_time) {
+/// The window (given, or the face's extent), the pixel grid centred in it, the frames before final_time.
+PetscErrorCode HeatCamera::Grid(double final_time) {
   PetscFunctionBeginUser;
-  PetscReal lo[3], hi[3];
-  PetscCall(DMGetBoundingBox(dm, lo, hi));
+  const std::array<double, 4> b = face_.bounds();
+  const double lo[2] = {b[0], b[1]}, hi[2] = {b[2], b[3]};
   std::vector<double> w = options_.window.empty() ? std::vector<double>{lo[0], lo[1], hi[0], hi[1]} : options_.window;
   const double tol = 1e-9 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
   PetscCheck(w[0] >= lo[0] - tol && w[1] >= lo[1] - tol && w[2] <= hi[0] + tol && w[3] <= hi[1] + tol, comm_,
@@ -86,12 +92,12 @@ PetscErrorCode HeatCamera::Grid(DM dm, double final_time) {
   PetscFunctionReturn(0);
 }
 
-std::array<double, 2> HeatCamera::SamplePoint(std::size_t i) const {
+std::array<double, 3> HeatCamera::SamplePoint(std::size_t i) const {
   const std::size_t n = static_cast<std::size_t>(options_.samples), per_pixel = n * n;
   const std::size_t pixel = i / per_pixel, sub = i % per_pixel;
   const std::size_t row = pixel / grid_.cols, col = pixel % grid_.cols;
   const double u = (static_cast<double>(sub % n) + 0.5) / n, v = (static_cast<double>(sub / n) + 0.5) / n;
-  return {grid_.x0 + (col + u) * grid_.pixel, grid_.y0 + (row + v) * grid_.pixel};
+  return face_.Point(grid_.x0 + (col + u) * grid_.pixel, grid_.y0 + (row + v) * grid_.pixel);
 }
 
 /// S: row p = the mean over pixel p's sub-sample points (midpoint rule) of the heat basis there.
@@ -105,12 +111,12 @@ PetscErrorCode HeatCamera::Assemble(const fe::LagrangeSpace& space) {
   std::vector<int> owner(n, INT_MAX);
   std::vector<std::size_t> found;
   std::vector<PetscInt> cells;
-  std::vector<std::array<double, 2>> refs;
+  std::vector<fe::ReferencePoint> refs;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::array<double, 2> xy = SamplePoint(i);
+    const std::array<double, 3> x = SamplePoint(i);
     PetscInt cell;
-    std::array<double, 2> ref;
-    locator.Locate(xy[0], xy[1], &cell, &ref);
+    fe::ReferencePoint ref = {0.0, 0.0, 0.0};
+    locator.Locate(x.data(), &cell, &ref);
     if (cell < 0) continue;
     owner[i] = rank;
     found.push_back(i);
@@ -136,7 +142,7 @@ PetscErrorCode HeatCamera::Assemble(const fe::LagrangeSpace& space) {
 
 PetscErrorCode HeatCamera::AddPoints(const fe::LagrangeSpace& space, const std::vector<int>& owner,
                                      const std::vector<std::size_t>& found, const std::vector<PetscInt>& cells,
-                                     const std::vector<std::array<double, 2>>& refs) {
+                                     const std::vector<fe::ReferencePoint>& refs) {
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));

@@ -6,6 +6,7 @@
 
 #include <petscsys.h>
 
+#include <string>
 #include <vector>
 
 namespace vibrotherm::coupling {
@@ -16,7 +17,8 @@ struct CameraOptions {
   double pixel = 5e-4;         ///< -camera_pixel: pixel size on the specimen [m]
   double netd = 0.02;          ///< -camera_netd: noise-equivalent temperature difference [K]
   double integration = 1e-3;   ///< -camera_integration: integration time of a frame [s]
-  std::vector<double> window;  ///< -camera_window x0,y0,x1,y1 [m]; empty: the specimen
+  std::vector<double> window;  ///< -camera_window x0,y0,x1,y1 [m] (3D: u0,v0,u1,v1 of the face); empty: the specimen
+  std::string face;            ///< -camera_face (3D): front|back|top|bottom|left|right; empty: front (camera_face.hpp)
   PetscInt samples = 6;        ///< -camera_pixel_samples: n × n points per pixel (area average)
   PetscInt seed = 1;           ///< -camera_seed: the noise's random seed
   double detect_snr = 5.0;     ///< -camera_detect_snr: detectable when the peak SNR reaches it (Rose)

@@ -6,7 +6,9 @@
 // (trapezoid over the heat steps inside it; the heat loop lands on window
 // boundaries in the free phase, NextBoundary, and interpolates linearly inside
 // a coupled step). Frame k integrates [k/fps, k/fps + integration]. Rank 0
-// adds seeded Gaussian NETD noise and writes camera.h5 + camera.xmf.
+// adds seeded Gaussian NETD noise and writes camera.h5 + camera.xmf. In 3D the camera
+// films one face of the box (camera_face.hpp); pixels and -camera_window are in that
+// face's (u, v) coordinates.
 #pragma once
 
 #include <petscmat.h>
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/exchange/camera_face.hpp"
 #include "vibrotherm/coupling/exchange/camera_options.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/io/camera_frames.hpp"
@@ -34,6 +37,12 @@ class HeatCamera {
   /// fit before final_time, the pixel matrix. Collective. *frames = 0: nothing to film.
   PetscErrorCode Setup(const heat::HeatSolver& heat, const CameraOptions& options, double final_time,
                        PetscInt* frames);
+  /// The same on a heat space without its solver (tests).
+  PetscErrorCode Setup(const fe::LagrangeSpace& space, const CameraOptions& options, double final_time,
+                       PetscInt* frames);
+  /// Pixels × heat dofs: a pixel's value is its row times the rise (null before Setup or without frames).
+  Mat pixel_matrix() const { return S_; }
+  const io::CameraGrid& grid() const { return grid_; }
   /// Opens dir/camera.h5 (rank 0). Collective.
   PetscErrorCode Open(const std::string& dir);
   /// After every heat step and at t = 0: integrates the pixel averages; writes each completed frame. Collective.
@@ -48,17 +57,19 @@ class HeatCamera {
   PetscErrorCode Finish(io::RunSummary* summary);
 
  private:
-  PetscErrorCode Grid(DM dm, double final_time);
+  PetscErrorCode Grid(double final_time);
   PetscErrorCode Assemble(const fe::LagrangeSpace& space);
   PetscErrorCode AddPoints(const fe::LagrangeSpace& space, const std::vector<int>& owner,
                            const std::vector<std::size_t>& found, const std::vector<PetscInt>& cells,
-                           const std::vector<std::array<double, 2>>& refs);
+                           const std::vector<fe::ReferencePoint>& refs);
   PetscErrorCode Integrate(double t_prev, double t);
   PetscErrorCode EmitFrame();
-  std::array<double, 2> SamplePoint(std::size_t i) const;
+  /// Sub-sample point i (row-major pixels, n × n points each) in the body.
+  std::array<double, 3> SamplePoint(std::size_t i) const;
   double start(PetscInt k) const { return static_cast<double>(k) / options_.fps; }
 
   CameraOptions options_;
+  CameraFace face_;
   MPI_Comm comm_ = MPI_COMM_NULL;
   io::CameraGrid grid_;
   PetscInt frames_ = 0, frame_ = 0;
