@@ -96,6 +96,8 @@ ALLOWED = {
     "-camera_netd": {"0"},
     # 0: checkpoints only when a signal stops the run.
     "-checkpoint_every_s": {"0"},
+    # 0: the waves run again only where the source changes; the drift is reported only.
+    "-periodic_refresh": {"0"}, "-periodic_drift_tol": {"0"},
     # A directory name is any name.
     "-output_dir": ANY_NAME,
 }
