@@ -137,16 +137,21 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
   PetscCall(VecGetArray(sink_local, &sink_mark));
   PetscCall(VecGetArray(h_local, &hw));
   PetscInt counts[3] = {0, 0, 0};
+  // outer_faces (DistanceToOuterEdges) are edges of a planar mesh; a 3D mesh's faces are not kept.
+  const bool planar = space.dim() == 2;
+  b->dimension = space.dim();
   mesh::VertexCoordinates x;
-  PetscCall(x.Setup(dm));
+  if (planar) PetscCall(x.Setup(dm));
   for (PetscInt f = fStart; f < fEnd; ++f) {
     // Outer: one cell, and not a face the partition cut (those have their other cell elsewhere).
     PetscInt support;
     PetscCall(DMPlexGetSupportSize(dm, f, &support));
     if (support != 1 || shared[f - chart0]) continue;
-    const PetscInt* cone;
-    PetscCall(DMPlexGetCone(dm, f, &cone));
-    b->outer_faces.push_back({x(cone[0])[0], x(cone[0])[1], x(cone[1])[0], x(cone[1])[1]});
+    if (planar) {
+      const PetscInt* cone;
+      PetscCall(DMPlexGetCone(dm, f, &cone));
+      b->outer_faces.push_back({x(cone[0])[0], x(cone[0])[1], x(cone[1])[0], x(cone[1])[1]});
+    }
     ThermalEdge kind = ThermalEdge::Insulated;
     PetscInt s = -1, is_sink = -1;
     if (side) PetscCall(DMLabelGetValue(side, f, &s));
@@ -179,6 +184,8 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
 
 PetscErrorCode DistanceToOuterEdges(MPI_Comm comm, const HeatBoundary& b, double x, double y, double* distance) {
   PetscFunctionBeginUser;
+  PetscCheck(b.dimension == 2, comm, PETSC_ERR_SUP, "the distance to the outer edges is planar; this heat mesh is %dD",
+             b.dimension);
   double mine = INFINITY;
   for (const auto& f : b.outer_faces) {
     const double dx = f[2] - f[0], dy = f[3] - f[1], l2 = dx * dx + dy * dy;

@@ -433,9 +433,18 @@ PetscErrorCode HeatSolver::AdvanceTo(double t_end) {
 
 PetscErrorCode HeatSolver::TemperatureAt(double x, double y, double* T) const {
   PetscFunctionBeginUser;
+  PetscCheck(space_.dim() == 2, PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
+             "TemperatureAt(x, y) on a %dD heat mesh: give the point's %d coordinates", space_.dim(), space_.dim());
+  const double point[2] = {x, y};
+  PetscCall(TemperatureAt(point, T));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::TemperatureAt(const double* point, double* T) const {
+  PetscFunctionBeginUser;
   std::vector<fe::LocatedPoint> points;
   std::vector<bool> inside;
-  PetscCall(fe::LocatePoints(space_, {x, y}, &points, &inside));
+  PetscCall(fe::LocatePoints(space_, std::vector<double>(point, point + space_.dim()), &points, &inside));
   Vec local;
   std::vector<double> values;
   PetscCall(DMGetLocalVector(dm_, &local));

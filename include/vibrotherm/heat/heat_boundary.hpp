@@ -36,12 +36,13 @@ struct HeatBoundary {
   std::vector<double> convective_h;
   double T_ext = 0.0;
   PetscInt sink_faces = 0, insulated_faces = 0, convective_faces = 0;  ///< global counts
-  std::vector<std::array<double, 4>> outer_faces;  ///< this rank's outer faces, any kind: x0, y0, x1, y1
+  std::vector<std::array<double, 4>> outer_faces;  ///< 2D: this rank's outer edges, any kind: x0, y0, x1, y1
+  int dimension = 2;                               ///< the mesh's (3D: faces labelled `sink` are sinks, outer_faces empty)
 };
 /// Classifies every outer face of space's DM and collects the rows. Collective.
 PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBoundaryOptions& options,
                                  HeatBoundary* boundary);
-/// Distance from (x, y) to the nearest outer edge of the body, on every rank. Collective.
+/// Distance from (x, y) to the nearest outer edge of the body, on every rank (2D only). Collective.
 PetscErrorCode DistanceToOuterEdges(MPI_Comm comm, const HeatBoundary& boundary, double x, double y, double* distance);
 
 }  // namespace vibrotherm::heat

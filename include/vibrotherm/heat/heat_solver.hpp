@@ -69,7 +69,7 @@ class HeatSolver {
   PetscErrorCode SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power_by_crack);
   /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
   PetscErrorCode SetSourceLoad(Vec load);
-  /// Fixes the probe points (x, y pairs). Collective.
+  /// Fixes the probe points (x, y pairs; x, y, z triples on a 3D mesh). Collective.
   PetscErrorCode SetProbePoints(const std::vector<double>& xy);
   /// Temperatures [K] at the probe points, on every rank. Collective.
   PetscErrorCode ProbeTemperatures(std::vector<double>* T) const;
@@ -101,8 +101,10 @@ class HeatSolver {
   /// Ends the running AdvanceTo after the current step (the run was interrupted).
   void RequestStop() { stop_requested_ = true; }
 
-  /// Temperature at a point (collective; NaN outside).
+  /// Temperature at a point (collective; NaN outside). 2D only.
   PetscErrorCode TemperatureAt(double x, double y, double* T) const;
+  /// The same at a point of the mesh's dimension (dim() coordinates: x, y or x, y, z).
+  PetscErrorCode TemperatureAt(const double* point, double* T) const;
   /// Heat content ∫ρ c_p (T − T0) [J/m] (collective).
   PetscErrorCode HeatContent(double* content) const;
   /// Energy injected by the sources so far [J/m].

@@ -1,0 +1,57 @@
+// Friction heat as a surface density on a 3D crack → heat load: the 3D
+// analogue of friction_heat's line transfer (surface_points.hpp for the source).
+//
+// The source points carry areas A_p and, per exchange, densities q_p [W/m²].
+// The heat load is the heat basis at each point times its power:
+//   Q_h = Σ_p T_hp q_p,   T_hp = A_p ψ_h(x_p),
+// a sparse matrix (heat dofs × source points) built once, one MatMultAdd per
+// heat step, as in 2D. The heat basis sums to one at every point, so
+// Σ_h Q_h = Σ_p A_p q_p: heat deposited = power given, to rounding, whatever
+// the meshes. (2D integrates ψ_h φ_c exactly over every overlap of a heat and a
+// wave crack element; here the source's own quadrature does: where its points
+// are the Gauss points of the wave crack faces, ψ_h q is integrated to the
+// order of that rule on every face, exactly for a uniform density on faces of
+// the heat mesh's crack plane.)
+//
+// Each rank gives its own points (columns in that layout); every rank locates
+// all of them in its cells (fe::CellLocator) and the lowest rank holding a
+// point adds its column, so a point on a partition boundary is counted once
+// and 1 and N ranks build the same matrix. A point outside the heat mesh is an error.
+#pragma once
+
+#include <petscmat.h>
+
+#include <vector>
+
+#include "vibrotherm/coupling/exchange/surface_points.hpp"
+#include "vibrotherm/fe/lagrange_space.hpp"
+
+namespace vibrotherm::coupling {
+
+class SurfaceHeatTransfer {
+ public:
+  SurfaceHeatTransfer() = default;
+  SurfaceHeatTransfer(const SurfaceHeatTransfer&) = delete;
+  SurfaceHeatTransfer& operator=(const SurfaceHeatTransfer&) = delete;
+  ~SurfaceHeatTransfer();
+
+  /// Builds T for this rank's points on heat_space's (3D) mesh. Collective.
+  PetscErrorCode Setup(const fe::LagrangeSpace& heat_space, const SurfacePoints& mine);
+  /// Q += T q for the densities q_p [W/m²] of this rank's points. Collective.
+  PetscErrorCode AddRates(const std::vector<double>& density, Vec Q);
+  /// Σ A_p over every rank's points [m²].
+  double area() const { return area_; }
+  /// Global index of this rank's first point.
+  PetscInt first_point() const { return first_point_; }
+
+ private:
+  /// Rows and values of point p's column: the closure dofs of its cell and A_p ψ there.
+  PetscErrorCode AddColumn(const fe::LagrangeSpace& heat_space, PetscInt column, PetscInt cell,
+                           const fe::ReferencePoint& ref, double area);
+  Mat transfer_ = nullptr;  ///< T: heat dofs × source points
+  Vec rate_ = nullptr;      ///< q per source point (this rank's points)
+  double area_ = 0.0;
+  PetscInt first_point_ = 0;
+};
+
+}  // namespace vibrotherm::coupling
