@@ -96,6 +96,21 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
   return KuhnSimplices(dim, faces, origin, kBoxUpper.data(), dm);
 }
 
+/// Moves the vertices of a (serial or not yet distributed) mesh: move(x, n) edits its n local coordinates in place.
+inline PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move) {
+  PetscFunctionBeginUser;
+  Vec coordinates;
+  PetscScalar* x;
+  PetscInt n;
+  PetscCall(DMGetCoordinatesLocal(dm, &coordinates));
+  PetscCall(VecGetLocalSize(coordinates, &n));
+  PetscCall(VecGetArray(coordinates, &x));
+  move(x, n);
+  PetscCall(VecRestoreArray(coordinates, &x));
+  PetscCall(DMSetCoordinatesLocal(dm, coordinates));
+  PetscFunctionReturn(0);
+}
+
 /// A box mesh with 3 × 2 (× 2) squares or cubes, interpolated, as they are or
 /// split into simplices; the tensor cells get their interior vertices moved
 /// off the grid so that they are not parallelograms (their maps are not affine).
@@ -108,21 +123,15 @@ inline PetscErrorCode BoxMesh(const BoxCase& c, DM* dm) {
     PetscFunctionReturn(0);
   }
   PetscCall(DMPlexCreateBoxMesh(PETSC_COMM_SELF, c.dim, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, dm));
-  Vec coordinates;
-  PetscScalar* x;
-  PetscInt n;
-  PetscCall(DMGetCoordinatesLocal(*dm, &coordinates));
-  PetscCall(VecGetLocalSize(coordinates, &n));
-  PetscCall(VecGetArray(coordinates, &x));
-  for (PetscInt v = 0; v < n / c.dim; ++v) {
-    bool interior = true;
-    for (int d = 0; d < c.dim; ++d)
-      interior = interior && x[v * c.dim + d] > 1e-12 && x[v * c.dim + d] < upper[d] - 1e-12;
-    if (interior)
-      for (int d = 0; d < c.dim; ++d) x[v * c.dim + d] += 0.03 * (d + 1) * upper[d] * (v % 2 ? 1.0 : -1.0);
-  }
-  PetscCall(VecRestoreArray(coordinates, &x));
-  PetscCall(DMSetCoordinatesLocal(*dm, coordinates));
+  PetscCall(MoveVertices(*dm, [&](PetscScalar* x, PetscInt n) {
+    for (PetscInt v = 0; v < n / c.dim; ++v) {
+      bool interior = true;
+      for (int d = 0; d < c.dim; ++d)
+        interior = interior && x[v * c.dim + d] > 1e-12 && x[v * c.dim + d] < upper[d] - 1e-12;
+      if (interior)
+        for (int d = 0; d < c.dim; ++d) x[v * c.dim + d] += 0.03 * (d + 1) * upper[d] * (v % 2 ? 1.0 : -1.0);
+    }
+  }));
   PetscFunctionReturn(0);
 }
 

@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "box_mesh_support.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 
 namespace vibrotherm::testing {
@@ -41,6 +42,36 @@ inline std::vector<double> MirroredAxis(const std::vector<double>& half) {
   return nodes;
 }
 
+/// Labels `sink` (value 1) the outer faces of a 3D mesh whose centre c satisfies sink(c).
+inline PetscErrorCode LabelSinkFaces(DM dm, const std::function<bool(const double*)>& sink) {
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateLabel(dm, mesh::labels::sink));
+  PetscInt fStart, fEnd, vStart, vEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  Vec coordinates;
+  const PetscScalar* x;
+  PetscCall(DMGetCoordinatesLocal(dm, &coordinates));
+  PetscCall(VecGetArrayRead(coordinates, &x));
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscInt support, closure_size, *closure = nullptr, corners = 0;
+    PetscCall(DMPlexGetSupportSize(dm, f, &support));
+    if (support != 1) continue;
+    double centre[3] = {0, 0, 0};
+    PetscCall(DMPlexGetTransitiveClosure(dm, f, PETSC_TRUE, &closure_size, &closure));
+    for (PetscInt k = 0; k < 2 * closure_size; k += 2)
+      if (closure[k] >= vStart && closure[k] < vEnd) {
+        for (int d = 0; d < 3; ++d) centre[d] += PetscRealPart(x[3 * (closure[k] - vStart) + d]);
+        ++corners;
+      }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, f, PETSC_TRUE, &closure_size, &closure));
+    for (double& c : centre) c /= corners;
+    if (sink(centre)) PetscCall(DMSetLabelValue(dm, mesh::labels::sink, f, 1));
+  }
+  PetscCall(VecRestoreArrayRead(coordinates, &x));
+  PetscFunctionReturn(0);
+}
+
 /// The hexahedra between the node lines nodes[0..2], outer faces whose centre c satisfies
 /// sink(c) labelled `sink` (value 1), distributed over comm (one rank: as built).
 inline PetscErrorCode GradedHexBox(MPI_Comm comm, const std::array<std::vector<double>, 3>& nodes,
@@ -50,36 +81,10 @@ inline PetscErrorCode GradedHexBox(MPI_Comm comm, const std::array<std::vector<d
                              static_cast<PetscInt>(nodes[2].size()) - 1};
   const PetscReal lower[3] = {0, 0, 0}, upper[3] = {1, 1, 1};
   PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, dm));
-  Vec coordinates;
-  PetscScalar* x;
-  PetscInt n;
-  PetscCall(DMGetCoordinatesLocal(*dm, &coordinates));
-  PetscCall(VecGetLocalSize(coordinates, &n));
-  PetscCall(VecGetArray(coordinates, &x));
-  for (PetscInt i = 0; i < n; ++i) x[i] = nodes[i % 3][std::lround(PetscRealPart(x[i]) * faces[i % 3])];
-  PetscCall(VecRestoreArray(coordinates, &x));
-  PetscCall(DMSetCoordinatesLocal(*dm, coordinates));
-  PetscCall(DMCreateLabel(*dm, mesh::labels::sink));
-  PetscInt fStart, fEnd, vStart, vEnd;
-  PetscCall(DMPlexGetHeightStratum(*dm, 1, &fStart, &fEnd));
-  PetscCall(DMPlexGetDepthStratum(*dm, 0, &vStart, &vEnd));
-  PetscCall(VecGetArray(coordinates, &x));
-  for (PetscInt f = fStart; f < fEnd; ++f) {
-    PetscInt support, closure_size, *closure = nullptr, corners = 0;
-    PetscCall(DMPlexGetSupportSize(*dm, f, &support));
-    if (support != 1) continue;
-    double centre[3] = {0, 0, 0};
-    PetscCall(DMPlexGetTransitiveClosure(*dm, f, PETSC_TRUE, &closure_size, &closure));
-    for (PetscInt k = 0; k < 2 * closure_size; k += 2)
-      if (closure[k] >= vStart && closure[k] < vEnd) {
-        for (int d = 0; d < 3; ++d) centre[d] += PetscRealPart(x[3 * (closure[k] - vStart) + d]);
-        ++corners;
-      }
-    PetscCall(DMPlexRestoreTransitiveClosure(*dm, f, PETSC_TRUE, &closure_size, &closure));
-    for (double& c : centre) c /= corners;
-    if (sink(centre)) PetscCall(DMSetLabelValue(*dm, mesh::labels::sink, f, 1));
-  }
-  PetscCall(VecRestoreArray(coordinates, &x));
+  PetscCall(MoveVertices(*dm, [&](PetscScalar* x, PetscInt n) {  // built on one rank: every vertex here
+    for (PetscInt i = 0; i < n; ++i) x[i] = nodes[i % 3][std::lround(PetscRealPart(x[i]) * faces[i % 3])];
+  }));
+  PetscCall(LabelSinkFaces(*dm, sink));
   DM distributed = nullptr;
   PetscCall(DMPlexDistribute(*dm, 0, nullptr, &distributed));
   if (distributed) {
