@@ -14,7 +14,9 @@
 //      centre: twice (a) at z = d (its image), 3D-NOTES.md §4.3,
 //        T(t) = (2q√(κt)/k) [ierfc(d/(2√(κt))) − ierfc(√(a² + d²)/(2√(κt)))] → q(√(a² + d²) − d)/k;
 //  (c) on an insulated box the heat content equals the deposited energy t·q·area
-//      to rounding, and 2 ranks give the serial temperatures.
+//      to rounding, and 2 ranks give the serial temperatures;
+//  (d) a uniform density over whole faces of the heat mesh (2 × 2 Gauss points a
+//      face) gives the load q ∫ψ_h dA exactly, degrees 1 and 2.
 // A transfer giving half the power is caught by (a)'s tolerance (a control in the test).
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
@@ -26,6 +28,7 @@
 #include "graded_box_support.hpp"
 #include "vibrotherm/coupling/exchange/surface_transfer.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::testing {
 namespace {
@@ -220,6 +223,78 @@ TEST(SurfaceSource3D, EnergyBudgetAndRanks) {
                 "budget (%s): deposited %.15g, content + loss %.15g (loss %.3g), ranks vs serial %.2e\n",
                 sinks ? "sinks" : "insulated", parallel.deposited, parallel.content + parallel.boundary_loss,
                 parallel.boundary_loss, std::abs(parallel.rise[0] - serial.rise[0]) / serial.rise[0]);
+  }
+}
+
+/// Q += q ∫ψ_h dA over the faces of the plane z = 0 within [0, X] × [0, Y] (FaceNodes' weights; owned faces).
+PetscErrorCode PlaneFaceLoad(const fe::LagrangeSpace& space, double X, double Y, double q, Vec Q) {
+  PetscFunctionBeginUser;
+  DM dm = space.dm();
+  std::vector<bool> ghost;
+  std::vector<double> x, weights;
+  std::vector<PetscInt> offsets;
+  PetscCall(mesh::GhostPoints(dm, &ghost));
+  PetscCall(space.NodePositions(&x));
+  PetscInt pStart, fStart, fEnd;
+  PetscCall(DMPlexGetChart(dm, &pStart, nullptr));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  Vec local;
+  PetscScalar* a;
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(VecSet(local, 0.0));
+  PetscCall(VecGetArray(local, &a));
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    if (ghost[f - pStart]) continue;
+    double area;
+    PetscCall(space.FaceNodes(f, &offsets, &weights, &area));
+    bool inside = true;
+    for (PetscInt o : offsets)
+      inside = inside && std::abs(x[3 * o + 2]) < 1e-12 && x[3 * o] < X + 1e-12 && x[3 * o + 1] < Y + 1e-12;
+    if (inside)
+      for (std::size_t j = 0; j < offsets.size(); ++j) a[offsets[j]] += q * weights[j];
+  }
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(DMLocalToGlobal(dm, local, ADD_VALUES, Q));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscFunctionReturn(0);
+}
+
+// (d): the transfer of a uniform density over heat faces is exact (the 2D transfer's property, here by quadrature).
+TEST(SurfaceSource3D, UniformDensityOnHeatFacesIsExact) {
+  const std::vector<double> xy = GradedAxis(1.25, 4.0, 0.6, 8), z = MirroredAxis(GradedAxis(1.0, 3.0, 0.6, 8));
+  const double side = xy[3];  // three faces of the uniform part: a 3 × 3 patch of faces at a corner of the plane
+  for (PetscInt degree : {1, 2}) {
+    DM dm;
+    ASSERT_EQ(GradedHexBox(PETSC_COMM_WORLD, {xy, xy, z}, [](const double*) { return false; }, &dm), 0);
+    {
+      fe::LagrangeSpace space;
+      ASSERT_EQ(space.Setup(dm, degree, 1), 0);
+      PetscMPIInt rank;
+      MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+      const geometry::Frame<3> frame = geometry::FrameFromNormal({0, 0, 1}, {1, 0, 0});
+      const coupling::SurfacePoints patch = rank == 0 ? coupling::Rectangle({side / 2, side / 2, 0}, frame, side / 2,
+                                                                          side / 2, 3, 3)
+                                                      : coupling::SurfacePoints{};
+      coupling::SurfaceHeatTransfer transfer;
+      ASSERT_EQ(transfer.Setup(space, patch), 0);
+      Vec Q, reference;
+      DMCreateGlobalVector(dm, &Q);
+      VecDuplicate(Q, &reference);
+      VecSet(Q, 0.0);
+      VecSet(reference, 0.0);
+      ASSERT_EQ(transfer.AddRates(std::vector<double>(patch.size(), 2.5), Q), 0);
+      ASSERT_EQ(PlaneFaceLoad(space, side, side, 2.5, reference), 0);
+      PetscReal scale, difference;
+      VecNorm(reference, NORM_INFINITY, &scale);
+      VecAXPY(Q, -1.0, reference);
+      VecNorm(Q, NORM_INFINITY, &difference);
+      EXPECT_NEAR(transfer.area(), side * side, 1e-14);
+      EXPECT_GT(scale, 0.0);
+      EXPECT_LT(difference, 1e-14 * scale) << "degree " << degree;
+      VecDestroy(&Q);
+      VecDestroy(&reference);
+    }
+    DMDestroy(&dm);
   }
 }
 

@@ -27,4 +27,18 @@ SurfacePoints DiscSector(const geometry::Vec3& centre, const geometry::Frame<3>&
   return points;
 }
 
+SurfacePoints Rectangle(const geometry::Vec3& centre, const geometry::Frame<3>& frame, double h1, double h2, int n1,
+                        int n2) {
+  SurfacePoints points;
+  const double d1 = 2.0 * h1 / n1, d2 = 2.0 * h2 / n2, g = 0.5 / std::sqrt(3.0);  // Gauss points at ½ ± g of a cell
+  for (int i = 0; i < 2 * n1; ++i)
+    for (int j = 0; j < 2 * n2; ++j) {
+      const double u = -h1 + d1 * (i / 2 + 0.5 + (i % 2 ? g : -g)), v = -h2 + d2 * (j / 2 + 0.5 + (j % 2 ? g : -g));
+      points.x.push_back(geometry::Add(centre, geometry::Add(geometry::Scale(u, frame.tangent[0]),
+                                                             geometry::Scale(v, frame.tangent[1]))));
+      points.area.push_back(0.25 * d1 * d2);
+    }
+  return points;
+}
+
 }  // namespace vibrotherm::coupling

@@ -10,7 +10,9 @@
 // DiscSector builds such a set for a uniform source over a sector of a disc
 // (the closed-form cases of 3D-NOTES.md §4.3): a polar grid of `radial` ×
 // `angular` cells, a point at the centre of each, A = r Δr Δθ (the annular
-// cell's exact area, so Σ A = (θ1 − θ0) R²/2 to rounding).
+// cell's exact area, so Σ A = (θ1 − θ0) R²/2 to rounding). Rectangle: a grid
+// of n1 × n2 equal cells, 2 × 2 Gauss points in each (a uniform density over
+// cells that are faces of the heat mesh is then transferred exactly, Q1 and Q2).
 #pragma once
 
 #include <vector>
@@ -30,5 +32,9 @@ struct SurfacePoints {
 /// `frame` (θ from tangent[0] towards tangent[1]).
 SurfacePoints DiscSector(const geometry::Vec3& centre, const geometry::Frame<3>& frame, double radius, double theta0,
                          double theta1, int radial, int angular);
+
+/// The rectangle [−h1, h1] × [−h2, h2] about `centre` along the frame's tangents.
+SurfacePoints Rectangle(const geometry::Vec3& centre, const geometry::Frame<3>& frame, double h1, double h2, int n1,
+                        int n2);
 
 }  // namespace vibrotherm::coupling
