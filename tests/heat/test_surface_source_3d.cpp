@@ -51,7 +51,8 @@ struct Problem {
   int radial = 16, angular = 24;  ///< the disc's source points (a quarter disc)
   std::vector<double> probes;     ///< x, y, z triples
   double power_factor = 1.0;      ///< 1: the true power (< 1: the control of a wrong transfer)
-  const char* ts_type = "beuler";  ///< the coupled TS (backward Euler, the run's; cn: second order in time)
+  const char* ts_type = "beuler";
+  bool simplex = false;  ///< tetrahedra (each box cell in 6) instead of hexahedra  ///< the coupled TS (backward Euler, the run's; cn: second order in time)
 };
 
 struct Outcome {
@@ -86,7 +87,7 @@ PetscErrorCode Advance(heat::HeatSolver& heat, double t_end, int rungs, int step
 PetscErrorCode Solve(MPI_Comm comm, const Problem& p, double t_end, int rungs, int steps, Outcome* out) {
   PetscFunctionBeginUser;
   DM dm;
-  PetscCall(GradedHexBox(comm, p.nodes, p.sink, &dm));
+  PetscCall(GradedBox(comm, p.nodes, p.simplex, p.sink, &dm));
   {
     heat::HeatOptions options;
     options.material.density = options.material.capacity = options.material.conductivity = 1.0;
@@ -168,6 +169,23 @@ TEST(SurfaceSource3D, DiscInInfiniteBodyConverges) {
   Outcome out;
   ASSERT_EQ(Solve(PETSC_COMM_WORLD, half, t, 5, 12, &out), 0);
   EXPECT_GT(InfiniteBodyError(half, out, t), 10 * errors.front());
+}
+
+// (a) on tetrahedra (each graded box cell in 6, KuhnSimplices): not run by ctest, 6 min for the
+// three levels (the 3D tetrahedral mesh's setup, not its steps); --gtest_also_run_disabled_tests.
+TEST(SurfaceSource3D, DISABLED_DiscOnTetrahedra) {
+  const double t = 0.25;
+  const int finest = getenv("TETS_FINEST") ? atoi(getenv("TETS_FINEST")) : 16;
+  for (int n : {8, 12, 16}) {
+    if (n > finest) break;
+    Problem p = InfiniteBody(n);
+    p.ts_type = "cn";
+    p.simplex = true;
+    Outcome out;
+    ASSERT_EQ(Solve(PETSC_COMM_WORLD, p, t, 5, 12, &out), 0);
+    PetscPrintf(PETSC_COMM_WORLD, "tets n = %d (%d dofs): centre %.6g (exact %.6g), error %.3e\n", n,
+                static_cast<int>(out.dofs), out.rise[0], DiscAxisRise(0.0, t), InfiniteBodyError(p, out, t));
+  }
 }
 
 // (b): the face above a buried disc, insulated (3D-NOTES.md §4.3: the image doubles the infinite body's rise).
@@ -271,7 +289,7 @@ TEST(SurfaceSource3D, UniformDensityOnHeatFacesIsExact) {
   const double side = xy[3];  // three faces of the uniform part: a 3 × 3 patch of faces at a corner of the plane
   for (PetscInt degree : {1, 2}) {
     DM dm;
-    ASSERT_EQ(GradedHexBox(PETSC_COMM_WORLD, {xy, xy, z}, [](const double*) { return false; }, &dm), 0);
+    ASSERT_EQ(GradedBox(PETSC_COMM_WORLD, {xy, xy, z}, false, [](const double*) { return false; }, &dm), 0);
     {
       fe::LagrangeSpace space;
       ASSERT_EQ(space.Setup(dm, degree, 1), 0);

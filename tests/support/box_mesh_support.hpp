@@ -50,9 +50,12 @@ inline double BoxVolume(int dim) {
 /// square or cube into 2 or 6 along its main diagonal (Kuhn's split: conforming, as
 /// every cell uses the same diagonal), each simplex ordered to have a positive volume.
 /// (Debian's PETSc 3.18 has no simplex generator and no registered refine_tosimplex.)
+/// On a communicator of several ranks, rank 0 holds the whole mesh (to be distributed).
 inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, const double* lower, const double* upper,
-                                    DM* dm) {
+                                    DM* dm, MPI_Comm comm = PETSC_COMM_SELF) {
   PetscFunctionBeginUser;
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   const PetscInt n[3] = {faces[0] + 1, faces[1] + 1, dim == 3 ? faces[2] + 1 : 1};
   std::vector<PetscReal> coordinates;
   for (PetscInt k = 0; k < n[2]; ++k)
@@ -64,7 +67,8 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, const double
   const auto vertex = [&](const PetscInt* ijk) { return ijk[0] + n[0] * (ijk[1] + n[1] * (dim == 3 ? ijk[2] : 0)); };
   std::vector<PetscInt> cells;
   int axes[3] = {0, 1, 2};
-  for (PetscInt k = 0; k < (dim == 3 ? faces[2] : 1); ++k)
+  const PetscInt layers = rank != 0 ? 0 : dim == 3 ? faces[2] : 1;  // cells on rank 0 only
+  for (PetscInt k = 0; k < layers; ++k)
     for (PetscInt j = 0; j < faces[1]; ++j)
       for (PetscInt i = 0; i < faces[0]; ++i)
         do {  // one simplex per order of the axes: walk from the low corner along them
@@ -84,7 +88,8 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, const double
           if (dim == 3) PetscCall(DMPlexInvertCell(DM_POLYTOPE_TETRAHEDRON, corners));
           cells.insert(cells.end(), corners, corners + dim + 1);
         } while (std::next_permutation(axes, axes + dim));
-  PetscCall(DMPlexCreateFromCellListPetsc(PETSC_COMM_SELF, dim, static_cast<PetscInt>(cells.size()) / (dim + 1),
+  if (rank != 0) coordinates.clear();
+  PetscCall(DMPlexCreateFromCellListPetsc(comm, dim, static_cast<PetscInt>(cells.size()) / (dim + 1),
                                           static_cast<PetscInt>(coordinates.size()) / dim, dim + 1, PETSC_TRUE,
                                           cells.data(), dim, coordinates.data(), dm));
   PetscFunctionReturn(0);

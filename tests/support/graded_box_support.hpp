@@ -72,15 +72,17 @@ inline PetscErrorCode LabelSinkFaces(DM dm, const std::function<bool(const doubl
   PetscFunctionReturn(0);
 }
 
-/// The hexahedra between the node lines nodes[0..2], outer faces whose centre c satisfies
-/// sink(c) labelled `sink` (value 1), distributed over comm (one rank: as built).
-inline PetscErrorCode GradedHexBox(MPI_Comm comm, const std::array<std::vector<double>, 3>& nodes,
-                                   const std::function<bool(const double*)>& sink, DM* dm) {
+/// The hexahedra (simplex: each split into 6 tetrahedra, KuhnSimplices) between the node lines
+/// nodes[0..2], outer faces whose centre c satisfies sink(c) labelled `sink` (value 1),
+/// distributed over comm (one rank: as built).
+inline PetscErrorCode GradedBox(MPI_Comm comm, const std::array<std::vector<double>, 3>& nodes, bool simplex,
+                                const std::function<bool(const double*)>& sink, DM* dm) {
   PetscFunctionBeginUser;
   const PetscInt faces[3] = {static_cast<PetscInt>(nodes[0].size()) - 1, static_cast<PetscInt>(nodes[1].size()) - 1,
                              static_cast<PetscInt>(nodes[2].size()) - 1};
   const PetscReal lower[3] = {0, 0, 0}, upper[3] = {1, 1, 1};
-  PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, dm));
+  if (simplex) PetscCall(KuhnSimplices(3, faces, lower, upper, dm, comm));
+  else PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, dm));
   PetscCall(MoveVertices(*dm, [&](PetscScalar* x, PetscInt n) {  // built on one rank: every vertex here
     for (PetscInt i = 0; i < n; ++i) x[i] = nodes[i % 3][std::lround(PetscRealPart(x[i]) * faces[i % 3])];
   }));
