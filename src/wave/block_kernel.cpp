@@ -7,9 +7,10 @@
 namespace vibrotherm::wave {
 namespace {
 
-/// One part's arrays from a SeqBAIJ matrix of block size 2. compress: keep only
-/// the block rows with entries (the off-process part touches few rows).
-PetscErrorCode CopyPart(Mat seq, bool compress, BlockCsr* part) {
+/// Calls append(row, columns, values, blocks) for each block row of a SeqBAIJ part of
+/// block size bs. compress: only the block rows with entries (the off-process part touches few rows).
+template <class Append>
+PetscErrorCode ReadBlockRows(Mat seq, PetscInt bs, bool compress, Append append) {
   PetscFunctionBeginUser;
   PetscInt rows;
   const PetscInt *ia, *ja;
@@ -20,18 +21,36 @@ PetscErrorCode CopyPart(Mat seq, bool compress, BlockCsr* part) {
   PetscCall(MatSeqBAIJGetArray(seq, &a));
   PetscInt columns;
   PetscCall(MatGetSize(seq, nullptr, &columns));
-  PetscCheck(columns / 2 < kMaxBlockColumns, PETSC_COMM_SELF, PETSC_ERR_SUP,
+  PetscCheck(columns / bs < kMaxBlockColumns, PETSC_COMM_SELF, PETSC_ERR_SUP,
              "block kernel: %" PetscInt_FMT " block columns on one rank, more than its 32-bit offsets reach",
-             columns / 2);
+             columns / bs);
   static_assert(sizeof(PetscInt) == sizeof(std::int32_t), "block kernel: PETSc with 32-bit indices (petsc-dev)");
-  *part = BlockCsr();
   for (PetscInt r = 0; r < rows; ++r) {
     const auto blocks = static_cast<std::int32_t>(ia[r + 1] - ia[r]);
-    if (!compress || blocks > 0)
-      AppendBlockRow(static_cast<std::int32_t>(r), ja + ia[r], a + 4 * ia[r], blocks, compress, part);
+    if (!compress || blocks > 0) append(static_cast<std::int32_t>(r), ja + ia[r], a + bs * bs * ia[r], blocks);
   }
   PetscCall(MatSeqBAIJRestoreArray(seq, &a));
   PetscCall(MatRestoreRowIJ(seq, 0, PETSC_FALSE, PETSC_TRUE, &rows, &ia, &ja, &done));
+  PetscFunctionReturn(0);
+}
+
+/// One part's arrays from a SeqBAIJ matrix of block size 2 or 3 (into part2 or part3).
+PetscErrorCode CopyPart(Mat seq, PetscInt bs, bool compress, BlockCsr* part2, BlockCsr3* part3) {
+  PetscFunctionBeginUser;
+  if (bs == 2) {
+    *part2 = BlockCsr();
+    PetscCall(ReadBlockRows(seq, 2, compress, [&](std::int32_t r, const PetscInt* columns, const double* a,
+                                                  std::int32_t blocks) {
+      AppendBlockRow(r, columns, a, blocks, compress, part2);
+    }));
+  } else {
+    *part3 = BlockCsr3();
+    PetscCall(ReadBlockRows(seq, 3, compress, [&](std::int32_t r, const PetscInt* columns, const double* a,
+                                                  std::int32_t blocks) {
+      AppendBlockRow3(r, columns, a, blocks, compress, part3);
+    }));
+    FinishBlockCsr3(part3);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -53,8 +72,9 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide, bool compress_rows) {
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQBAIJ, &seq));
   PetscCheck(mpi || seq, comm, PETSC_ERR_SUP, "block kernel: needs a BAIJ matrix");
   A_ = A;
+  bs_ = bs;
   compress_rows_ = compress_rows;
-  fallback_ = bs != 2;
+  fallback_ = bs != 2 && bs != 3;
   if (fallback_) {
     PetscCall(FallbackSetup());
     PetscFunctionReturn(0);
@@ -67,7 +87,7 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide, bool compress_rows) {
   PetscCall(CopyArrays());
   PetscInt local_columns;
   PetscCall(MatGetLocalSize(A, nullptr, &local_columns));
-  spread_.resize(local_columns / 2);
+  if (bs == 2) spread_.resize(local_columns / 2);
   if (!mpi) PetscFunctionReturn(0);
   // The ghosts: every block column of the off-process part, in its compressed order.
   Mat diagonal, off_process;
@@ -77,9 +97,9 @@ PetscErrorCode BlockKernel::Setup(Mat A, bool allow_wide, bool compress_rows) {
   PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
   IS from;
   Vec x;
-  PetscCall(ISCreateBlock(PETSC_COMM_SELF, 2, ghost_columns / 2, ghost_blocks, PETSC_COPY_VALUES, &from));
+  PetscCall(ISCreateBlock(PETSC_COMM_SELF, bs, ghost_columns / bs, ghost_blocks, PETSC_COPY_VALUES, &from));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, ghost_columns, &ghosts_));
-  spread_ghosts_.resize(ghost_columns / 2);
+  if (bs == 2) spread_ghosts_.resize(ghost_columns / 2);
   PetscCall(MatCreateVecs(A, &x, nullptr));
   PetscCall(VecScatterCreate(x, from, ghosts_, nullptr, &scatter_));
   PetscCall(VecDestroy(&x));
@@ -96,15 +116,17 @@ PetscErrorCode BlockKernel::CopyArrays() const {
     PetscInt ghost_columns;
     PetscCall(MatMPIBAIJGetSeqBAIJ(A_, &diagonal, &off_process, nullptr));
     PetscCall(MatGetSize(off_process, nullptr, &ghost_columns));
-    PetscCheck(!scatter_ || ghost_columns == 2 * static_cast<PetscInt>(spread_ghosts_.size()), PETSC_COMM_SELF,
-               PETSC_ERR_ARG_WRONGSTATE, "block kernel: the matrix has new ghost columns since Setup: call Setup again");
-    PetscCall(CopyPart(diagonal, compress_rows_, &diagonal_));
-    PetscCall(CopyPart(off_process, true, &off_process_));
+    PetscInt ghosts_now = 0;
+    if (ghosts_) PetscCall(VecGetSize(ghosts_, &ghosts_now));
+    PetscCheck(!scatter_ || ghost_columns == ghosts_now, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE,
+               "block kernel: the matrix has new ghost columns since Setup: call Setup again");
+    PetscCall(CopyPart(diagonal, bs_, compress_rows_, &diagonal_, &diagonal3_));
+    PetscCall(CopyPart(off_process, bs_, true, &off_process_, &off_process3_));
   } else {
-    PetscCall(CopyPart(A_, compress_rows_, &diagonal_));
+    PetscCall(CopyPart(A_, bs_, compress_rows_, &diagonal_, &diagonal3_));
   }
   used_columns_.clear();
-  if (compress_rows_) {  // a level of local time stepping: spread only what its rows read
+  if (compress_rows_ && bs_ == 2) {  // a level of local time stepping: spread only what its rows read
     for (std::int32_t offset : diagonal_.x_offset) used_columns_.push_back(offset / static_cast<std::int32_t>(sizeof(Quad)));
     std::sort(used_columns_.begin(), used_columns_.end());
     used_columns_.erase(std::unique(used_columns_.begin(), used_columns_.end()), used_columns_.end());
@@ -160,6 +182,11 @@ PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscCall(PetscObjectStateGet((PetscObject)A_, &state));
   if (state != state_) PetscCall(CopyArrays());  // A was rescaled or reassembled since
   PetscCall(PetscLogEventBegin(event_, A_, x, y, 0));
+  if (bs_ == 3) {
+    PetscCall(ApplyBlocks3(x, y));
+    PetscCall(PetscLogEventEnd(event_, A_, x, y, 0));
+    PetscFunctionReturn(0);
+  }
   // Ghosts travel while the diagonal part is summed.
   if (scatter_) PetscCall(VecScatterBegin(scatter_, x, ghosts_, INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar* xa;
@@ -181,6 +208,28 @@ PetscErrorCode BlockKernel::Apply(Vec x, Vec y) const {
   PetscCall(VecRestoreArrayRead(x, &xa));
   PetscCall(PetscLogFlops(8.0 * (diagonal_.value.size() + off_process_.value.size())));
   PetscCall(PetscLogEventEnd(event_, A_, x, y, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BlockKernel::ApplyBlocks3(Vec x, Vec y) const {
+  PetscFunctionBeginUser;
+  // Ghosts travel while the diagonal part is summed; a compressed part writes only its rows.
+  if (scatter_) PetscCall(VecScatterBegin(scatter_, x, ghosts_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar* xa;
+  PetscScalar* ya;
+  PetscCall(VecGetArrayRead(x, &xa));
+  PetscCall(VecGetArray(y, &ya));
+  BlockCsr3Apply(diagonal3_, xa, ya, false, wide_);
+  if (scatter_) {
+    const PetscScalar* ghost;
+    PetscCall(VecScatterEnd(scatter_, x, ghosts_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(ghosts_, &ghost));
+    BlockCsr3Apply(off_process3_, ghost, ya, true, wide_);
+    PetscCall(VecRestoreArrayRead(ghosts_, &ghost));
+  }
+  PetscCall(VecRestoreArray(y, &ya));
+  PetscCall(VecRestoreArrayRead(x, &xa));
+  PetscCall(PetscLogFlops(18.0 * (diagonal3_.x_index.size() + off_process3_.x_index.size())));
   PetscFunctionReturn(0);
 }
 

@@ -8,14 +8,18 @@
 // far larger than the caches. Also printed: the matrix memory per 10⁶ dofs, which the
 // 3D memory estimate uses.
 //   mpiexec -n R bench_wave_3d -bench_cells N [-wave_degree D] [-bench_products P]
+// The product is timed twice: PETSc's MatMult and the 3×3-block kernel the wave solver
+// steps with (block_csr3.hpp).
 // Prints one line: ranks degree dofs values_per_row bytes_per_dof matrix_GB_per_Mdof
-// matmult_dof_per_s matmult_GB_per_s stream_GB_per_s fraction_of_ceiling
+// stream_GB_per_s ceiling_dof_per_s matmult_dof_per_s matmult_fraction kernel_dof_per_s
+// kernel_fraction kernel_path
 #include <petscdmplex.h>
 
 #include <algorithm>
 #include <cstdio>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 
 using namespace vibrotherm;
@@ -61,18 +65,19 @@ static PetscErrorCode TriadBandwidth(MPI_Comm comm, double* bandwidth) {
   PetscFunctionReturn(0);
 }
 
-/// Seconds per product y = K x, best of `repeats` batches of `products`.
-static PetscErrorCode TimeProducts(Mat K, PetscInt products, double* seconds) {
+/// Seconds per product y = K x (PETSc's MatMult, or the block kernel when given), best of 3 batches.
+static PetscErrorCode TimeProducts(Mat K, const wave::BlockKernel* kernel, PetscInt products, double* seconds) {
   PetscFunctionBeginUser;
   Vec x, y;
   PetscCall(MatCreateVecs(K, &x, &y));
   PetscCall(VecSet(x, 1.0));
-  PetscCall(MatMult(K, x, y));  // warm-up
+  const auto product = [&]() { return kernel ? kernel->Apply(x, y) : MatMult(K, x, y); };
+  PetscCall(product());  // warm-up
   *seconds = 1e30;
   for (int batch = 0; batch < 3; ++batch) {
     PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)K)));
     const double t0 = MPI_Wtime();
-    for (PetscInt k = 0; k < products; ++k) PetscCall(MatMult(K, x, y));
+    for (PetscInt k = 0; k < products; ++k) PetscCall(product());
     *seconds = std::min(*seconds, (MPI_Wtime() - t0) / products);
   }
   PetscCall(VecDestroy(&x));
@@ -101,17 +106,22 @@ static PetscErrorCode Run() {
   PetscCall(MatGetInfo(K, MAT_GLOBAL_SUM, &info));
   const double values = info.nz_used, block_indices = values / 9.0;
   const double bytes_per_dof = (8.0 * values + 4.0 * block_indices) / dofs + 16.0;  // + x read, y written
-  double seconds, stream;
-  PetscCall(TimeProducts(K, products, &seconds));
+  double seconds, kernel_seconds, stream;
+  wave::BlockKernel kernel;
+  PetscCall(kernel.Setup(K));
+  PetscCall(TimeProducts(K, nullptr, products, &seconds));
+  PetscCall(TimeProducts(K, &kernel, products, &kernel_seconds));
   PetscCall(TriadBandwidth(comm, &stream));
-  const double rate = dofs / seconds, moved = bytes_per_dof * rate;
+  const double rate = dofs / seconds, kernel_rate = dofs / kernel_seconds, ceiling = stream / bytes_per_dof;
   PetscMPIInt ranks;
   PetscCallMPI(MPI_Comm_size(comm, &ranks));
-  PetscCall(PetscPrintf(comm, "ranks degree dofs values_per_row bytes_per_dof matrix_GB_per_Mdof matmult_dof_per_s "
-                              "matmult_GB_per_s stream_GB_per_s fraction_of_ceiling\n"));
-  PetscCall(PetscPrintf(comm, "%d %" PetscInt_FMT " %" PetscInt_FMT " %.1f %.0f %.2f %.3g %.2f %.2f %.2f\n", ranks, degree,
-                        dofs, values / dofs, bytes_per_dof, (bytes_per_dof - 16.0) * 1e6 / 1e9, rate, moved / 1e9,
-                        stream / 1e9, moved / stream));
+  PetscCall(PetscPrintf(comm, "ranks degree dofs values_per_row bytes_per_dof matrix_GB_per_Mdof stream_GB_per_s "
+                              "ceiling_dof_per_s matmult_dof_per_s matmult_fraction kernel_dof_per_s kernel_fraction "
+                              "kernel_path\n"));
+  PetscCall(PetscPrintf(comm, "%d %" PetscInt_FMT " %" PetscInt_FMT " %.1f %.0f %.2f %.2f %.3g %.3g %.2f %.3g %.2f %s\n",
+                        ranks, degree, dofs, values / dofs, bytes_per_dof, (bytes_per_dof - 16.0) * 1e6 / 1e9,
+                        stream / 1e9, ceiling, rate, rate / ceiling, kernel_rate, kernel_rate / ceiling,
+                        kernel.wide() ? "avx2" : "portable"));
   PetscCall(MatDestroy(&K));
   PetscCall(VecDestroy(&mass));
   PetscCall(DMDestroy(&dm));

@@ -20,8 +20,9 @@
 // A's object state has changed since (values rescaled or reassembled; a new
 // nonzero pattern with other ghost columns needs Setup again, and is refused).
 //
-// Other block sizes (3 components in 3D) fall back to MatMult, with the same
-// contract (compress_rows: only the rows with entries are written).
+// Block size 3 (3D) runs the 3×3-block loop of block_csr3.hpp, the same way (no
+// spread x: its 4-wide path broadcasts x). Other block sizes fall back to MatMult,
+// with the same contract (compress_rows: only the rows with entries are written).
 #pragma once
 
 #include <petscmat.h>
@@ -29,6 +30,7 @@
 #include <vector>
 
 #include "vibrotherm/wave/block_csr.hpp"
+#include "vibrotherm/wave/block_csr3.hpp"
 
 namespace vibrotherm::wave {
 
@@ -41,7 +43,7 @@ class BlockKernel {
 
   /// Takes A's pattern and values and builds the ghost scatter (collective).
   /// A: SEQBAIJ or MPIBAIJ, square, assembled; the blocked loop for block
-  /// size 2, MatMult for the others. allow_wide:
+  /// sizes 2 and 3, MatMult for the others. allow_wide:
   /// the AVX2 path where the machine has it (false: the portable path, for tests).
   /// compress_rows: only the block rows with entries are written by Apply (the
   /// others keep their values): a level of local time stepping.
@@ -57,10 +59,14 @@ class BlockKernel {
   /// Block sizes other than 2: MatMult (and the rows it may write, if compressed).
   PetscErrorCode FallbackSetup();
   PetscErrorCode FallbackApply(Vec x, Vec y) const;
+  /// y = A x with the 3×3 blocks.
+  PetscErrorCode ApplyBlocks3(Vec x, Vec y) const;
 
   Mat A_ = nullptr;  ///< referenced
   mutable PetscObjectState state_ = -1;
-  mutable BlockCsr diagonal_, off_process_;
+  mutable BlockCsr diagonal_, off_process_;     ///< block size 2
+  mutable BlockCsr3 diagonal3_, off_process3_;  ///< block size 3
+  PetscInt bs_ = 2;
   VecScatter scatter_ = nullptr;  ///< x → ghosts (null on one rank)
   Vec ghosts_ = nullptr;
   mutable std::vector<Quad> spread_, spread_ghosts_;  ///< x and the ghosts, spread
