@@ -53,26 +53,6 @@ PetscErrorCode DampingHeatSource::AddLoad(double t, double interval, Vec Q) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DampingHeatSource::StartRecording(double t) {
-  PetscFunctionBeginUser;
-  replay_.Start(t, cumulative_);
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode DampingHeatSource::StopRecording() {
-  PetscFunctionBeginUser;
-  replay_.Stop();
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode DampingHeatSource::Replay(ReplayMode mode) {
-  PetscFunctionBeginUser;
-  PetscCheck(mode == ReplayMode::Off || !replay_.empty(), PetscObjectComm((PetscObject)D_), PETSC_ERR_ORDER,
-             "damping heat: nothing recorded to replay");
-  mode_ = mode;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode DampingHeatSource::AddAverageLoad(Vec Q) {
   PetscFunctionBeginUser;
   const std::vector<double> rise = replay_.increase();

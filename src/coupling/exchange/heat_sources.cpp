@@ -42,21 +42,22 @@ PetscErrorCode FrictionHeatSource::AddLoad(double t, double interval, Vec Q) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionHeatSource::StartRecording(double t) {
+PetscErrorCode ReplayableHeatSource::StartRecording(double t) {
   PetscFunctionBeginUser;
-  replay_.Start(t, crack_->dissipated_per_area());
+  replay_.Start(t, Cumulative());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionHeatSource::StopRecording() {
+PetscErrorCode ReplayableHeatSource::StopRecording() {
   PetscFunctionBeginUser;
   replay_.Stop();
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionHeatSource::Replay(ReplayMode mode) {
+PetscErrorCode ReplayableHeatSource::Replay(ReplayMode mode) {
   PetscFunctionBeginUser;
-  PetscCheck(mode == ReplayMode::Off || !replay_.empty(), comm_, PETSC_ERR_ORDER, "friction heat: nothing recorded to replay");
+  PetscCheck(mode == ReplayMode::Off || !replay_.empty(), comm(), PETSC_ERR_ORDER, "%s heat: nothing recorded to replay",
+             name());
   mode_ = mode;
   PetscFunctionReturn(0);
 }

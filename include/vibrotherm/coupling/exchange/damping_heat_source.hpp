@@ -19,7 +19,7 @@
 
 namespace vibrotherm::coupling {
 
-class DampingHeatSource final : public HeatSource {
+class DampingHeatSource final : public ReplayableHeatSource {
  public:
   DampingHeatSource() = default;
   DampingHeatSource(const DampingHeatSource&) = delete;
@@ -35,10 +35,6 @@ class DampingHeatSource final : public HeatSource {
   const char* name() const override { return "damping"; }
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
-  bool replayable() const override { return true; }
-  PetscErrorCode StartRecording(double t) override;
-  PetscErrorCode StopRecording() override;
-  PetscErrorCode Replay(ReplayMode mode) override;
   PetscErrorCode AddAverageLoad(Vec Q) override;
 
  private:
@@ -48,9 +44,9 @@ class DampingHeatSource final : public HeatSource {
   Mat D_ = nullptr;
   Vec energy_ = nullptr, work_ = nullptr;
   double deposited_ = 0.0;
+  std::vector<double> Cumulative() const override { return cumulative_; }
+  MPI_Comm comm() const override { return PetscObjectComm((PetscObject)D_); }
   std::vector<double> cumulative_;  ///< energy deposited so far per owned heat dof [J/m]
-  PeriodicReplay replay_;
-  ReplayMode mode_ = ReplayMode::Off;
 };
 
 }  // namespace vibrotherm::coupling

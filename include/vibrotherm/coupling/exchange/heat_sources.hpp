@@ -47,9 +47,27 @@ class HeatSource {
   virtual PetscErrorCode AddAverageLoad(Vec /*Q*/) { return PETSC_ERR_SUP; }
 };
 
+/// A source whose physics deposits a cumulative energy per item (a contact cell, a heat dof):
+/// it records the items' cumulative energies over a period and replays them periodically.
+class ReplayableHeatSource : public HeatSource {
+ public:
+  bool replayable() const override { return true; }
+  PetscErrorCode StartRecording(double t) override;
+  PetscErrorCode StopRecording() override;
+  PetscErrorCode Replay(ReplayMode mode) override;
+  bool replaying() const { return mode_ != ReplayMode::Off; }
+
+ protected:
+  /// Each item's cumulative energy now, as the live physics has it (the recording's start).
+  virtual std::vector<double> Cumulative() const = 0;
+  virtual MPI_Comm comm() const = 0;
+  PeriodicReplay replay_;
+  ReplayMode mode_ = ReplayMode::Off;
+};
+
 /// Friction at the crack (crack law dissipation → line density on the crack),
 /// recorded in crack_heat.h5.
-class FrictionHeatSource final : public HeatSource {
+class FrictionHeatSource final : public ReplayableHeatSource {
  public:
   PetscErrorCode Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
                        const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
@@ -60,23 +78,18 @@ class FrictionHeatSource final : public HeatSource {
   const char* name() const override { return "friction"; }
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
-  bool replayable() const override { return true; }
-  PetscErrorCode StartRecording(double t) override;
-  PetscErrorCode StopRecording() override;
-  PetscErrorCode Replay(ReplayMode mode) override;
   PetscErrorCode AddAverageLoad(Vec Q) override;
   const FrictionHeat& transfer() const { return transfer_; }
   /// Every owned cell's friction energy so far [J/m²] at t: the interface's, or the replay's.
   std::vector<double> Dissipated(double t) const;
-  bool replaying() const { return mode_ != ReplayMode::Off; }
   const interface::CrackInterface& crack() const { return *crack_; }
   /// Checkpoint keys of this rank's contact cells (their + point's origin).
   std::vector<long long> CellKeys(const mesh::Specimen& specimen) const;
 
  private:
+  std::vector<double> Cumulative() const override { return crack_->dissipated_per_area(); }
+  MPI_Comm comm() const override { return comm_; }
   interface::CrackInterface* crack_ = nullptr;
-  PeriodicReplay replay_;
-  ReplayMode mode_ = ReplayMode::Off;
   double deposited_ = 0.0;
   FrictionHeat transfer_;
   CrackHeatRecord record_;
