@@ -71,10 +71,10 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g) {
 void BoxGrid::validate(const SpecimenGeometry& g) const {
   std::ostringstream msg;
   if (!(g.depth > 0.0) || !std::isfinite(g.depth)) msg << "-specimen_depth must be > 0 for a 3D box, got " << g.depth, reject(msg);
-  g.validate();  // sizes, and the crack's trace in the x-y plane
   if (g.cracks.size() != 1)
     msg << "-crack_center: a 3D specimen holds exactly one crack for now (x,y,z of its centre), got " << g.cracks.size(),
         reject(msg);
+  g.validate();  // sizes, and the crack's trace in the x-y plane
   const Crack& c = g.cracks.front();
   if (!(c.width > 0.0) || !std::isfinite(c.width)) msg << "-crack_width must be > 0 in 3D, got " << c.width, reject(msg);
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
