@@ -293,7 +293,8 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
   PetscFunctionBeginUser;
   static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
                                       "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
-                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right"};
+                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
+                                      "-edge_front", "-edge_back"};
   std::string given;
   for (const char* name : names) {
     PetscBool set;
