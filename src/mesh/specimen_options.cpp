@@ -83,8 +83,8 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
   PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
-                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up)", &centers, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length", "Crack lengths [m] (one value applies to all)",
+                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x,y,z of the one crack)", &centers, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length", "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
                             &lengths, &has_lengths));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_angle",
                             "Crack angles to the horizontal [deg] (one value applies to all)", &angles, &has_angles));
