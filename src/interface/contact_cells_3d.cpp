@@ -5,7 +5,8 @@
 #include <cmath>
 #include <map>
 
-#include "vibrotherm/geometry/point.hpp"
+#include "vibrotherm/geometry/frame.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::interface {
@@ -15,12 +16,9 @@ using geometry::Vec3;
 
 /// The frame of a crack face's normal, oriented by the 2D rule (header).
 void FrameOf(const PetscReal* normal, ContactCell* cell) {
-  Vec3 n = geometry::Normalized(Vec3{normal[0], normal[1], normal[2]});
-  const bool flip = std::abs(n[1]) > 1e-12 ? n[1] < 0.0 : n[0] > 0.0;
-  if (flip) n = geometry::Scale(-1.0, n);
-  const Vec3 t1 = geometry::Normalized(Vec3{n[1], -n[0], 0.0});
-  const Vec3 t2 = geometry::Cross(n, t1);
-  for (int d = 0; d < 3; ++d) cell->n[d] = n[d], cell->s[d] = t1[d], cell->s2[d] = t2[d];
+  const geometry::Frame<3> f =
+      geometry::FrameFromNormal(geometry::OrientedCrackNormal({normal[0], normal[1], normal[2]}), {1.0, 0.0, 0.0});
+  for (int d = 0; d < 3; ++d) cell->n[d] = f.normal[d], cell->s[d] = f.tangent[0][d], cell->s2[d] = f.tangent[1][d];
 }
 
 /// This rank's cohesive cells.
@@ -66,23 +64,6 @@ PetscErrorCode NodeWeights(const fe::LagrangeSpace& space, const std::vector<Pet
   PetscFunctionReturn(0);
 }
 
-/// Which face of cohesive cell c is +: the one whose bulk neighbour lies along n.
-PetscErrorCode PlusSide(DM dm, const mesh::VertexPositions<3>& x, PetscInt c, const ContactCell& frame, int* plus) {
-  PetscFunctionBeginUser;
-  const PetscInt* cone;
-  PetscCall(DMPlexGetCone(dm, c, &cone));
-  const PetscInt* support;
-  PetscInt ns;
-  PetscCall(DMPlexGetSupportSize(dm, cone[0], &ns));
-  PetscCall(DMPlexGetSupport(dm, cone[0], &support));
-  Vec3 face, bulk;
-  PetscCall(mesh::CellCentroid(dm, x, cone[0], &face));
-  PetscCall(mesh::CellCentroid(dm, x, support[0] == c ? support[1] : support[0], &bulk));
-  const Vec3 n{frame.n[0], frame.n[1], frame.n[2]};
-  *plus = geometry::Dot(geometry::Sub(bulk, face), n) > 0.0 ? 0 : 1;
-  PetscFunctionReturn(0);
-}
-
 /// The pairs of one cohesive cell, keyed by the point joining them (the cell for
 /// the faces, a tensor face for edges, a tensor edge for vertices).
 PetscErrorCode CellPairs(DM dm, PetscInt c, int degree, const std::vector<bool>& ghost, PetscInt chart0,
@@ -125,6 +106,10 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   PetscCall(DMGetLocalSection(dm, &section));
   const PetscScalar* w;
   PetscCall(VecGetArrayRead(weights, &w));
+  DMLabel plus_faces;
+  PetscCall(DMGetLabel(dm, mesh::labels::crack_plus, &plus_faces));
+  PetscCheck(plus_faces || cohesive.empty(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D crack: no %s label (SplitCracks sets it)",
+             mesh::labels::crack_plus);
   std::map<PetscInt, ContactCell> by_point;
   for (PetscInt c : cohesive) {
     const PetscInt* cone;
@@ -133,8 +118,9 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
     PetscCall(DMPlexComputeCellGeometryFVM(dm, cone[0], &area, centre, normal));
     ContactCell frame{};
     FrameOf(normal, &frame);
-    int plus = 0;
-    PetscCall(PlusSide(dm, x, c, frame, &plus));
+    PetscInt side;  // the split labelled the + face on the serial mesh (mesh/plex/labels.hpp)
+    PetscCall(DMLabelGetValue(plus_faces, cone[0], &side));
+    const int plus = side == 1 ? 0 : 1;
     std::map<PetscInt, std::array<PetscInt, 2>> pairs;
     PetscCall(CellPairs(dm, c, static_cast<int>(space.degree()), ghost, chart0, &pairs));
     for (const auto& [key, pair] : pairs) {
