@@ -35,4 +35,9 @@ Vec3 OrientedCrackNormal(const Vec3& normal) {
   return flip ? Scale(-1.0, n) : n;
 }
 
+Frame<3> CrackFrame(const Vec3& normal) {
+  const Vec3 n = OrientedCrackNormal(normal);
+  return FrameFromNormal(n, {n[1], -n[0], 0.0});  // the strike: already in the plane
+}
+
 }  // namespace vibrotherm::geometry

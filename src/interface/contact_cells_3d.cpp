@@ -16,8 +16,7 @@ using geometry::Vec3;
 
 /// The frame of a crack face's normal, oriented by the 2D rule (header).
 void FrameOf(const PetscReal* normal, ContactCell* cell) {
-  const geometry::Frame<3> f =
-      geometry::FrameFromNormal(geometry::OrientedCrackNormal({normal[0], normal[1], normal[2]}), {1.0, 0.0, 0.0});
+  const geometry::Frame<3> f = geometry::CrackFrame({normal[0], normal[1], normal[2]});
   for (int d = 0; d < 3; ++d) cell->n[d] = f.normal[d], cell->s[d] = f.tangent[0][d], cell->s2[d] = f.tangent[1][d];
 }
 
@@ -53,7 +52,8 @@ PetscErrorCode NodeWeights(const fe::LagrangeSpace& space, const std::vector<Pet
       double area;
       offsets.clear(), weights.clear();
       PetscCall(space.FaceNodes(cone[side], &offsets, &weights, &area));
-      PetscCall(VecSetValues(*local, static_cast<PetscInt>(offsets.size()), offsets.data(), weights.data(), ADD_VALUES));
+      PetscCall(
+          VecSetValues(*local, static_cast<PetscInt>(offsets.size()), offsets.data(), weights.data(), ADD_VALUES));
     }
   }
   PetscCall(VecAssemblyBegin(*local));
@@ -108,8 +108,8 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   PetscCall(VecGetArrayRead(weights, &w));
   DMLabel plus_faces;
   PetscCall(DMGetLabel(dm, mesh::labels::crack_plus, &plus_faces));
-  PetscCheck(plus_faces || cohesive.empty(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D crack: no %s label (SplitCracks sets it)",
-             mesh::labels::crack_plus);
+  PetscCheck(plus_faces || cohesive.empty(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "3D crack: no %s label (SplitCracks sets it)", mesh::labels::crack_plus);
   std::map<PetscInt, ContactCell> by_point;
   for (PetscInt c : cohesive) {
     const PetscInt* cone;

@@ -187,7 +187,9 @@ void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, 
   double j[3];
   for (int d = 0; d < dim_; ++d) j[d] = PetscRealPart(U[Slot(i, d)] - U[Slot(i, dim_ + d)]);
   // Each dot product summed x, y, then z: the 2D bits unchanged.
-  const auto dot = [&](const double* e) { return dim_ == 2 ? j[0] * e[0] + j[1] * e[1] : j[0] * e[0] + j[1] * e[1] + j[2] * e[2]; };
+  const auto dot = [&](const double* e) {
+    return dim_ == 2 ? j[0] * e[0] + j[1] * e[1] : j[0] * e[0] + j[1] * e[1] + j[2] * e[2];
+  };
   *a = c.a0 - 0.5 * dot(c.n);
   *b = dim_ == 2 ? contact::Tangential(0.5 * dot(c.s)) : contact::Tangential(0.5 * dot(c.s), 0.5 * dot(c.s2));
 }

@@ -8,7 +8,13 @@
 namespace vibrotherm::mesh {
 namespace {
 
-[[noreturn]] void reject(const std::ostringstream& msg) { throw std::invalid_argument(msg.str()); }
+/// Throws std::invalid_argument with the parts streamed one after the other.
+template <class... Parts>
+[[noreturn]] void reject(const Parts&... parts) {
+  std::ostringstream msg;
+  (msg << ... << parts);
+  throw std::invalid_argument(msg.str());
+}
 
 /// The steps from a breakpoint over `distance`: sizes h0 + grading·d, at most h,
 /// scaled to end exactly there (at least one step).
@@ -31,10 +37,11 @@ int CellsAcross(double extent, double h) { return std::max(1, static_cast<int>(s
 
 }  // namespace
 
-std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h,
-                               double grading, int* lo, int* hi) {
+std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
+                               int* lo, int* hi) {
   const double start = cells > 0 ? (b_hi - b_lo) / cells : h0;
-  const std::vector<double> below = GradedSteps(b_lo, start, h, grading), above = GradedSteps(length - b_hi, start, h, grading);
+  const std::vector<double> below = GradedSteps(b_lo, start, h, grading),
+                            above = GradedSteps(length - b_hi, start, h, grading);
   std::vector<double> nodes = {0.0};
   for (auto it = below.rbegin(); it != below.rend(); ++it) nodes.push_back(nodes.back() + *it);
   nodes.back() = b_lo;
@@ -69,37 +76,35 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g) {
 }
 
 void BoxGrid::validate(const SpecimenGeometry& g) const {
-  std::ostringstream msg;
-  if (!(g.depth > 0.0) || !std::isfinite(g.depth)) msg << "-specimen_depth must be > 0 for a 3D box, got " << g.depth, reject(msg);
+  if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
   if (g.cracks.size() != 1)
-    msg << "-crack_center: a 3D specimen holds exactly one crack for now (x,y,z of its centre), got " << g.cracks.size(),
-        reject(msg);
+    reject("-crack_center: a 3D specimen holds exactly one crack for now (x,y,z of its centre), got ", g.cracks.size());
   g.validate();  // sizes, and the crack's trace in the x-y plane
   const Crack& c = g.cracks.front();
-  if (!(c.width > 0.0) || !std::isfinite(c.width)) msg << "-crack_width must be > 0 in 3D, got " << c.width, reject(msg);
+  if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width);
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
   const auto e0 = c.end(0), e1 = c.end(1);
   const bool buried = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
                       std::max(e0[1], e1[1]) < g.height - tol && c.z - 0.5 * c.width > tol &&
                       c.z + 0.5 * c.width < g.depth - tol;
   if (!buried)
-    msg << "-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must be "
-           "buried for now; z extent [" << c.z - 0.5 * c.width << ", " << c.z + 0.5 * c.width << "] of [0, " << g.depth
-        << "])", reject(msg);
-  for (const auto& [option, extent] : {std::pair<const char*, double>{"-crack_length", c.length}, {"-crack_width", c.width}})
-    if (CellsAcross(extent, g.h_crack) < 2)
-      msg << option << " " << extent << " m is resolved by fewer than 2 cells of -mesh_h_crack " << g.h_crack << " m",
-          reject(msg);
+    reject("-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must ",
+           "be buried for now; z extent [", c.z - 0.5 * c.width, ", ", c.z + 0.5 * c.width, "] of [0, ", g.depth, "])");
+  if (CellsAcross(c.length, g.h_crack) < 2)
+    reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
+  if (CellsAcross(c.width, g.h_crack) < 2)
+    reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
   // The shear x_p' = x_p + (x_q − c_q) m β(x_p) must not fold: |x_q − c_q| |m| max|β'| ≤ 3/4.
   const double theta = c.angle_deg * M_PI / 180.0;
   const bool steep = std::abs(std::cos(theta)) < std::sqrt(0.5) - 1e-12;
   const double m = std::abs(steep ? std::cos(theta) / std::sin(theta) : std::tan(theta));
-  const double cp = steep ? c.x : c.y, cq = steep ? c.y : c.x, Lp = steep ? g.width : g.height, Lq = steep ? g.height : g.width;
+  const double cp = steep ? c.x : c.y, cq = steep ? c.y : c.x;
+  const double Lp = steep ? g.width : g.height, Lq = steep ? g.height : g.width;
   const double reach = std::max(cq, Lq - cq) * m * 0.5 * M_PI / std::min(cp, Lp - cp);
   if (reach > 0.75)
-    msg << "-crack_angle " << c.angle_deg << ": the 3D grid cannot be sheared into this crack plane without folding "
-        << "(the crack centre lies " << std::min(cp, Lp - cp) << " m from the faces normal to "
-        << (steep ? "x" : "y") << "): a smaller inclination, or the crack farther from those faces", reject(msg);
+    reject("-crack_angle ", c.angle_deg, ": the 3D grid cannot be sheared into this crack plane without folding (the ",
+           "crack centre lies ", std::min(cp, Lp - cp), " m from the faces normal to ", steep ? "x" : "y",
+           "): a smaller inclination, or the crack farther from those faces");
 }
 
 double BoxGrid::blend(double xp) const {

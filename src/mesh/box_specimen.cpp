@@ -14,8 +14,9 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   const double t0 = MPI_Wtime();
   std::unique_ptr<BoxGrid> grid;
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry));
-  PetscCall(PetscPrintf(comm, "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
-                              "into its plane: %d x %d crack faces)\n",
+  PetscCall(PetscPrintf(comm,
+                        "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
+                        "into its plane: %d x %d crack faces)\n",
                         grid->cells(0), grid->cells(1), grid->cells(2), grid->crack_cells(0), grid->crack_cells(1)));
   DM serial;
   PetscInt crack_faces;

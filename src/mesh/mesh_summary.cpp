@@ -301,8 +301,9 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
   }
   for (const CrackSummary& c : s.cracks)
     if (s.dimension == 3)
-      PetscCall(PetscPrintf(comm, "  %s: %" PetscInt_FMT " faces (= cohesive cells), %" PetscInt_FMT " split vertices, %"
-                                  PetscInt_FMT " front vertices, area %.6g m^2\n",
+      PetscCall(PetscPrintf(comm,
+                            "  %s: %" PetscInt_FMT " faces (= cohesive cells), %" PetscInt_FMT " split vertices, %"
+                            PetscInt_FMT " front vertices, area %.6g m^2\n",
                             c.name.c_str(), c.facets, c.node_pairs, c.tips, c.area));
     else
       PetscCall(PetscPrintf(comm, "  %s: %" PetscInt_FMT " facets, %" PetscInt_FMT " contact node pairs, %" PetscInt_FMT
@@ -310,7 +311,8 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
                             c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
   if (s.dimension == 3) {
-    PetscCall(PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve, camera or field output yet)\n"));
+    PetscCall(
+        PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve, camera or field output yet)\n"));
     PetscFunctionReturn(0);
   }
   PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT

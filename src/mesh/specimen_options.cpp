@@ -23,8 +23,8 @@ PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const char* na
   for (EdgeKind k : all_edge_kinds()) names.push_back(to_string(k));
   PetscInt index = static_cast<PetscInt>(std::find(all_edge_kinds().begin(), all_edge_kinds().end(), *kind) -
                                          all_edge_kinds().begin());
-  PetscCall(OptionsChoice(PetscOptionsObject, option, "Mechanical kind of this outer edge (front, back: faces of a 3D box)",
-                          names, &index, given));
+  PetscCall(OptionsChoice(PetscOptionsObject, option,
+                          "Mechanical kind of this outer edge (front, back: faces of a 3D box)", names, &index, given));
   *kind = all_edge_kinds()[index];
   PetscFunctionReturn(0);
 }
@@ -83,8 +83,10 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
   PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
-                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x,y,z of the one crack)", &centers, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length", "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
+                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x,y,z of the one crack)",
+                            &centers, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length",
+                            "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
                             &lengths, &has_lengths));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_angle",
                             "Crack angles to the horizontal [deg] (one value applies to all)", &angles, &has_angles));

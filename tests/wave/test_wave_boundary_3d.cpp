@@ -258,7 +258,8 @@ TEST_P(WaveBoundary3d, TangentialSourceDrivesXOnTopAndZOnXFaces) {
   DMRemoveLabel(dm_, mesh::to_string(mesh::EdgeKind::Source), nullptr);
   const auto side = [](const BoxFace& f) { return f.axis == 0 && !f.upper; };
   Build(mesh::EdgeKind::Source, side);
-  for (const wave::Constraint& c : boundary_.constraints) EXPECT_NEAR(std::abs(c.d[2]), 1.0, 1e-14) << "node " << c.node;
+  for (const wave::Constraint& c : boundary_.constraints)
+    EXPECT_NEAR(std::abs(c.d[2]), 1.0, 1e-14) << "node " << c.node;
 }
 
 TEST_P(WaveBoundary3d, AbsorbingFaceRadiatesThePlaneWaveFlux) {

@@ -6,10 +6,10 @@
 // Frame of a planar crack whose normal lies in the x–y plane (the box crack), the
 // 2D convention extended: n is oriented with n_y > 0 (n_x < 0 for a vertical
 // crack), t1 = n turned by −90° about z (the strike, as the 2D tangent s) and
-// t2 = n × t1 (= −z), so (t1, t2, n) is right handed (geometry::OrientedCrackNormal,
-// FrameFromNormal with reference x). The + node is on the face the split labelled
-// crack_plus (its bulk neighbour lies along n: decided on the serial mesh). A node's weight is ∫φ dA over every crack face
-// around it, summed across ranks (its tributary area [m²]).
+// t2 = n × t1 (= −z), so (t1, t2, n) is right handed (geometry::CrackFrame). The
+// + node is on the face the split labelled crack_plus (its bulk neighbour lies
+// along n: decided on the serial mesh). A node's weight is ∫φ dA over every crack
+// face around it, summed across ranks (its tributary area [m²]).
 #pragma once
 
 #include <vector>

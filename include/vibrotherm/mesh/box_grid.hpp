@@ -60,7 +60,7 @@ class BoxGrid {
 /// uniform cells (cells = 0: b_lo = b_hi, a plane whose neighbours get h0), and
 /// outside a spacing that starts at the segment's and grows by `grading` per metre
 /// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi.
-std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h,
-                               double grading, int* lo, int* hi);
+std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
+                               int* lo, int* hi);
 
 }  // namespace vibrotherm::mesh

@@ -59,7 +59,8 @@ struct SpecimenGeometry {
   std::array<EdgeKind, 4> edges = {EdgeKind::Absorbing, EdgeKind::Absorbing, EdgeKind::Source,
                                    EdgeKind::Absorbing};  ///< by Side
   double depth = 0.0;             ///< -specimen_depth: > 0 makes the specimen a 3D box
-  std::array<EdgeKind, 2> depth_edges = {EdgeKind::Absorbing, EdgeKind::Absorbing};  ///< -edge_front (z = D), -edge_back (z = 0)
+  /// -edge_front (z = D), -edge_back (z = 0) of a 3D box
+  std::array<EdgeKind, 2> depth_edges = {EdgeKind::Absorbing, EdgeKind::Absorbing};
   SourcePatch patch;              ///< -source_patch_edge, -source_patch_center, -source_patch_width
   /// The patch's end points (x, y) on its edge.
   std::array<std::array<double, 2>, 2> patch_ends() const;

@@ -38,15 +38,14 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
              "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", given);
-  const std::pair<bool, const char*> refused[] = {
-      {s->run.heat == HeatChoice::On, "-heat on"},
-      {s->run.physics == PhysicsChoice::Heat, "-physics heat"},
-      {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
-      {s->camera.on, "-camera"},
-      {s->periodic.choice == PeriodicChoice::On, "-periodic on"},
-      {s->wave.lts.on, "-wave_lts on"},
-      {s->wave.harmonic_start, "-wave_start harmonic"},
-      {s->material.damping_heat, "-material_damping_heat"}};
+  const std::pair<bool, const char*> refused[] = {{s->run.heat == HeatChoice::On, "-heat on"},
+                                                  {s->run.physics == PhysicsChoice::Heat, "-physics heat"},
+                                                  {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
+                                                  {s->camera.on, "-camera"},
+                                                  {s->periodic.choice == PeriodicChoice::On, "-periodic on"},
+                                                  {s->wave.lts.on, "-wave_lts on"},
+                                                  {s->wave.harmonic_start, "-wave_start harmonic"},
+                                                  {s->material.damping_heat, "-material_damping_heat"}};
   for (const auto& [refuse, option] : refused)
     PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
                "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", option);
@@ -63,8 +62,9 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   s->run.heat = HeatChoice::Off;
   s->run.crack_state_every = 0;
   s->periodic.on = false;
-  PetscCall(PetscPrintf(comm, "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera, "
-                              "field output or crack_state.csv yet)\n"));
+  PetscCall(PetscPrintf(comm,
+                        "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera, "
+                        "field output or crack_state.csv yet)\n"));
   PetscFunctionReturn(0);
 }
 
