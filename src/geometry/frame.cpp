@@ -29,4 +29,15 @@ Frame<3> FrameFromNormal(const Vec3& normal, const Vec3& reference) {
   return {n, {t1, Cross(n, t1)}};
 }
 
+Vec3 OrientedCrackNormal(const Vec3& normal) {
+  const Vec3 n = Normalized(normal);
+  const bool flip = std::abs(n[1]) > 1e-12 ? n[1] < 0.0 : n[0] > 0.0;
+  return flip ? Scale(-1.0, n) : n;
+}
+
+Frame<3> CrackFrame(const Vec3& normal) {
+  const Vec3 n = OrientedCrackNormal(normal);
+  return FrameFromNormal(n, {n[1], -n[0], 0.0});  // the strike: already in the plane
+}
+
 }  // namespace vibrotherm::geometry

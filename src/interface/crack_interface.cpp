@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "vibrotherm/interface/contact_cells_3d.hpp"
 #include "vibrotherm/interface/contact_geometry.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -70,18 +71,19 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, const mesh:
   PetscCall(PetscLogEventRegister("CrackForces", id, &force_event_));
   PetscCall(PetscLogEventRegister("CrackCommit", id, &commit_event_));
   law_ = std::move(law);
+  dim_ = space.dim();
   PetscCall(BuildCells(space, cracks, a0));
   PetscInt local_count = static_cast<PetscInt>(cells_.size());
   PetscCallMPI(MPI_Allreduce(&local_count, &global_cells_, 1, MPIU_INT, MPI_SUM, comm_));
   PetscSection global;
   PetscCall(DMGetGlobalSection(space.dm(), &global));
-  std::vector<PetscInt> dofs;  // [u⁺x u⁺y u⁻x u⁻y] per cell
+  std::vector<PetscInt> dofs;  // [u⁺ u⁻] per cell, dim_ components each
   for (const ContactCell& cell : cells_)
     for (PetscInt point : {cell.plus, cell.minus}) {
       PetscInt off;
       PetscCall(PetscSectionGetOffset(global, point, &off));
       if (off < 0) off = -(off + 1);
-      dofs.insert(dofs.end(), {off, off + 1});
+      for (int d = 0; d < dim_; ++d) dofs.push_back(off + d);
     }
   PetscCall(BuildTransfer(dofs, lumped_mass));
   cell_dofs_ = dofs;
@@ -93,6 +95,11 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
                                           const ApproachProfile& a0) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
+  if (dim_ == 3) {  // one planar crack; no parameterisation along it yet (ξ = 0.5)
+    PetscCall(ContactCells3D(space, &cells_));
+    for (ContactCell& cell : cells_) cell.xi = 0.5, cell.a0 = a0.at(cell.xi);
+    PetscFunctionReturn(0);
+  }
   const ContactGeometry geometry(cracks.facets(), static_cast<int>(space.degree()));
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
@@ -159,11 +166,11 @@ PetscErrorCode CrackInterface::BuildTransfer(const std::vector<PetscInt>& dofs, 
 void CrackInterface::InitialState() {
   const std::size_t n = cells_.size();
   a_.resize(n);
-  b_.assign(n, 0.0);
+  // 2D: one tangential component, along s; 3D: two, along t1 and t2.
+  const contact::Tangential zero = contact::Tangential::zero(dim_ - 1);
+  b_.assign(n, zero);
   for (std::size_t i = 0; i < n; ++i) a_[i] = cells_[i].a0;
-  // 2D: one tangential component, along s.
-  const std::vector<contact::Tangential> b(n, contact::Tangential(0.0));
-  law_->initialize(n, a_.data(), b.data());
+  law_->initialize(n, a_.data(), b_.data());
   power_.assign(n, 0.0);
   W_.assign(n, 0.0);
   last_.assign(n, contact::StepResult{});
@@ -171,15 +178,20 @@ void CrackInterface::InitialState() {
   initial_stored_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     initial_stored_[i] = law_->stored_energy(i);
-    cells_[i].N0 = law_->trial(i, cells_[i].a0, contact::Tangential(0.0)).N;
+    cells_[i].N0 = law_->trial(i, cells_[i].a0, zero).N;
   }
 }
 
-void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, double* b) const {
+void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, contact::Tangential* b) const {
   const ContactCell& c = cells_[i];
-  const double jx = PetscRealPart(U[Slot(i, 0)] - U[Slot(i, 2)]), jy = PetscRealPart(U[Slot(i, 1)] - U[Slot(i, 3)]);
-  *a = c.a0 - 0.5 * (jx * c.n[0] + jy * c.n[1]);
-  *b = 0.5 * (jx * c.s[0] + jy * c.s[1]);
+  double j[3];
+  for (int d = 0; d < dim_; ++d) j[d] = PetscRealPart(U[Slot(i, d)] - U[Slot(i, dim_ + d)]);
+  // Each dot product summed x, y, then z: the 2D bits unchanged.
+  const auto dot = [&](const double* e) {
+    return dim_ == 2 ? j[0] * e[0] + j[1] * e[1] : j[0] * e[0] + j[1] * e[1] + j[2] * e[2];
+  };
+  *a = c.a0 - 0.5 * dot(c.n);
+  *b = dim_ == 2 ? contact::Tangential(0.5 * dot(c.s)) : contact::Tangential(0.5 * dot(c.s), 0.5 * dot(c.s2));
 }
 
 PetscErrorCode CrackInterface::GatherBegin(Vec u, const PetscScalar** U) {
@@ -210,18 +222,23 @@ PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
   PetscCall(VecGetArray(direct_ ? acc : f_local_, &F));
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const ContactCell& c = cells_[i];
-    double a, b;
+    double a;
+    contact::Tangential b;
     Kinematics(i, U, &a, &b);
-    const contact::Traction t = law_->trial(i, a, contact::Tangential(b));
+    const contact::Traction t = law_->trial(i, a, b);
     // Only the change from the initial state: the pre-stress that holds a
     // pre-closed crack (a0 > 0) at rest balances N(a0).
     const double N = t.N - c.N0;
-    const double fx = c.weight * (N * c.n[0] - t.T[0] * c.s[0]), fy = c.weight * (N * c.n[1] - t.T[0] * c.s[1]);
-    const double f[4] = {fx, fy, -fx, -fy};
-    for (int k = 0; k < 4; ++k) {
-      const double value = f[k] * inv_mass_[4 * i + k];
+    double f[6];
+    for (int d = 0; d < dim_; ++d) {
+      f[d] = dim_ == 2 ? c.weight * (N * c.n[d] - t.T[0] * c.s[d])
+                       : c.weight * (N * c.n[d] - t.T[0] * c.s[d] - t.T[1] * c.s2[d]);
+      f[dim_ + d] = -f[d];
+    }
+    for (int k = 0; k < stride(); ++k) {
+      const double value = f[k] * inv_mass_[stride() * i + k];
       if (direct_) F[Slot(i, k)] += value;
-      else F[4 * i + k] = value;
+      else F[stride() * i + k] = value;
     }
   }
   PetscCall(GatherEnd(u, &U));
@@ -240,7 +257,7 @@ PetscErrorCode CrackInterface::MarkDofs(Vec marker) {
   PetscScalar* F;
   PetscCall(VecGetArray(direct_ ? marker : f_local_, &F));
   for (std::size_t i = 0; i < cells_.size(); ++i)
-    for (int k = 0; k < 4; ++k) F[direct_ ? Slot(i, k) : 4 * i + k] = 1.0;
+    for (int k = 0; k < stride(); ++k) F[direct_ ? Slot(i, k) : stride() * i + k] = 1.0;
   PetscCall(VecRestoreArray(direct_ ? marker : f_local_, &F));
   if (!direct_) {
     PetscCall(VecScatterBegin(scatter_, f_local_, marker, ADD_VALUES, SCATTER_REVERSE));
@@ -258,7 +275,7 @@ PetscErrorCode CrackInterface::Commit(Vec u, double dt) {
   const double mu = law_->friction_bound();
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     Kinematics(i, U, &a_[i], &b_[i]);
-    last_[i] = law_->commit(i, a_[i], contact::Tangential(b_[i]));
+    last_[i] = law_->commit(i, a_[i], b_[i]);
     W_[i] += last_[i].dW;
     power_[i] = dt > 0 ? last_[i].dW / dt : 0.0;
     dissipated_local_ += cells_[i].weight * last_[i].dW;
@@ -284,7 +301,7 @@ PetscErrorCode CrackInterface::MaxFrequencySquared(double* omega2, double extra_
     const double a = extra_approach >= 0.0 ? cells_[i].a0 + extra_approach : a_[i];
     const contact::CellStiffness k = law_->stiffness(i, a);
     const double kj = 0.5 * cells_[i].weight * std::max(k.normal, k.tangential);
-    local = std::max(local, kj * (inv_mass_[4 * i] + inv_mass_[4 * i + 2]));
+    local = std::max(local, kj * (inv_mass_[stride() * i] + inv_mass_[stride() * i + dim_]));
   }
   PetscCallMPI(MPI_Allreduce(&local, omega2, 1, MPI_DOUBLE, MPI_MAX, comm_));
   PetscFunctionReturn(0);
@@ -337,7 +354,7 @@ PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u
     CrackCellRecord r;
     r.crack = static_cast<int>(c.crack);
     r.xi = c.xi, r.x = c.x, r.y = c.y;
-    r.a = a_[i], r.b = b_[i], r.b0 = law_->slip_offset(i)[0];
+    r.a = a_[i], r.b = b_[i][0], r.b0 = law_->slip_offset(i)[0];
     r.N = s.N, r.T = s.T[0], r.state = s.state;
     r.power = power_[i], r.W = W_[i];
     if (U) r.ux = PetscRealPart(U[Slot(i, 0)]), r.uy = PetscRealPart(U[Slot(i, 1)]);
@@ -361,15 +378,18 @@ PetscErrorCode CrackInterface::TangentStiffness(std::vector<PetscInt>* rows, std
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const ContactCell& c = cells_[i];
     const contact::CellStiffness k = law_->stiffness(i, a_[i]);
-    double block[2][2];
-    for (int p = 0; p < 2; ++p)
-      for (int q = 0; q < 2; ++q) block[p][q] = 0.5 * c.weight * (k.normal * c.n[p] * c.n[q] + k.tangential * c.s[p] * c.s[q]);
+    double block[3][3];
+    for (int p = 0; p < dim_; ++p)
+      for (int q = 0; q < dim_; ++q)
+        block[p][q] = dim_ == 2 ? 0.5 * c.weight * (k.normal * c.n[p] * c.n[q] + k.tangential * c.s[p] * c.s[q])
+                                : 0.5 * c.weight * (k.normal * c.n[p] * c.n[q] +
+                                                    k.tangential * (c.s[p] * c.s[q] + c.s2[p] * c.s2[q]));
     for (int side_r = 0; side_r < 2; ++side_r)
       for (int side_c = 0; side_c < 2; ++side_c)
-        for (int p = 0; p < 2; ++p)
-          for (int q = 0; q < 2; ++q) {
-            rows->push_back(cell_dofs_[4 * i + 2 * side_r + p]);
-            cols->push_back(cell_dofs_[4 * i + 2 * side_c + q]);
+        for (int p = 0; p < dim_; ++p)
+          for (int q = 0; q < dim_; ++q) {
+            rows->push_back(cell_dofs_[stride() * i + dim_ * side_r + p]);
+            cols->push_back(cell_dofs_[stride() * i + dim_ * side_c + q]);
             values->push_back((side_r == side_c ? 1.0 : -1.0) * block[p][q]);
           }
   }

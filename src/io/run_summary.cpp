@@ -49,6 +49,7 @@ void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
     json.value("contact_node_pairs", static_cast<long long>(c.node_pairs));
     json.value("buried_tips", static_cast<long long>(c.tips));
     json.value("length", c.length).value("requested_length", c.requested_length);
+    if (m.dimension == 3) json.value("area", c.area);
     json.end_object();
   }
   json.end_array();
@@ -133,6 +134,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("version", version()).value("git_commit", s.git_commit).value("date", s.date);
       json.value("host", s.host).value("command_line", s.command_line);
       json.value("complete", s.complete);
+      if (s.mesh.dimension == 3) json.value("dimension", s.mesh.dimension);  // 2D summaries keep their keys
       if (!s.restarted_from.empty()) json.value("restarted_from", s.restarted_from);
       json.begin_array("warnings");  // where the run left the model's validity (coupling/model_validity.hpp)
       for (const std::string& w : s.warnings) json.value(nullptr, w);

@@ -1,5 +1,6 @@
 #include "vibrotherm/mesh/mesh_summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -117,12 +118,104 @@ PetscErrorCode SummariseCracks(MPI_Comm comm, const Specimen& specimen, const st
   PetscFunctionReturn(0);
 }
 
+/// 3D: shortest and longest edge of this rank's mesh.
+PetscErrorCode EdgeRange(DM dm, double* h_min, double* h_max) {
+  PetscFunctionBeginUser;
+  VertexPositions<3> x;
+  PetscCall(x.Setup(dm));
+  PetscInt eStart, eEnd;
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
+  *h_min = INFINITY, *h_max = 0.0;
+  for (PetscInt e = eStart; e < eEnd; ++e) {
+    const PetscInt* cone;
+    PetscCall(DMPlexGetCone(dm, e, &cone));
+    const double h = geometry::Norm(geometry::Sub(x(cone[1]), x(cone[0])));
+    if (h == 0.0) continue;  // a tensor edge of a cohesive cell at the crack front
+    *h_min = std::min(*h_min, h), *h_max = std::max(*h_max, h);
+  }
+  PetscFunctionReturn(0);
+}
+
+/// 3D: one cohesive cell's area (its − face) and its owned tensor edges, split (pairs) or not (front).
+PetscErrorCode CohesiveCell3D(DM dm, PetscInt c, const std::vector<bool>& ghost, PetscInt chart0,
+                              std::set<PetscInt>* seen, CrackSummary* crack) {
+  PetscFunctionBeginUser;
+  const PetscInt *cone, *faces;
+  PetscInt nfaces;
+  PetscCall(DMPlexGetCone(dm, c, &cone));
+  PetscReal area, centre[3], normal[3];
+  PetscCall(DMPlexComputeCellGeometryFVM(dm, cone[0], &area, centre, normal));
+  crack->area += area;
+  PetscCall(DMPlexGetConeSize(dm, c, &nfaces));
+  PetscCall(DMPlexGetCone(dm, c, &faces));
+  for (PetscInt k = 2; k < nfaces; ++k) {  // the tensor faces: (edge A, edge B, tensor edge, tensor edge)
+    const PetscInt* edges;
+    PetscCall(DMPlexGetCone(dm, faces[k], &edges));
+    for (int j = 2; j < 4; ++j) {
+      const PetscInt* pair;
+      PetscCall(DMPlexGetCone(dm, edges[j], &pair));
+      if (ghost[edges[j] - chart0] || !seen->insert(edges[j]).second) continue;
+      if (pair[0] != pair[1]) ++crack->node_pairs;
+      else ++crack->tips;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/// The 3D box: bulk and cohesive cells, edge range, the crack's faces, area, split and front vertices.
+PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  DM dm = specimen.wave;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  std::vector<bool> ghost;
+  PetscCall(GhostPoints(dm, &ghost));
+  PetscInt chart0, cStart, cEnd, bulk = 0;
+  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  CrackSummary local;
+  std::set<PetscInt> seen;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    PetscCall(IsCohesiveCell(dm, c, &cohesive));
+    bulk += !cohesive;
+    local.facets += cohesive;
+    if (cohesive) PetscCall(CohesiveCell3D(dm, c, ghost, chart0, &seen, &local));
+  }
+  double h[2];
+  PetscCall(EdgeRange(dm, &h[0], &h[1]));
+  s->dimension = 3, s->cell_type = "hex", s->heat_source = specimen.heat_source;
+  PetscCallMPI(MPI_Allreduce(&bulk, &s->cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&local.facets, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));
+  s->cells_per_rank.assign(s->ranks, 0);
+  PetscCallMPI(MPI_Allgather(&bulk, 1, MPIU_INT, s->cells_per_rank.data(), 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allreduce(&h[0], &s->h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&h[1], &s->h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(CountOwned(dm, 0, &s->vertices));
+  CrackSummary crack;
+  crack.name = specimen.cracks.front().name;
+  crack.requested_length = specimen.cracks.front().requested_length;
+  PetscCallMPI(MPI_Allreduce(&local.facets, &crack.facets, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&local.node_pairs, &crack.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&local.tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&local.area, &crack.area, 1, MPI_DOUBLE, MPI_SUM, comm));
+  s->cracks = {crack};
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionBeginUser;
   DM dm = specimen.wave;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscInt dim;
+  PetscCall(DMGetDimension(dm, &dim));
+  if (dim == 3) {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(comm, &size));
+    s->ranks = size, s->source = specimen.source;
+    PetscFunctionReturn(ComputeBoxSummary(specimen, s));
+  }
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   s->ranks = size;
@@ -207,10 +300,21 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
     PetscCall(PetscPrintf(comm, "\n"));
   }
   for (const CrackSummary& c : s.cracks)
-    PetscCall(PetscPrintf(comm, "  %s: %" PetscInt_FMT " facets, %" PetscInt_FMT " contact node pairs, %" PetscInt_FMT
-                                " buried tips, length %.6g m\n",
-                          c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
+    if (s.dimension == 3)
+      PetscCall(PetscPrintf(comm,
+                            "  %s: %" PetscInt_FMT " faces (= cohesive cells), %" PetscInt_FMT " split vertices, %"
+                            PetscInt_FMT " front vertices, area %.6g m^2\n",
+                            c.name.c_str(), c.facets, c.node_pairs, c.tips, c.area));
+    else
+      PetscCall(PetscPrintf(comm, "  %s: %" PetscInt_FMT " facets, %" PetscInt_FMT " contact node pairs, %" PetscInt_FMT
+                                  " buried tips, length %.6g m\n",
+                            c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
+  if (s.dimension == 3) {
+    PetscCall(
+        PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve, camera or field output yet)\n"));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT
                               " vertices, element edge length min %.3g m, max %.3g m\n",
                         s.heat_source.c_str(), s.heat_cells, s.heat_vertices, s.heat_h_min, s.heat_h_max));

@@ -2,7 +2,9 @@
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
 
+#include "vibrotherm/mesh/box_specimen.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
+#include "vibrotherm/mesh/plex/distribute.hpp"
 #include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
 #include "vibrotherm/mesh/plex/metis_partitioner.hpp"
@@ -28,26 +30,6 @@ PetscErrorCode RegisterMeshLogging(MeshLog* log) {
   PetscCall(PetscLogEventRegister("MeshBuildPlex", id, &log->build));
   PetscCall(PetscLogEventRegister("MeshSplitCracks", id, &log->split));
   PetscCall(PetscLogEventRegister("MeshDistribute", id, &log->distribute));
-  PetscFunctionReturn(0);
-}
-
-/// Distributes dm in place with the partitioner chosen by the options; origin:
-/// each new point's number in the serial mesh (checkpoint keys).
-PetscErrorCode Distribute(DM* dm, const char* name, PointOrigin* origin) {
-  PetscFunctionBeginUser;
-  PetscPartitioner part;
-  PetscCall(DMPlexGetPartitioner(*dm, &part));
-  PetscCall(PetscPartitionerSetFromOptions(part));
-  DM distributed = nullptr;
-  PetscSF migration = nullptr;
-  PetscCall(DMPlexDistribute(*dm, 0, &migration, &distributed));
-  if (distributed) {
-    PetscCall(DMDestroy(dm));
-    *dm = distributed;
-  }
-  PetscCall(OriginFromMigration(*dm, migration, origin));
-  PetscCall(PetscSFDestroy(&migration));
-  PetscCall(PetscObjectSetName((PetscObject)*dm, name));
   PetscFunctionReturn(0);
 }
 
@@ -220,6 +202,11 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(ReadMeshSource(comm, &source));
   SpecimenGeometry geometry;
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  if (geometry.depth > 0.0) {
+    PetscCall(CreateBoxSpecimen(comm, geometry, s));
+    PetscCall(PetscLogStagePop());
+    PetscFunctionReturn(0);
+  }
   MeshData data;
   bool generate_heat = !source.from_file;
   PetscCall(AnnounceMeshing(comm, source, geometry));
@@ -266,8 +253,8 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   if (heat) PetscCall(DMDestroy(&serial));
   s->heat = heat ? heat : serial;
   PetscCall(SetLtsPartitionWeights(s->wave, lts));
-  PetscCall(Distribute(&s->wave, "wave_mesh", &s->wave_origin));
-  PetscCall(Distribute(&s->heat, "heat_mesh", &s->heat_origin));
+  PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
+  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
   const PetscInt ncracks = static_cast<PetscInt>(s->cracks.size());
   PetscCall(s->wave_cracks.Setup(s->wave, ncracks));
@@ -306,7 +293,8 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
   PetscFunctionBeginUser;
   static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
                                       "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
-                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right"};
+                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
+                                      "-edge_front", "-edge_back"};
   std::string given;
   for (const char* name : names) {
     PetscBool set;

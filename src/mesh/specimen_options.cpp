@@ -1,8 +1,10 @@
 // -specimen_*, -crack_*, -mesh_*, -edge_* options → SpecimenGeometry.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "vibrotherm/mesh/box_grid.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
@@ -11,15 +13,18 @@
 namespace vibrotherm::mesh {
 namespace {
 
-PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, Side side, EdgeKind* kind) {
+/// -edge_<name> (a side, front or back). *given: whether the option was given.
+PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const char* name, EdgeKind* kind,
+                            PetscBool* given = nullptr) {
   PetscFunctionBeginUser;
   char option[32];
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-edge_%s", to_string(side)));
+  PetscCall(PetscSNPrintf(option, sizeof(option), "-edge_%s", name));
   std::vector<std::string> names;
   for (EdgeKind k : all_edge_kinds()) names.push_back(to_string(k));
   PetscInt index = static_cast<PetscInt>(std::find(all_edge_kinds().begin(), all_edge_kinds().end(), *kind) -
                                          all_edge_kinds().begin());
-  PetscCall(OptionsChoice(PetscOptionsObject, option, "Mechanical kind of this outer edge", names, &index, nullptr));
+  PetscCall(OptionsChoice(PetscOptionsObject, option,
+                          "Mechanical kind of this outer edge (front, back: faces of a 3D box)", names, &index, given));
   *kind = all_edge_kinds()[index];
   PetscFunctionReturn(0);
 }
@@ -48,19 +53,40 @@ PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeo
   PetscFunctionReturn(0);
 }
 
+/// -specimen_depth, -crack_width, -edge_front, -edge_back. *three_d: the first of
+/// the 3D-only ones given (nullptr: none).
+PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g, std::vector<double>* widths,
+                              const char** three_d) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box (waves only for "
+                             "now); 0 a 2D plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
+  PetscBool given[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width", "3D: crack extent along z [m]", widths, &given[0]));
+  PetscCall(ReadEdgeKind(PetscOptionsObject, "front", &g->depth_edges[0], &given[1]));
+  PetscCall(ReadEdgeKind(PetscOptionsObject, "back", &g->depth_edges[1], &given[2]));
+  const char* names[3] = {"-crack_width", "-edge_front", "-edge_back"};
+  *three_d = nullptr;
+  for (int k = 2; k >= 0; --k)
+    if (given[k]) *three_d = names[k];
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
-  std::vector<double> centers, lengths, angles;
+  std::vector<double> centers, lengths, angles, widths;
+  const char* three_d_given = nullptr;
   PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
   PetscInt cell = g->quads ? 0 : 1;
   PetscOptionsBegin(comm, nullptr, "Generated specimen (used unless -mesh_file)", nullptr);
   PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
   PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
-                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up)", &centers, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length", "Crack lengths [m] (one value applies to all)",
+                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x,y,z of the one crack)",
+                            &centers, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length",
+                            "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
                             &lengths, &has_lengths));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_angle",
                             "Crack angles to the horizontal [deg] (one value applies to all)", &angles, &has_angles));
@@ -71,17 +97,23 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
                              g->grading, &g->grading, nullptr));
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
-    PetscCall(ReadEdgeKind(PetscOptionsObject, side, &g->edges[static_cast<int>(side)]));
+    PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
   PetscCall(ReadSourcePatch(PetscOptionsObject, g));
+  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &three_d_given));
   PetscOptionsEnd();
   g->quads = cell == 0;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry
+  PetscCheck(!(g->depth < 0.0) && std::isfinite(g->depth), comm, PETSC_ERR_USER_INPUT,
+             "-specimen_depth must be >= 0 (0: a 2D specimen), got %g", g->depth);
+  PetscCheck(g->depth > 0.0 || !three_d_given, comm, PETSC_ERR_USER_INPUT,
+             "%s applies to a 3D box only: give -specimen_depth > 0", three_d_given);
 
   const PetscInt ncenters = static_cast<PetscInt>(centers.size()), nlengths = static_cast<PetscInt>(lengths.size()),
                  nangles = static_cast<PetscInt>(angles.size());
-  PetscCheck(ncenters % 2 == 0, comm, PETSC_ERR_USER_INPUT, "-crack_center needs x,y pairs (got %" PetscInt_FMT " values)",
-             ncenters);
-  const PetscInt ncracks = ncenters / 2;
+  const PetscInt dim = g->depth > 0.0 ? 3 : 2;
+  PetscCheck(ncenters % dim == 0, comm, PETSC_ERR_USER_INPUT, "-crack_center needs %s (got %" PetscInt_FMT " values)",
+             dim == 2 ? "x,y pairs" : "x,y,z triples in 3D", ncenters);
+  const PetscInt ncracks = ncenters / dim;
   PetscCheck(ncracks == 0 || has_lengths, comm, PETSC_ERR_USER_INPUT, "-crack_length is required with -crack_center");
   PetscCheck(ncracks > 0 || (!has_lengths && !has_angles), comm, PETSC_ERR_USER_INPUT,
              "-crack_length/-crack_angle given without -crack_center");
@@ -92,13 +124,16 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   g->cracks.clear();
   for (PetscInt i = 0; i < ncracks; ++i) {
     Crack c;
-    c.x = centers[2 * i];
-    c.y = centers[2 * i + 1];
+    c.x = centers[dim * i];
+    c.y = centers[dim * i + 1];
+    if (dim == 3) c.z = centers[dim * i + 2];
+    if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : std::min<std::size_t>(i, widths.size() - 1)];
     c.length = lengths[nlengths == 1 ? 0 : i];
     c.angle_deg = nangles == 0 ? 0.0 : angles[nangles == 1 ? 0 : i];
     g->cracks.push_back(c);
   }
-  VibrothermCallCpp(comm, g->validate());
+  if (dim == 3) VibrothermCallCpp(comm, (void)BoxGrid(*g));
+  else VibrothermCallCpp(comm, g->validate());
   PetscFunctionReturn(0);
 }
 

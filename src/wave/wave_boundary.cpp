@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "vibrotherm/geometry/frame.hpp"
 #include "vibrotherm/geometry/symmetric_eigen.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
@@ -104,19 +105,30 @@ void AddEdgeNode(const KindRule& r, const double n[2], const double s[2], double
   a.sum[o + 1] += w * d[1];
 }
 
-/// 3D: w B at the node with x dof o, B = n nᵀ (normal), I − n nᵀ (tangential) or
-/// the dashpot, and w_sum n.
+/// The direction a tangential source drives on a 3D face of normal n: x projected
+/// onto the face (shear along x on the top and bottom faces), z on a face normal to x.
+geometry::Vec3 SourceTangent(const geometry::Vec3& n) {
+  const geometry::Vec3 axis = std::abs(n[0]) > geometry::kNearlyNormal ? geometry::Vec3{0.0, 0.0, 1.0}
+                                                                       : geometry::Vec3{1.0, 0.0, 0.0};
+  return geometry::Normalized(geometry::Sub(axis, geometry::Scale(geometry::Dot(axis, n), n)));
+}
+
+/// 3D: w B at the node with x dof o, B = n nᵀ (normal), I − n nᵀ (tangential), e eᵀ
+/// (a tangential source along e = SourceTangent(n)) or the dashpot, and w_sum n (w_sum e).
 void AddFaceNode(const KindRule& r, const geometry::Vec3& n, double w, double w_sum, PetscInt o, SumArrays a) {
   constexpr int kRow[3] = {0, 0, 1}, kCol[3] = {1, 2, 2};  // xy, xz, yz
+  const bool along_tangent = r.kind == EdgeKind::Source && r.tangential;
+  const geometry::Vec3 d = along_tangent ? SourceTangent(n) : n;
   const auto entry = [&](int i, int j) {
     const double normal = n[i] * n[j], tangential = (i == j ? 1.0 : 0.0) - normal;
     if (r.kind == EdgeKind::Absorbing) return r.rho * (r.cp * normal + r.cs * tangential);
+    if (along_tangent) return d[i] * d[j];
     return r.tangential ? tangential : normal;
   };
   for (int i = 0; i < 3; ++i) {
     a.diag[o + i] += w * entry(i, i);
     a.off[o + i] += w * entry(kRow[i], kCol[i]);
-    a.sum[o + i] += w_sum * n[i];
+    a.sum[o + i] += w_sum * d[i];
   }
 }
 
@@ -142,9 +154,6 @@ PetscErrorCode AccumulateKind(const fe::LagrangeSpace& space, const mesh::Vertex
   const PetscInt* f;
   SumArrays a;
   PetscCall(ISGetLocalSize(faces, &nf));
-  // In 3D a face has two tangents: which one a tangential source would drive is not defined yet.
-  PetscCheck(D == 2 || rule.kind != EdgeKind::Source || !rule.tangential || nf == 0, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "wave boundary: a tangential source on a face of a 3D mesh is not supported (-source_component normal)");
   PetscCall(ISGetIndices(faces, &f));
   PetscCall(VecGetArray(local->diag, &a.diag));
   PetscCall(VecGetArray(local->off, &a.off));

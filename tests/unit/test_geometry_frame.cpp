@@ -92,5 +92,25 @@ TEST(GeometryFrame3, NormalisesItsInputs) {
   ExpectOrthonormal3(f);
 }
 
+// The 3D crack convention extends 2D's: for a crack plane containing z with strike
+// s = (cos θ, sin θ, 0), θ in (−90°, 90°], n = s turned by +90° about z, t1 = s, t2 = −z.
+TEST(GeometryFrame3, CrackNormalFollowsThe2DConvention) {
+  EXPECT_EQ(OrientedCrackNormal({1.0, 0.0, 0.0}), (Vec3{-1.0, 0.0, 0.0}));
+  EXPECT_EQ(OrientedCrackNormal({-1.0, 0.0, 0.0}), (Vec3{-1.0, 0.0, 0.0}));
+  for (double deg : {-80.0, -30.0, 0.0, 20.0, 45.0, 70.0, 89.0, 90.0}) {
+    const double t = deg * M_PI / 180.0;
+    const Vec3 s{std::cos(t), std::sin(t), 0.0}, n{-std::sin(t), std::cos(t), 0.0};
+    for (double sign : {1.0, -1.0}) {
+      const Frame<3> f = CrackFrame(Scale(sign, n));
+      for (int d = 0; d < 3; ++d) {
+        EXPECT_NEAR(f.normal[d], n[d], 1e-15) << deg << " deg";
+        EXPECT_NEAR(f.tangent[0][d], s[d], 1e-15) << deg << " deg";
+      }
+      EXPECT_NEAR(f.tangent[1][2], -1.0, 1e-15) << deg << " deg";
+      ExpectOrthonormal3(f);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vibrotherm::geometry

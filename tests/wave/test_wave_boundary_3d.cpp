@@ -9,7 +9,8 @@
 //    the edge where two roller faces meet gets two directions (their normals);
 //    an antisymmetry face the two tangents; a fixed face all three;
 //  - a normal source on a face: the displacement prescribes the outward normal
-//    component of every node on it, the traction's load shape is W n;
+//    component of every node on it, the traction's load shape is W n; a
+//    tangential one drives x (z on a face normal to x);
 //  - a plane wave's flux into an absorbing face: a uniform velocity V normal to
 //    it radiates ρ c_p V² per area, along it ρ c_s V² (the dashpots' account).
 #include <array>
@@ -245,15 +246,20 @@ TEST_P(WaveBoundary3d, NormalTractionSourceLoadsWn) {
   VecRestoreArrayRead(boundary_.traction_shape, &shape);
 }
 
-TEST_P(WaveBoundary3d, TangentialSourceIsRefused) {
+TEST_P(WaveBoundary3d, TangentialSourceDrivesXOnTopAndZOnXFaces) {
   excitation_.component = wave::SourceComponent::Tangential;
-  DMCreateLabel(dm_, mesh::to_string(mesh::EdgeKind::Source));
-  DMLabel label;
-  DMGetLabel(dm_, mesh::to_string(mesh::EdgeKind::Source), &label);
-  DMLabelSetValue(label, faces_.front().point, 1);
-  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-  EXPECT_NE(wave::BuildWaveBoundary(space_, material_, excitation_, &boundary_), 0);
-  PetscPopErrorHandler();
+  const auto top = [](const BoxFace& f) { return f.axis == 2 && f.upper; };
+  Build(mesh::EdgeKind::Source, top);
+  EXPECT_EQ(Directions().size(), NodeWeights(top).size());
+  for (const wave::Constraint& c : boundary_.constraints) {  // one direction a node: x
+    EXPECT_TRUE(c.source);
+    EXPECT_NEAR(std::abs(c.d[0]), 1.0, 1e-14) << "node " << c.node;
+  }
+  DMRemoveLabel(dm_, mesh::to_string(mesh::EdgeKind::Source), nullptr);
+  const auto side = [](const BoxFace& f) { return f.axis == 0 && !f.upper; };
+  Build(mesh::EdgeKind::Source, side);
+  for (const wave::Constraint& c : boundary_.constraints)
+    EXPECT_NEAR(std::abs(c.d[2]), 1.0, 1e-14) << "node " << c.node;
 }
 
 TEST_P(WaveBoundary3d, AbsorbingFaceRadiatesThePlaneWaveFlux) {

@@ -29,6 +29,14 @@ Frame<2> FrameFromTangent(const Vec2& tangent);
 /// The 3D frame of a unit normal; t1 along `reference` projected onto the plane.
 Frame<3> FrameFromNormal(const Vec3& normal, const Vec3& reference = {0.0, 0.0, 1.0});
 
+/// A 3D crack's unit normal oriented by the 2D convention extended: n_y > 0, or
+/// n_x < 0 when n ⊥ y (for a crack plane containing z: its strike turned by +90°
+/// about z).
+Vec3 OrientedCrackNormal(const Vec3& normal);
+/// The frame of a crack plane containing z (the 3D box crack): the oriented normal,
+/// t1 its strike (n turned by −90° about z, the 2D tangent), t2 = n × t1 = −z.
+Frame<3> CrackFrame(const Vec3& normal);
+
 /// |r̂ · n| above which a reference direction counts as normal to the plane.
 inline constexpr double kNearlyNormal = 0.99;
 

@@ -8,6 +8,8 @@
 // tributary length w and initial approach a0:
 //   [u] = u⁺ − u⁻,  a = a0 − [u]·n / 2,  b = [u]·s / 2,
 //   (N, T) = law(a, b),  f⁺ = w (N n − T s),  f⁻ = −f⁺.
+// In 3D (contact_cells_3d.hpp) b and T have two components, on s = t1 and s2 = t2,
+// f⁺ = w (N n − T₁ t1 − T₂ t2), and w is the tributary area.
 // The force on the wave solver is a trial at every evaluation; Commit() advances
 // the history once per accepted step and accounts w·ΔW and w·U.
 #pragma once
@@ -30,13 +32,15 @@ namespace vibrotherm::interface {
 
 struct ContactCell {
   PetscInt plus, minus;   ///< + and − points carrying the node (vertices, or the faces' edge nodes)
-  double n[2], s[2];
-  double weight;          ///< tributary length [m]
+  double n[3], s[3];      ///< normal and (first) tangent (third components 0 in 2D)
+  double s2[3];           ///< 3D: the second tangent t2 = n × t1
+  double weight;          ///< tributary length [m] (3D: area [m²])
   double a0;
   double N0;              ///< N(a0): the contact force the pre-stress balances at rest
   PetscInt crack;         ///< crack index
   double xi;              ///< position along the crack, 0..1
   double x, y;            ///< coordinates
+  double z;               ///< 3D
 };
 
 class CrackInterface final : public wave::WaveInterface {
@@ -93,15 +97,20 @@ class CrackInterface final : public wave::WaveInterface {
                             const ApproachProfile& a0);
   PetscErrorCode BuildTransfer(const std::vector<PetscInt>& dofs, Vec lumped_mass);
   void InitialState();
-  /// ± displacements of every cell, [u⁺x u⁺y u⁻x u⁻y] per cell: *U points into
+  /// ± displacements of every cell, [u⁺x u⁺y (u⁺z) u⁻x u⁻y (u⁻z)] per cell: *U points into
   /// u itself (all dofs owned here: no communication) or into u_local_.
   PetscErrorCode GatherBegin(Vec u, const PetscScalar** U);
   PetscErrorCode GatherEnd(Vec u, const PetscScalar** U);
   /// Index of value k of cell i in the array GatherBegin returned.
-  PetscInt Slot(std::size_t i, int k) const { return direct_ ? owned_index_[4 * i + k] : 4 * static_cast<PetscInt>(i) + k; }
-  void Kinematics(std::size_t i, const PetscScalar* U, double* a, double* b) const;
+  PetscInt Slot(std::size_t i, int k) const {
+    return direct_ ? owned_index_[stride() * i + k] : stride() * static_cast<PetscInt>(i) + k;
+  }
+  /// Values a cell gathers: its two nodes' displacements.
+  int stride() const { return 2 * dim_; }
+  void Kinematics(std::size_t i, const PetscScalar* U, double* a, contact::Tangential* b) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;
+  int dim_ = 2;
   std::vector<ContactCell> cells_;
   PetscInt global_cells_ = 0;
   std::unique_ptr<contact::CrackLaw> law_;
@@ -110,8 +119,9 @@ class CrackInterface final : public wave::WaveInterface {
   std::vector<PetscInt> owned_index_;  ///< their positions in the owned block
   std::vector<double> inv_mass_;   ///< 1/m per needed dof
   Vec u_local_ = nullptr, f_local_ = nullptr;
-  std::vector<double> a_, b_, power_, W_;
-  std::vector<PetscInt> cell_dofs_;  ///< [u⁺x u⁺y u⁻x u⁻y] global dof numbers per cell
+  std::vector<double> a_, power_, W_;
+  std::vector<contact::Tangential> b_;
+  std::vector<PetscInt> cell_dofs_;  ///< [u⁺ u⁻] global dof numbers per cell (stride() of them)
   std::vector<double> initial_stored_;  ///< U of each cell in its initial state
   std::vector<contact::StepResult> last_;
   double dissipated_local_ = 0.0;

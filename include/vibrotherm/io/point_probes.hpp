@@ -1,6 +1,7 @@
 // Point probes: a field of a LagrangeSpace evaluated at fixed points, written
 // by rank 0 to probes.csv. Columns: t,probe,x,y,ux,uy,vx,vy,temperature and, for
-// crack probes, a,b,b0,N,T,state,power,W (a column without data is nan). Each
+// crack probes, a,b,b0,N,T,state,power,W (a column without data is nan); on a 3D
+// mesh t,probe,x,y,z,ux,uy,uz,vx,vy,vz,temperature (no crack probes yet). Each
 // point is evaluated by exactly one rank.
 //
 // Rows are held until Flush(): the temperature comes from the heat side
@@ -28,9 +29,14 @@ struct TemperatureSeries {
   double at(std::size_t probe, double time) const;
 };
 
+/// Locates the points xyz (dim() coordinates a point) in space and refuses, naming
+/// -probe_points, one outside the specimen. Collective.
+PetscErrorCode LocateProbePoints(const fe::LagrangeSpace& space, const std::vector<double>& xyz,
+                                 std::vector<fe::LocatedPoint>* located);
+
 class PointProbes {
  public:
-  /// Locates the points (x, y pairs) in space; errors name -probe_points when a
+  /// Locates the points (x, y pairs; x, y, z triples in 3D) in space; errors name -probe_points when a
   /// point lies outside the specimen. Rank 0 opens `path` (written atomically).
   /// resume_bytes >= 0: continue the interrupted run's file (checkpoint restart).
   PetscErrorCode Setup(const fe::LagrangeSpace& space, const std::vector<double>& xy, const std::string& path,
@@ -49,7 +55,8 @@ class PointProbes {
   /// Publishes probes.csv (call once at the end of a successful run).
   PetscErrorCode Finish();
   std::size_t count() const { return points_.size(); }
-  const std::vector<std::array<double, 2>>& points() const { return points_; }
+  /// The points (z = 0 in 2D).
+  const std::vector<std::array<double, 3>>& points() const { return points_; }
 
  private:
   struct Row {
@@ -58,9 +65,11 @@ class PointProbes {
     double x, y, ux, uy, vx, vy;
     bool crack;
     interface::CrackCellRecord c;
+    double z, uz, vz;  ///< 3D
   };
   const fe::LagrangeSpace* space_ = nullptr;
-  std::vector<std::array<double, 2>> points_;
+  int dim_ = 2;
+  std::vector<std::array<double, 3>> points_;
   std::vector<fe::LocatedPoint> probes_;
   std::vector<Row> pending_;           ///< rank 0
   std::unique_ptr<store::AtomicFile> file_;  ///< rank 0

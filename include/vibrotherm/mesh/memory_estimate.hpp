@@ -5,6 +5,7 @@
 // dofs per cell of the Lagrange degree; bytes per cell and per dof calibrated
 // on the paper scene (mesh and topology ~2 kB/cell, matrix and vectors
 // ~10 B per nonzero + 30 vectors). A rough estimate: within a factor 2–3.
+// A 3D box (-specimen_depth): its grid's cells exactly, no heat mesh.
 #pragma once
 
 #include "vibrotherm/mesh/scene_geometry.hpp"

@@ -14,12 +14,14 @@ struct CrackSummary {
   std::string name;
   PetscInt facets = 0;       ///< cohesive cells
   PetscInt node_pairs = 0;   ///< split vertex pairs (the contact cells)
-  PetscInt tips = 0;         ///< buried ends (vertices not split)
-  double length = 0.0;       ///< Σ facet lengths [m]
+  PetscInt tips = 0;         ///< buried ends (vertices not split; 3D: the front's vertices)
+  double length = 0.0;       ///< Σ facet lengths [m] (2D)
+  double area = 0.0;         ///< Σ facet areas [m²] (3D)
   double requested_length = 0.0;
 };
 
 struct MeshSummary {
+  int dimension = 2;
   std::string source, cell_type;
   int ranks = 1;
   PetscInt cells = 0;           ///< bulk cells of the wave mesh

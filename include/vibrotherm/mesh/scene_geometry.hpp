@@ -1,6 +1,8 @@
 // The specimen as the user describes it: a rectangle [0, W] × [0, H] (origin at
 // the bottom-left corner, y up) with straight cracks, mesh sizes and the kind
-// of each outer edge. Plain data with validation that names the option.
+// of each outer edge; with a depth D > 0 the box [0, W] × [0, H] × [0, D] (z
+// toward the viewer) with one buried rectangular crack (box_grid.hpp). Plain
+// data with validation that names the option.
 #pragma once
 
 #include <array>
@@ -27,6 +29,7 @@ struct Crack {
   double x = 0.0, y = 0.0;  ///< centre [m]
   double length = 0.0;      ///< [m]
   double angle_deg = 0.0;   ///< to the horizontal, counter-clockwise
+  double z = 0.0, width = 0.0;  ///< 3D: centre's z and extent along z [m]
   /// End points: centre ∓ (L/2)(cos θ, sin θ); tangent s from end 0 to end 1.
   std::array<double, 2> end(int which) const;
 };
@@ -55,6 +58,9 @@ struct SpecimenGeometry {
   bool quads = true;              ///< -mesh_cell quad|tri
   std::array<EdgeKind, 4> edges = {EdgeKind::Absorbing, EdgeKind::Absorbing, EdgeKind::Source,
                                    EdgeKind::Absorbing};  ///< by Side
+  double depth = 0.0;             ///< -specimen_depth: > 0 makes the specimen a 3D box
+  /// -edge_front (z = D), -edge_back (z = 0) of a 3D box
+  std::array<EdgeKind, 2> depth_edges = {EdgeKind::Absorbing, EdgeKind::Absorbing};
   SourcePatch patch;              ///< -source_patch_edge, -source_patch_center, -source_patch_width
   /// The patch's end points (x, y) on its edge.
   std::array<std::array<double, 2>, 2> patch_ends() const;

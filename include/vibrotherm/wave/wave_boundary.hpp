@@ -4,7 +4,7 @@
 //              Σ_faces w ρ (c_p n nᵀ + c_s (I − n nᵀ))  (w = ∫φ dA; 2D: c_s s sᵀ)
 //   source     the prescribed component (displacement source) or the load
 //              shape ∫φ d ds (traction source), d = tangent or outward normal
-//              (3D: the normal component only; a tangential one is refused)
+//              (3D tangential: x projected onto the face, z on a face normal to x)
 //   roller     zero normal displacement (symmetry plane);  antisymmetric  zero
 //              tangential displacement (antisymmetry plane);  fixed  zero displacement
 // A node where faces of one kind meet at an angle gets one constrained

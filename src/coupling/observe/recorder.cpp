@@ -25,7 +25,8 @@ PetscErrorCode Recorder::Open(const RecordingOptions& options, const std::string
   PetscCall(energy_.Open(comm, dir + "/energy.csv", static_cast<long long>(bytes[1])));
   for (std::size_t p = 0; p < probes_.count(); ++p)
     summary->probe_labels[static_cast<int>(p)] =
-        "point (" + std::to_string(probes_.points()[p][0]) + ", " + std::to_string(probes_.points()[p][1]) + ")";
+        "point (" + std::to_string(probes_.points()[p][0]) + ", " + std::to_string(probes_.points()[p][1]) +
+        (probe_space.dim() == 3 ? ", " + std::to_string(probes_.points()[p][2]) : std::string()) + ")";
   for (std::size_t p = 0; p < options.crack_probes.size(); ++p)
     summary->probe_labels[static_cast<int>(probes_.count() + p)] =
         "crack " + std::to_string(options.crack_probe_crack) + " at xi = " + std::to_string(options.crack_probes[p]);

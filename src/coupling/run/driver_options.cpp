@@ -16,8 +16,9 @@ namespace {
 PetscErrorCode CheckDriverOptions(MPI_Comm comm, PetscBool final_set, PetscBool couple_set, DriverOptions* o) {
   PetscFunctionBeginUser;
   // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
-  PetscCheck(o->probe_points.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-             "-probe_points needs x,y pairs, got %zu numbers", o->probe_points.size());
+  PetscCheck(o->probe_points.size() % o->dimension == 0, comm, PETSC_ERR_USER_INPUT,
+             "-probe_points needs %s, got %zu numbers", o->dimension == 2 ? "x,y pairs" : "x,y,z triples in 3D",
+             o->probe_points.size());
   for (double s : o->crack_probes)
     PetscCheck(s >= 0.0 && s <= 1.0, comm, PETSC_ERR_USER_INPUT, "-crack_probe: fractions must be in [0, 1], got %g", s);
   std::sort(o->output_times.begin(), o->output_times.end());

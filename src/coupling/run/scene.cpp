@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/run/scene_dimension.hpp"
 #include "vibrotherm/interface/contact_options.hpp"
 
 namespace vibrotherm::coupling {
@@ -79,6 +80,7 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
 
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
+  PetscCall(ReadSceneDimension(&s->run.dimension));
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
@@ -91,6 +93,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadCameraOptions(comm, &s->camera));
   PetscCall(ReadPeriodicOptions(comm, &s->periodic));
   PetscCall(CheckScene(comm, *s));
+  PetscCall(RestrictToDimension(comm, s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
   PetscCall(QuantizeForPeriodicity(comm, s));

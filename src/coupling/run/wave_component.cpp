@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/timed_stage.hpp"
 
@@ -10,18 +11,10 @@ namespace vibrotherm::coupling {
 namespace {
 
 /// Probe points are input too: all inside the specimen before anything is written.
-PetscErrorCode CheckProbePoints(const fe::LagrangeSpace& space, const std::vector<double>& xy) {
+PetscErrorCode CheckProbePoints(const fe::LagrangeSpace& space, const std::vector<double>& xyz) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)space.dm());
-  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
-    PetscInt cell;
-    std::array<double, 2> ref;
-    PetscCall(space.Locate(xy[i], xy[i + 1], &cell, &ref));
-    PetscInt found = cell >= 0, anywhere;
-    PetscCallMPI(MPI_Allreduce(&found, &anywhere, 1, MPIU_INT, MPI_MAX, comm));
-    PetscCheck(anywhere, comm, PETSC_ERR_USER_INPUT, "-probe_points: point %zu (%g, %g) lies outside the specimen",
-               i / 2 + 1, xy[i], xy[i + 1]);
-  }
+  std::vector<fe::LocatedPoint> located;
+  PetscCall(io::LocateProbePoints(space, xyz, &located));
   PetscFunctionReturn(0);
 }
 

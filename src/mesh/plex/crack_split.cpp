@@ -4,6 +4,7 @@
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 
 #include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/geometry/frame.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::mesh {
@@ -57,6 +58,34 @@ PetscErrorCode CheckCohesiveCount(DM split, PetscInt crack_faces) {
   PetscCheck(cohesive == crack_faces, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "crack split: %" PetscInt_FMT " cohesive cells for %" PetscInt_FMT " crack faces (the crack grew)",
              cohesive, crack_faces);
+  PetscFunctionReturn(0);
+}
+
+/// 3D: labels crack_plus the face of each cohesive cell whose bulk neighbour lies
+/// along the oriented normal, on the serial split mesh (both neighbours there):
+/// the side survives distribution, where a cohesive cell may lose both neighbours.
+PetscErrorCode LabelPlusFaces(DM split) {
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateLabel(split, labels::crack_plus));
+  VertexPositions<3> x;
+  PetscCall(x.Setup(split));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(split, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    PetscCall(IsCohesiveCell(split, c, &cohesive));
+    if (!cohesive) continue;
+    const PetscInt *cone, *support;
+    PetscCall(DMPlexGetCone(split, c, &cone));
+    PetscCall(DMPlexGetSupport(split, cone[0], &support));
+    PetscReal area, centre[3], normal[3];
+    PetscCall(DMPlexComputeCellGeometryFVM(split, cone[0], &area, centre, normal));
+    geometry::Vec3 bulk;
+    PetscCall(CellCentroid(split, x, support[0] == c ? support[1] : support[0], &bulk));
+    const geometry::Vec3 n = geometry::OrientedCrackNormal({normal[0], normal[1], normal[2]});
+    const bool along = geometry::Dot(geometry::Sub(bulk, {centre[0], centre[1], centre[2]}), n) > 0.0;
+    PetscCall(DMSetLabelValue(split, labels::crack_plus, cone[along ? 0 : 1], 1));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -124,6 +153,7 @@ PetscErrorCode SplitCracks(DM dm, DM* split) {
   PetscCall(DMPlexLabelCohesiveComplete(dm, cohesive, tips_or_dummy, 1, PETSC_FALSE, crack_mesh));
   PetscCall(DMPlexConstructCohesiveCells(dm, cohesive, nullptr, split));
   PetscCall(CheckCohesiveCount(*split, nfaces));
+  if (dim == 3) PetscCall(LabelPlusFaces(*split));
   PetscCall(PetscObjectSetName((PetscObject)*split, "specimen"));
 
   PetscCall(DMLabelDestroy(&cohesive));

@@ -18,6 +18,7 @@ enum class ThermoelasticChoice { Off, OneWay, TwoWay };
 
 /// The run's options; the recording ones are the base the recorder reads.
 struct DriverOptions : RecordingOptions {
+  int dimension = 2;                  ///< 3 for a 3D box (-specimen_depth > 0; set before the options are read)
   PhysicsChoice physics = PhysicsChoice::All;
   HeatChoice heat = HeatChoice::Auto;  ///< auto: only when the crack can dissipate
   ThermoelasticChoice thermoelastic = ThermoelasticChoice::Off;  ///< -thermoelastic off|one_way|two_way

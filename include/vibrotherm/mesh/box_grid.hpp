@@ -1,0 +1,66 @@
+// The structured hexahedral grid of a 3D box specimen with one buried planar
+// rectangular crack (plain C++, no PETSc): the node positions along each axis and
+// the smooth shear that tilts one grid plane into the crack plane.
+//
+// The crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
+// -crack_angle), width Wc along z, normal in the x–y plane. A grid plane through
+// the centre, normal to the axis p (y when |θ| ≤ 45°, else x), is sheared along p:
+//   x_p' = x_p + (x_q − c_q) · m · β(x_p),   q the other in-plane axis,
+// m = tan θ (p = y) or cot θ (p = x), β = cos²(π/2 · (x_p − c_p)/d) with d the
+// distance from c_p to the box face on that side (β = 1 on the plane, 0 on the two
+// faces normal to p: the box stays a box, and every outer face stays in its plane).
+// The sheared plane is exactly the crack plane; the crack is its rectangle
+// |x_q − c_q| ≤ L|cos θ|/2 (p = y; L|sin θ|/2 for p = x), |z − c_z| ≤ Wc/2, whose
+// edges are grid lines. Sizes: -mesh_h_crack on the crack and across its plane,
+// growing by -mesh_grading per metre of distance up to -mesh_h.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "vibrotherm/mesh/scene_geometry.hpp"
+
+namespace vibrotherm::mesh {
+
+class BoxGrid {
+ public:
+  /// Checks the 3D specimen (throws std::invalid_argument naming the option: one
+  /// crack, buried, resolved by 2 cells along each extent, a shear that does not
+  /// fold the mesh) and builds the node positions along each axis.
+  explicit BoxGrid(const SpecimenGeometry& geometry);
+
+  /// Cells along axis a.
+  int cells(int axis) const { return static_cast<int>(nodes_[axis].size()) - 1; }
+  long total_cells() const { return long(cells(0)) * cells(1) * cells(2); }
+  /// The position of grid node (i, j, k) (integer indices), sheared.
+  std::array<double, 3> position(const std::array<double, 3>& index) const;
+  /// Whether the face with index-space centroid f (one half-integer coordinate
+  /// less than a cell) lies on the crack.
+  bool on_crack(const std::array<double, 3>& f) const;
+  /// The crack's facets and its cells along strike and z.
+  int crack_cells(int along) const { return along == 0 ? crack_hi_[q_] - crack_lo_[q_] : crack_hi_[2] - crack_lo_[2]; }
+  /// The unit normal of the crack plane (p = y: (−sin θ, cos θ, 0) up to sign).
+  std::array<double, 3> normal() const { return normal_; }
+  /// Smallest and largest grid spacing before the shear [m].
+  double h_min() const;
+  double h_max() const;
+
+ private:
+  void validate(const SpecimenGeometry& g) const;
+  double blend(double xp) const;
+
+  std::array<std::vector<double>, 3> nodes_;
+  std::array<int, 3> crack_lo_{}, crack_hi_{};  ///< node indices of the crack's ends (p: its plane twice)
+  int p_ = 1, q_ = 0;
+  double slope_ = 0.0;
+  std::array<double, 3> centre_{}, extent_{}, size_{}, normal_{};
+};
+
+/// The 1D nodes of [0, length] with the crack's segment [b_lo, b_hi] in `cells`
+/// uniform cells (cells = 0: b_lo = b_hi, a plane whose neighbours get h0), and
+/// outside a spacing that starts at the segment's and grows by `grading` per metre
+/// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi.
+std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
+                               int* lo, int* hi);
+
+}  // namespace vibrotherm::mesh

@@ -1,0 +1,71 @@
+#include "vibrotherm/coupling/run/scene_dimension.hpp"
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+namespace vibrotherm::coupling {
+namespace {
+
+/// The first of these options given on the command line or in a file (nullptr: none).
+PetscErrorCode FirstGiven(std::initializer_list<const char*> names, const char** given) {
+  PetscFunctionBeginUser;
+  *given = nullptr;
+  for (const char* name : names) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    if (set && !*given) *given = name;
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ReadSceneDimension(int* dimension) {
+  PetscFunctionBeginUser;
+  PetscReal depth = 0.0;
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-specimen_depth", &depth, nullptr));
+  *dimension = depth > 0.0 ? 3 : 2;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
+  PetscFunctionBeginUser;
+  if (s->run.dimension != 3) PetscFunctionReturn(0);
+  const char* given = nullptr;
+  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-restart", "-output_times", "-crack_probe",
+                        "-crack_probe_crack", "-crack_state_every", "-source_patch_edge", "-heat_crack_power"},
+                       &given));
+  PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
+             "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", given);
+  const std::pair<bool, const char*> refused[] = {{s->run.heat == HeatChoice::On, "-heat on"},
+                                                  {s->run.physics == PhysicsChoice::Heat, "-physics heat"},
+                                                  {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
+                                                  {s->camera.on, "-camera"},
+                                                  {s->periodic.choice == PeriodicChoice::On, "-periodic on"},
+                                                  {s->wave.lts.on, "-wave_lts on"},
+                                                  {s->wave.harmonic_start, "-wave_start harmonic"},
+                                                  {s->material.damping_heat, "-material_damping_heat"}};
+  for (const auto& [refuse, option] : refused)
+    PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
+               "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", option);
+  char type[64] = "velocityverlet", cell[16] = "quad";
+  PetscInt refine = 0;
+  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mesh_cell", cell, sizeof(cell), nullptr));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-dm_refine", &refine, nullptr));
+  PetscCheck(std::string(type) != "alpha2", comm, PETSC_ERR_USER_INPUT,
+             "-wave_ts_type alpha2 is not supported in 3D yet (explicit steppers only)");
+  PetscCheck(std::string(cell) == "quad", comm, PETSC_ERR_USER_INPUT,
+             "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell);
+  PetscCheck(refine == 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine is not supported in 3D yet: refine with -mesh_h");
+  s->run.heat = HeatChoice::Off;
+  s->run.crack_state_every = 0;
+  s->periodic.on = false;
+  PetscCall(PetscPrintf(comm,
+                        "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera, "
+                        "field output or crack_state.csv yet)\n"));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vibrotherm::coupling

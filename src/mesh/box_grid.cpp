@@ -1,0 +1,142 @@
+#include "vibrotherm/mesh/box_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace vibrotherm::mesh {
+namespace {
+
+/// Throws std::invalid_argument with the parts streamed one after the other.
+template <class... Parts>
+[[noreturn]] void reject(const Parts&... parts) {
+  std::ostringstream msg;
+  (msg << ... << parts);
+  throw std::invalid_argument(msg.str());
+}
+
+/// The steps from a breakpoint over `distance`: sizes h0 + grading·d, at most h,
+/// scaled to end exactly there (at least one step).
+std::vector<double> GradedSteps(double distance, double h0, double h, double grading) {
+  std::vector<double> steps;
+  double d = 0.0;
+  while (d < distance) {
+    const double step = std::min(h, h0 + grading * d);
+    if (d + 0.5 * step > distance && !steps.empty()) break;  // the nearer end: stop short and stretch
+    steps.push_back(step);
+    d += step;
+  }
+  if (steps.empty()) steps.push_back(distance);
+  for (double& s : steps) s *= distance / d;
+  return steps;
+}
+
+/// The number of cells of size about h across `extent` (at least 1).
+int CellsAcross(double extent, double h) { return std::max(1, static_cast<int>(std::lround(extent / h))); }
+
+}  // namespace
+
+std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
+                               int* lo, int* hi) {
+  const double start = cells > 0 ? (b_hi - b_lo) / cells : h0;
+  const std::vector<double> below = GradedSteps(b_lo, start, h, grading),
+                            above = GradedSteps(length - b_hi, start, h, grading);
+  std::vector<double> nodes = {0.0};
+  for (auto it = below.rbegin(); it != below.rend(); ++it) nodes.push_back(nodes.back() + *it);
+  nodes.back() = b_lo;
+  *lo = static_cast<int>(nodes.size()) - 1;
+  for (int k = 1; k <= cells; ++k) nodes.push_back(k == cells ? b_hi : b_lo + k * start);
+  *hi = static_cast<int>(nodes.size()) - 1;
+  for (double step : above) nodes.push_back(nodes.back() + step);
+  nodes.back() = length;
+  return nodes;
+}
+
+BoxGrid::BoxGrid(const SpecimenGeometry& g) {
+  validate(g);
+  const Crack& c = g.cracks.front();
+  const double theta = c.angle_deg * M_PI / 180.0;
+  const bool steep = std::abs(std::cos(theta)) < std::sqrt(0.5) - 1e-12;
+  p_ = steep ? 0 : 1;
+  q_ = 1 - p_;
+  slope_ = steep ? std::cos(theta) / std::sin(theta) : std::tan(theta);
+  size_ = {g.width, g.height, g.depth};
+  centre_ = {c.x, c.y, c.z};
+  extent_[q_] = c.length * std::abs(steep ? std::sin(theta) : std::cos(theta));
+  extent_[p_] = 0.0;
+  extent_[2] = c.width;
+  normal_ = {-std::sin(theta), std::cos(theta), 0.0};
+  std::array<int, 3> along{};
+  along[q_] = CellsAcross(c.length, g.h_crack);
+  along[2] = CellsAcross(c.width, g.h_crack);
+  for (int a = 0; a < 3; ++a)
+    nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a], g.h_crack,
+                           g.h, g.grading, &crack_lo_[a], &crack_hi_[a]);
+}
+
+void BoxGrid::validate(const SpecimenGeometry& g) const {
+  if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
+  if (g.cracks.size() != 1)
+    reject("-crack_center: a 3D specimen holds exactly one crack for now (x,y,z of its centre), got ", g.cracks.size());
+  g.validate();  // sizes, and the crack's trace in the x-y plane
+  const Crack& c = g.cracks.front();
+  if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width);
+  const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
+  const auto e0 = c.end(0), e1 = c.end(1);
+  const bool buried = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
+                      std::max(e0[1], e1[1]) < g.height - tol && c.z - 0.5 * c.width > tol &&
+                      c.z + 0.5 * c.width < g.depth - tol;
+  if (!buried)
+    reject("-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must ",
+           "be buried for now; z extent [", c.z - 0.5 * c.width, ", ", c.z + 0.5 * c.width, "] of [0, ", g.depth, "])");
+  if (CellsAcross(c.length, g.h_crack) < 2)
+    reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
+  if (CellsAcross(c.width, g.h_crack) < 2)
+    reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
+  // The shear x_p' = x_p + (x_q − c_q) m β(x_p) must not fold: |x_q − c_q| |m| max|β'| ≤ 3/4.
+  const double theta = c.angle_deg * M_PI / 180.0;
+  const bool steep = std::abs(std::cos(theta)) < std::sqrt(0.5) - 1e-12;
+  const double m = std::abs(steep ? std::cos(theta) / std::sin(theta) : std::tan(theta));
+  const double cp = steep ? c.x : c.y, cq = steep ? c.y : c.x;
+  const double Lp = steep ? g.width : g.height, Lq = steep ? g.height : g.width;
+  const double reach = std::max(cq, Lq - cq) * m * 0.5 * M_PI / std::min(cp, Lp - cp);
+  if (reach > 0.75)
+    reject("-crack_angle ", c.angle_deg, ": the 3D grid cannot be sheared into this crack plane without folding (the ",
+           "crack centre lies ", std::min(cp, Lp - cp), " m from the faces normal to ", steep ? "x" : "y",
+           "): a smaller inclination, or the crack farther from those faces");
+}
+
+double BoxGrid::blend(double xp) const {
+  const double d = xp < centre_[p_] ? centre_[p_] : size_[p_] - centre_[p_];
+  const double c = std::cos(0.5 * M_PI * (xp - centre_[p_]) / d);
+  return c * c;
+}
+
+std::array<double, 3> BoxGrid::position(const std::array<double, 3>& index) const {
+  std::array<double, 3> x;
+  for (int a = 0; a < 3; ++a) x[a] = nodes_[a][static_cast<std::size_t>(std::lround(index[a]))];
+  x[p_] += (x[q_] - centre_[q_]) * slope_ * blend(x[p_]);
+  return x;
+}
+
+bool BoxGrid::on_crack(const std::array<double, 3>& f) const {
+  const auto inside = [&](int a) { return f[a] > crack_lo_[a] && f[a] < crack_hi_[a]; };
+  return std::abs(f[p_] - crack_lo_[p_]) < 1e-9 && inside(q_) && inside(2);
+}
+
+double BoxGrid::h_min() const {
+  double h = INFINITY;
+  for (const auto& axis : nodes_)
+    for (std::size_t k = 1; k < axis.size(); ++k) h = std::min(h, axis[k] - axis[k - 1]);
+  return h;
+}
+
+double BoxGrid::h_max() const {
+  double h = 0.0;
+  for (const auto& axis : nodes_)
+    for (std::size_t k = 1; k < axis.size(); ++k) h = std::max(h, axis[k] - axis[k - 1]);
+  return h;
+}
+
+}  // namespace vibrotherm::mesh

@@ -1,0 +1,119 @@
+// Requirement (issue 26, first 3D scene): the 3D box specimen's mesh (box_grid,
+// box_mesher). For an inclined crack sheared into a horizontal grid plane (20°) and
+// into a vertical one (70°):
+//  - the hexahedra fill the box: positive volumes summing to W·H·D;
+//  - every outer face lies on its side of the box and carries its kind;
+//  - the crack's faces (-crack_length and -crack_width over -mesh_h_crack of them)
+//    lie in the crack plane through its centre, with its normal, and their areas
+//    sum to length × width;
+//  - the split adds exactly one cohesive cell per crack face.
+// Bad geometry is refused naming the option.
+#include <gtest/gtest.h>
+#include <petscdmplex.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "vibrotherm/mesh/box_grid.hpp"
+#include "vibrotherm/mesh/box_mesher.hpp"
+#include "vibrotherm/mesh/plex/crack_split.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
+
+namespace vibrotherm::testing {
+namespace {
+
+mesh::SpecimenGeometry Block(double angle) {
+  mesh::SpecimenGeometry g;
+  g.width = 0.02, g.height = 0.02, g.depth = 0.01;
+  g.h = 0.002, g.h_crack = 0.001;
+  g.edges[static_cast<int>(mesh::Side::Top)] = mesh::EdgeKind::Source;
+  g.depth_edges = {mesh::EdgeKind::Free, mesh::EdgeKind::Roller};
+  mesh::Crack c;
+  c.x = 0.01, c.y = 0.01, c.z = 0.005, c.length = 0.006, c.width = 0.004, c.angle_deg = angle;
+  g.cracks = {c};
+  return g;
+}
+
+class BoxSpecimen : public ::testing::TestWithParam<double> {};
+
+TEST_P(BoxSpecimen, FillsTheBoxAndLabelsThePlanarCrack) {
+  const mesh::SpecimenGeometry g = Block(GetParam());
+  const mesh::BoxGrid grid(g);
+  DM dm;
+  PetscInt crack_faces;
+  ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, grid, &dm, &crack_faces), 0);
+  EXPECT_EQ(crack_faces, 6 * 4);
+  PetscInt cStart, cEnd, fStart, fEnd;
+  DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd);
+  double volume = 0.0, smallest = INFINITY;
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscReal v, centre[3];
+    DMPlexComputeCellGeometryFVM(dm, c, &v, centre, nullptr);
+    volume += v, smallest = std::min(smallest, v);
+  }
+  EXPECT_GT(smallest, 0.0);
+  EXPECT_NEAR(volume, g.width * g.height * g.depth, 1e-12 * volume);
+  const double t = GetParam() * M_PI / 180.0, n[3] = {-std::sin(t), std::cos(t), 0.0};
+  const double size[3] = {g.width, g.height, g.depth};
+  DMLabel crack, side;
+  DMGetLabel(dm, mesh::labels::crack, &crack);
+  DMGetLabel(dm, mesh::labels::side, &side);
+  mesh::FacetRange(dm, &fStart, &fEnd);
+  double area = 0.0;
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscReal a, c[3], normal[3];
+    PetscInt on_crack, s;
+    DMPlexComputeCellGeometryFVM(dm, f, &a, c, normal);
+    DMLabelGetValue(crack, f, &on_crack);
+    DMLabelGetValue(side, f, &s);
+    if (on_crack == 1) {
+      area += a;
+      EXPECT_NEAR((c[0] - 0.01) * n[0] + (c[1] - 0.01) * n[1], 0.0, 1e-12) << "face " << f << " off the plane";
+      EXPECT_NEAR(std::abs(normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2]), 1.0, 1e-12);
+    }
+    if (s < 0) continue;
+    const int axis[6] = {1, 0, 1, 0, 2, 2};
+    const bool upper[6] = {false, true, true, false, true, false};
+    EXPECT_NEAR(c[axis[s]], upper[s] ? size[axis[s]] : 0.0, 1e-12) << "outer face " << f << " side " << s;
+  }
+  EXPECT_NEAR(area, 0.006 * 0.004, 1e-15);
+  for (const char* kind : {"source", "free", "roller", "absorbing"}) {
+    PetscInt count = 0;
+    DMGetStratumSize(dm, kind, 1, &count);
+    EXPECT_GT(count, 0) << kind;
+  }
+  DM split;
+  ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);  // checks one cohesive cell per crack face
+  DMDestroy(&split);
+  DMDestroy(&dm);
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, BoxSpecimen, ::testing::Values(20.0, 70.0));
+
+TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
+  const auto message = [](mesh::SpecimenGeometry g) -> std::string {
+    try {
+      mesh::BoxGrid grid(g);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  mesh::SpecimenGeometry g = Block(20.0);
+  g.cracks[0].z = 0.0085;  // reaches z = 0.0105 > depth
+  EXPECT_NE(message(g).find("-crack_width"), std::string::npos) << message(g);
+  g = Block(20.0);
+  g.cracks[0].width = 0.0012;  // one cell of -mesh_h_crack
+  EXPECT_NE(message(g).find("-crack_width"), std::string::npos) << message(g);
+  g = Block(20.0);
+  g.cracks.push_back(g.cracks[0]);
+  EXPECT_NE(message(g).find("one crack"), std::string::npos) << message(g);
+  g = Block(60.0);
+  g.cracks[0].y = 0.004;
+  EXPECT_NE(message(g).find("-crack_angle"), std::string::npos) << message(g);
+}
+
+}  // namespace
+}  // namespace vibrotherm::testing

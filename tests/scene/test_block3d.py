@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+"""Requirement (issue 26, first 3D scene): vibrotherm runs options/block3d_small.opts, a
+3D box (-specimen_depth) of Q2 hexahedra with one buried inclined rectangular crack:
+ - the split adds exactly one cohesive cell per crack face (6 x 4 faces: -crack_length
+   and -crack_width over -mesh_h_crack), printed by the run and in summary.json, with
+   "dimension": 3; a contact cell per split node pair of the Q2 crack faces (interior
+   vertices, edge and face nodes; the front is not split);
+ - the energy budget closes (summary max_budget_error, and every row once the source
+   has done a tenth of its work, below 1e-5) and the pre-closed crack dissipates;
+ - probes.csv has 3 coordinates and 3 components per probe;
+ - 2 ranks equal serial (partitioned so that the crack straddles the ranks):
+   energy.csv within 1e-10 of each column's largest value, probes within 1e-10 of
+   each component's amplitude, the same rows;
+ - bad input is refused in one line naming the option (exit 2, nothing written): a
+   crack reaching outside, a crack under 2 cells along an extent, what 3D cannot do
+   yet (heat, field output), the 3D-only options on a 2D specimen.
+
+usage: test_block3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
+import csv, json, os, subprocess, sys, tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks, one_line_error
+
+exe, src, mpiexec = sys.argv[1:4]
+check = Checks("block3d")
+opts = ["-options_file", os.path.join(src, "options/block3d_small.opts")]
+FACES = 6 * 4  # crack faces: 6 mm / 1 mm along the strike, 4 mm / 1 mm along z
+CELLS = 5 * 3 + (6 * 3 + 5 * 4) + FACES  # Q2: interior vertices, interior edges, faces
+
+
+def columns(rows, names):
+    return {k: [float(r[k]) for r in rows] for k in names}
+
+
+def agree(label, a, b, names):
+    """Each column of b equals a's within 1e-10 of a's largest magnitude."""
+    check(len(a) == len(b), "%s: %d rows vs %d" % (label, len(a), len(b)))
+    ca, cb = columns(a, names), columns(b, names)
+    for k in names:
+        scale = max(abs(v) for v in ca[k]) or 1.0
+        worst = max(abs(x - y) for x, y in zip(ca[k], cb[k]))
+        check(worst <= 1e-10 * scale, "%s %s: 2 ranks differ by %.3g of %.3g" % (label, k, worst, scale))
+
+
+runs = {}
+with tempfile.TemporaryDirectory() as tmp:
+    for ranks in (1, 2):
+        out = os.path.join(tmp, "np%d" % ranks)
+        # 2 ranks: the simple partitioner cuts the crack, and some cohesive cells lose both bulk
+        # neighbours to the other rank (their + side comes from the serial split's crack_plus label).
+        parallel = [mpiexec, "-n", "2", "--oversubscribe"] if ranks > 1 else []
+        extra = ["-petscpartitioner_type", "simple"] if ranks > 1 else []
+        cmd = parallel + [exe] + opts + extra + ["-output_dir", out]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr[-2000:]))
+        if r.returncode:
+            continue
+        check("%d faces (= cohesive cells)" % FACES in r.stdout, "the run prints the crack's faces and cohesive cells")
+        check("waves and crack contact only" in r.stdout, "the run says a 3D run is waves-only")
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
+        probes = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+        runs[ranks] = (energy, probes)
+        mesh = summary["mesh"]
+        check(summary.get("dimension") == 3, "summary dimension %s" % summary.get("dimension"))
+        check(mesh["cohesive_cells"] == FACES and mesh["cracks"][0]["facets"] == FACES,
+              "cohesive cells %s, crack faces %s, expected %d" % (mesh["cohesive_cells"], mesh["cracks"][0]["facets"],
+                                                                   FACES))
+        check(abs(mesh["cracks"][0]["area"] - 0.006 * 0.004) < 1e-12, "crack area %s" % mesh["cracks"][0]["area"])
+        check(summary["contact_cells"] == CELLS, "contact cells %s, expected %d" % (summary["contact_cells"], CELLS))
+        check(summary["physics_ran"] == ["wave", "contact"], "physics_ran %s" % summary["physics_ran"])
+        check(summary["max_budget_error"] < 1e-5, "budget error %s" % summary["max_budget_error"])
+        # budget_error divides by the work done so far: ill-conditioned while it is small.
+        work = float(energy[-1]["work_source"])
+        late = [abs(float(e["budget_error"])) for e in energy if float(e["work_source"]) > 0.1 * work]
+        check(late and max(late) < 1e-5, "budget error after the start %s" % (max(late) if late else None))
+        check(float(energy[-1]["work_source"]) > 0 and summary["dissipated_energy"] > 0,
+              "the source did work and the crack dissipated (%s)" % summary["dissipated_energy"])
+        check(list(probes[0].keys())[:12] == "t,probe,x,y,z,ux,uy,uz,vx,vy,vz,temperature".split(","),
+              "probes.csv header %s" % list(probes[0].keys()))
+        check(max(abs(float(p["uz"])) for p in probes) > 0, "the probes move along z")
+        for name in ("mesh.h5", "fields.h5", "crack_state.csv"):
+            check(not os.path.exists(os.path.join(out, name)), name + " not written in 3D")
+
+if 1 in runs and 2 in runs:
+    names = [k for k in runs[1][0][0] if k not in ("budget_error",)]
+    agree("energy.csv", runs[1][0], runs[2][0], names)
+    agree("probes.csv", runs[1][1], runs[2][1], ["t", "ux", "uy", "uz", "vx", "vy", "vz"])
+
+bad = [
+    (["-crack_center", "0.01,0.01,0.009"], "-crack_width"),            # reaches z = 0.011 > depth
+    (["-crack_width", "0.0012"], "-crack_width"),                       # one cell of -mesh_h_crack along z
+    (["-crack_center", "0.01,0.01"], "-crack_center"),                  # 3 values a crack in 3D
+    (["-heat", "on"], "-heat"),
+    (["-output_times", "1e-5"], "-output_times"),
+    (["-camera"], "-camera"),
+    (["-specimen_depth", "0", "-crack_center", "0.01,0.01"], "-crack_width"),  # 2D: -crack_width is 3D only
+]
+with tempfile.TemporaryDirectory() as tmp:
+    for k, (extra, word) in enumerate(bad):
+        out = os.path.join(tmp, "bad%d" % k)
+        r = subprocess.run([exe] + opts + extra + ["-output_dir", out], capture_output=True, text=True)
+        one_line_error(check, " ".join(extra), r.returncode, r.stderr, word)
+        check(not os.path.exists(out), "%s: nothing written" % " ".join(extra))
+check.finish()
