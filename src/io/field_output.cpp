@@ -75,9 +75,10 @@ PetscErrorCode FieldFile::AddCohesiveCells(const std::string& name, const std::s
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FieldFile::AddSegments(const std::string& name, const std::vector<double>& ends) {
+PetscErrorCode FieldFile::AddFreeCells(const std::string& name, int corners, int dim,
+                                       const std::vector<double>& coordinates) {
   PetscFunctionBeginUser;
-  const PetscInt points = static_cast<PetscInt>(ends.size() / 2);
+  const PetscInt points = static_cast<PetscInt>(coordinates.size() / dim);
   PetscInt first = 0;
   PetscCallMPI(MPI_Exscan(&points, &first, 1, MPIU_INT, MPI_SUM, comm_));
   PetscMPIInt rank;
@@ -89,9 +90,10 @@ PetscErrorCode FieldFile::AddSegments(const std::string& name, const std::vector
   g.points = name;
   g.owned_vertices = points;
   PetscCallMPI(MPI_Allreduce(&points, &g.xdmf.vertices, 1, MPIU_INT, MPI_SUM, comm_));
-  g.xdmf.topology_type = "Polyline";
-  PetscCall(AddGrid(name, g, 2, rows));  // segment i joins points 2i and 2i + 1
-  PetscCall(Write({name, "geometry", "m", 2, false}, rows, ends, -1, 0.0));
+  g.xdmf.dim = dim;
+  g.xdmf.topology_type = XdmfTopologyType(corners == 2 ? 1 : 2, corners);  // lines or polygons
+  PetscCall(AddGrid(name, g, corners, rows));  // cell i joins points corners·i, ..., corners·i + corners − 1
+  PetscCall(Write({name, "geometry", "m", dim, false}, rows, coordinates, -1, 0.0));
   PetscFunctionReturn(0);
 }
 

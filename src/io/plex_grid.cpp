@@ -57,10 +57,10 @@ PetscErrorCode AppendOwned(DM dm, const PetscInt* number, PetscInt vStart, Petsc
 
 }  // namespace
 
-const char* XdmfTopologyType(int dim, PetscInt corners) {
+const char* XdmfTopologyType(int cell_dim, PetscInt corners) {
   if (corners == 2) return "Polyline";
-  if (dim == 3 && corners == 4) return "Tetrahedron";
-  if (dim == 3 && corners == 8) return "Hexahedron";
+  if (cell_dim == 3 && corners == 4) return "Tetrahedron";
+  if (cell_dim == 3 && corners == 8) return "Hexahedron";
   return corners == 3 ? "Triangle" : "Quadrilateral";
 }
 

@@ -312,7 +312,7 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
   if (s.dimension == 3) {
     PetscCall(
-        PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve, camera or field output yet)\n"));
+        PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve or camera yet)\n"));
     PetscFunctionReturn(0);
   }
   PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT

@@ -65,6 +65,8 @@ class CrackInterface final : public wave::WaveInterface {
                                   std::vector<double>* values) const override;
 
 
+  /// The mesh's dimension: 2 (one slip component) or 3 (two).
+  int dim() const { return dim_; }
   /// Owned cells (this rank evaluates them).
   const std::vector<ContactCell>& cells() const { return cells_; }
   PetscInt global_cells() const { return global_cells_; }

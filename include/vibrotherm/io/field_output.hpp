@@ -8,8 +8,8 @@
 //                               components (z = 0) so ParaView sees vectors
 // Grids: a mesh's bulk cells (AddMesh: triangles, quads; tetrahedra, hexahedra in
 // VTK's corner order), its cohesive cells as their − faces on the mesh's vertices
-// (AddCohesiveCells: segments in 2D, triangles or quads in 3D), or free segments
-// with their own points (AddSegments). The .h5 is written as .partial and renamed; the .xmf files
+// (AddCohesiveCells: segments in 2D, triangles or quads in 3D), or free cells
+// with their own points (AddFreeCells: segments, quads). The .h5 is written as .partial and renamed; the .xmf files
 // appear last, so a crash never leaves files that look complete.
 #pragma once
 
@@ -53,8 +53,9 @@ class FieldFile {
   /// The cohesive cells of grid `mesh`'s DM as grid `name` of their − faces on its
   /// vertices (2-node lines in 2D); nothing when the DM has none.
   PetscErrorCode AddCohesiveCells(const std::string& name, const std::string& mesh);
-  /// Grid `name` of this rank's line segments, x0 y0 x1 y1 each, with points of their own.
-  PetscErrorCode AddSegments(const std::string& name, const std::vector<double>& ends);
+  /// Grid `name` of this rank's cells with points of their own: `corners` points a cell
+  /// (2: segments, 4: quadrilaterals in cyclic order), `dim` coordinates a point.
+  PetscErrorCode AddFreeCells(const std::string& name, int corners, int dim, const std::vector<double>& points);
   bool has_grid(const std::string& name) const { return grids_.count(name) > 0; }
 
   /// Vertex values of a global vector of the grid's space at output k (time t).

@@ -28,7 +28,8 @@ PetscErrorCode OwnedBulkCells(DM dm, std::vector<PetscInt>* cells, PetscInt* cor
 /// quadrilaterals in 3D (the ± faces coincide, so the face is the crack element itself).
 PetscErrorCode OwnedCohesiveFaces(DM dm, std::vector<PetscInt>* faces, PetscInt* corners);
 
-/// XDMF's TopologyType of cells of dimension `dim` with `corners` corners ("Polyline": 2-node lines).
-const char* XdmfTopologyType(int dim, PetscInt corners);
+/// XDMF's TopologyType of cells of dimension `cell_dim` (1: lines, 2: polygons, 3: solids) with
+/// `corners` corners ("Polyline": 2-node lines).
+const char* XdmfTopologyType(int cell_dim, PetscInt corners);
 
 }  // namespace vibrotherm::io

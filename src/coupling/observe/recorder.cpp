@@ -199,18 +199,31 @@ PetscErrorCode Recorder::WriteFields(double t, const wave::WaveSolver* w, const 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Recorder::AddCrackCells() {
+  PetscFunctionBeginUser;
+  // Each contact cell (a ± node pair) drawn as its tributary part of the crack: in 2D a
+  // segment of its length along the crack, in 3D a square of its area in the crack plane
+  // (a map of the crack surface; the squares of cells at the front overlap or leave gaps).
+  std::vector<double> points;
+  const bool planar = crack_->dim() == 2;
+  for (const interface::ContactCell& c : crack_->cells()) {
+    if (planar) {
+      const double h = c.weight / 2;
+      points.insert(points.end(), {c.x - h * c.s[0], c.y - h * c.s[1], c.x + h * c.s[0], c.y + h * c.s[1]});
+      continue;
+    }
+    const double h = std::sqrt(c.weight) / 2, x[3] = {c.x, c.y, c.z};
+    for (const auto& [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      for (int d = 0; d < 3; ++d) points.push_back(x[d] + h * (a * c.s[d] + b * c.s2[d]));
+  }
+  PetscCall(fields_.AddFreeCells("cracks", planar ? 2 : 4, planar ? 2 : 3, points));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Recorder::WriteCrackFields(int k, double t) {
   PetscFunctionBeginUser;
   const std::vector<interface::ContactCell>& cells = crack_->cells();
-  if (!fields_.has_grid("cracks")) {
-    // Each contact cell (a ± node pair) drawn as its tributary length along the crack.
-    std::vector<double> ends;
-    for (const interface::ContactCell& c : cells) {
-      const double h = c.weight / 2;
-      ends.insert(ends.end(), {c.x - h * c.s[0], c.y - h * c.s[1], c.x + h * c.s[0], c.y + h * c.s[1]});
-    }
-    PetscCall(fields_.AddSegments("cracks", ends));
-  }
+  if (!fields_.has_grid("cracks")) PetscCall(AddCrackCells());
   std::vector<PetscInt> owned(cells.size());
   for (std::size_t i = 0; i < owned.size(); ++i) owned[i] = static_cast<PetscInt>(i);
   std::vector<interface::CrackCellRecord> records;

@@ -33,7 +33,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   if (s->run.dimension != 3) PetscFunctionReturn(0);
   const char* given = nullptr;
-  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-restart", "-output_times", "-crack_probe",
+  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-restart", "-crack_probe",
                         "-crack_probe_crack", "-crack_state_every", "-source_patch_edge", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
@@ -63,8 +63,8 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   s->run.crack_state_every = 0;
   s->periodic.on = false;
   PetscCall(PetscPrintf(comm,
-                        "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera, "
-                        "field output or crack_state.csv yet)\n"));
+                        "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera "
+                        "or crack_state.csv yet)\n"));
   PetscFunctionReturn(0);
 }
 

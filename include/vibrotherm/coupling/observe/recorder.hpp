@@ -75,6 +75,8 @@ class Recorder {
 
  private:
   PetscErrorCode RecordCrack(const wave::WaveSolver& w);
+  /// The "cracks" grid of the fields: each contact cell drawn as its tributary part of the crack.
+  PetscErrorCode AddCrackCells();
   /// The "cracks" grid's cell fields (contact_state, friction power, dissipated energy) at output k.
   PetscErrorCode WriteCrackFields(int k, double t);
 
