@@ -49,23 +49,6 @@ PetscErrorCode LabelFaces(DM dm, const SpecimenGeometry& g, const BoxGrid& grid,
   PetscFunctionReturn(0);
 }
 
-/// Index-space coordinates → the graded, sheared grid.
-PetscErrorCode MoveVertices(DM dm, const BoxGrid& grid) {
-  PetscFunctionBeginUser;
-  Vec coordinates;
-  PetscScalar* x;
-  PetscInt n;
-  PetscCall(DMGetCoordinatesLocal(dm, &coordinates));
-  PetscCall(VecGetLocalSize(coordinates, &n));
-  PetscCall(VecGetArray(coordinates, &x));
-  for (PetscInt v = 0; v < n / 3; ++v) {
-    const std::array<double, 3> p = grid.position({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
-    for (int d = 0; d < 3; ++d) x[3 * v + d] = p[d];
-  }
-  PetscCall(VecRestoreArray(coordinates, &x));
-  PetscCall(DMSetCoordinatesLocal(dm, coordinates));
-  PetscFunctionReturn(0);
-}
 
 }  // namespace
 
@@ -79,7 +62,12 @@ PetscErrorCode CreateBoxPlex(MPI_Comm comm, const SpecimenGeometry& g, const Box
   for (const char* name : {"marker", "Face Sets"}) PetscCall(DMRemoveLabel(*dm, name, nullptr));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "specimen"));
   PetscCall(LabelFaces(*dm, g, grid, crack_faces));
-  PetscCall(MoveVertices(*dm, grid));
+  PetscCall(MoveVertices(*dm, [&](PetscScalar* x, PetscInt n) {  // index-space coordinates → the graded, sheared grid
+    for (PetscInt v = 0; v < n / 3; ++v) {
+      const std::array<double, 3> p = grid.position({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
+      for (int d = 0; d < 3; ++d) x[3 * v + d] = p[d];
+    }
+  }));
   PetscFunctionReturn(0);
 }
 

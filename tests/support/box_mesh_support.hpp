@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::testing {
 
@@ -101,20 +102,7 @@ inline PetscErrorCode KuhnSimplices(int dim, const PetscInt* faces, DM* dm) {
   return KuhnSimplices(dim, faces, origin, kBoxUpper.data(), dm);
 }
 
-/// Moves the vertices of a (serial or not yet distributed) mesh: move(x, n) edits its n local coordinates in place.
-inline PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move) {
-  PetscFunctionBeginUser;
-  Vec coordinates;
-  PetscScalar* x;
-  PetscInt n;
-  PetscCall(DMGetCoordinatesLocal(dm, &coordinates));
-  PetscCall(VecGetLocalSize(coordinates, &n));
-  PetscCall(VecGetArray(coordinates, &x));
-  move(x, n);
-  PetscCall(VecRestoreArray(coordinates, &x));
-  PetscCall(DMSetCoordinatesLocal(dm, coordinates));
-  PetscFunctionReturn(0);
-}
+using mesh::MoveVertices;  // (mesh/plex/plex_access.hpp)
 
 /// A box mesh with 3 × 2 (× 2) squares or cubes, interpolated, as they are or
 /// split into simplices; the tensor cells get their interior vertices moved

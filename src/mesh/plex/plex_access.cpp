@@ -120,4 +120,18 @@ PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move) {
+  PetscFunctionBeginUser;
+  Vec coordinates;
+  PetscScalar* x;
+  PetscInt n;
+  PetscCall(DMGetCoordinatesLocal(dm, &coordinates));
+  PetscCall(VecGetLocalSize(coordinates, &n));
+  PetscCall(VecGetArray(coordinates, &x));
+  move(x, n);
+  PetscCall(VecRestoreArray(coordinates, &x));
+  PetscCall(DMSetCoordinatesLocal(dm, coordinates));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::mesh

@@ -4,6 +4,7 @@
 #include <petscdmplex.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "vibrotherm/geometry/point.hpp"
@@ -35,6 +36,10 @@ PetscErrorCode CellCentroid(DM dm, const VertexPositions<D>& x, PetscInt cell, g
 /// found by walking its edges, and its edges in the same order: edges[k] joins
 /// corners[k] and corners[k + 1] (mod the corner count).
 PetscErrorCode FaceCycle(DM dm, PetscInt face, std::vector<PetscInt>* corners, std::vector<PetscInt>* edges);
+
+/// Moves the vertices of a (serial or not yet distributed) mesh: move(x, n) edits its n local
+/// coordinates in place (the coordinate dimension's values a vertex).
+PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move);
 
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);
