@@ -209,17 +209,12 @@ PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* s) {
   DM dm = specimen.wave;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   PetscInt dim;
-  PetscCall(DMGetDimension(dm, &dim));
-  if (dim == 3) {
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(comm, &size));
-    s->ranks = size, s->source = specimen.source;
-    PetscFunctionReturn(ComputeBoxSummary(specimen, s));
-  }
   PetscMPIInt size;
+  PetscCall(DMGetDimension(dm, &dim));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   s->ranks = size;
   s->source = specimen.source;
+  if (dim == 3) PetscFunctionReturn(ComputeBoxSummary(specimen, s));
   VertexCoordinates x;
   PetscCall(x.Setup(dm));
   DMLabel crack, tip;

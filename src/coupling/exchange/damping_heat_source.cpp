@@ -1,6 +1,5 @@
 #include "vibrotherm/coupling/exchange/damping_heat_source.hpp"
 
-#include "vibrotherm/coupling/exchange/replay_checkpoint.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 
 namespace vibrotherm::coupling {
@@ -71,24 +70,18 @@ PetscErrorCode DampingHeatSource::Finish(const std::string&) {
 
 PetscErrorCode DampingHeatSource::Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
-  checkpoint.PutShared("damping_heat/deposited", {deposited_});
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(specimen.heat, specimen.heat_origin, &keys));
-  checkpoint.PutKeyed("damping_heat/cumulative", keys, 1, cumulative_);
-  PutReplay(checkpoint, "damping_heat", keys, replay_, mode_);
+  SaveExchange(checkpoint, "damping_heat", keys, "cumulative", cumulative_);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode DampingHeatSource::Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
   PetscFunctionBeginUser;
   // Checkpoints follow a heat step: nothing was taken since (the restored waves start counting afresh).
-  std::vector<double> deposited;
-  PetscCall(checkpoint.GetShared("damping_heat/deposited", &deposited, 1));
-  deposited_ = deposited[0];
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(specimen.heat, specimen.heat_origin, &keys));
-  PetscCall(checkpoint.GetKeyed("damping_heat/cumulative", keys, 1, &cumulative_));
-  PetscCall(GetReplay(checkpoint, "damping_heat", keys, &replay_, &mode_));
+  PetscCall(RestoreExchange(checkpoint, "damping_heat", keys, "cumulative", &cumulative_));
   PetscFunctionReturn(0);
 }
 

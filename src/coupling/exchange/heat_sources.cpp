@@ -42,6 +42,26 @@ PetscErrorCode FrictionHeatSource::AddLoad(double t, double interval, Vec Q) {
   PetscFunctionReturn(0);
 }
 
+void ReplayableHeatSource::SaveExchange(store::Checkpoint& checkpoint, const std::string& name,
+                                        const std::vector<long long>& keys, const char* values_key,
+                                        const std::vector<double>& values) const {
+  checkpoint.PutShared(name + "/deposited", {deposited_});
+  PutReplay(checkpoint, name, keys, replay_, mode_);  // a periodic recording, under way or replayed
+  checkpoint.PutKeyed(name + "/" + values_key, keys, 1, values);
+}
+
+PetscErrorCode ReplayableHeatSource::RestoreExchange(const store::Checkpoint& checkpoint, const std::string& name,
+                                                     const std::vector<long long>& keys, const char* values_key,
+                                                     std::vector<double>* values) {
+  PetscFunctionBeginUser;
+  std::vector<double> deposited;
+  PetscCall(checkpoint.GetShared(name + "/deposited", &deposited, 1));
+  deposited_ = deposited[0];
+  PetscCall(GetReplay(checkpoint, name, keys, &replay_, &mode_));
+  PetscCall(checkpoint.GetKeyed(name + "/" + values_key, keys, 1, values));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ReplayableHeatSource::StartRecording(double t) {
   PetscFunctionBeginUser;
   replay_.Start(t, Cumulative());
@@ -85,25 +105,19 @@ std::vector<long long> FrictionHeatSource::CellKeys(const mesh::Specimen& specim
 
 PetscErrorCode FrictionHeatSource::Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const {
   PetscFunctionBeginUser;
-  checkpoint.PutShared("friction_heat/deposited", {deposited_});
   const std::vector<long long> keys = CellKeys(specimen);
   record_.Save(checkpoint, keys);
-  PutReplay(checkpoint, "friction_heat", keys, replay_, mode_);  // a periodic recording, under way or replayed
-  checkpoint.PutKeyed("friction_heat/previous", keys, 1, transfer_.previous());
+  SaveExchange(checkpoint, "friction_heat", keys, "previous", transfer_.previous());
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FrictionHeatSource::Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) {
   PetscFunctionBeginUser;
-  std::vector<double> deposited;
-  PetscCall(checkpoint.GetShared("friction_heat/deposited", &deposited, 1));
-  deposited_ = deposited[0];
   const std::vector<long long> keys = CellKeys(specimen);
   PetscCall(record_.Restore(checkpoint, keys));
-  PetscCall(GetReplay(checkpoint, "friction_heat", keys, &replay_, &mode_));
   // The energies the last exchange took (the interface's, or a replay's during a periodic continuation).
   std::vector<double> previous;
-  PetscCall(checkpoint.GetKeyed("friction_heat/previous", keys, 1, &previous));
+  PetscCall(RestoreExchange(checkpoint, "friction_heat", keys, "previous", &previous));
   transfer_.set_previous(previous);
   PetscFunctionReturn(0);
 }

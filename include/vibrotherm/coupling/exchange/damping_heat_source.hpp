@@ -31,7 +31,6 @@ class DampingHeatSource final : public ReplayableHeatSource {
   PetscErrorCode Setup(wave::WaveSolver* waves, Mat transfer);
   PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
   PetscErrorCode Finish(const std::string& dir) override;
-  double deposited() const override { return deposited_; }
   const char* name() const override { return "damping"; }
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
@@ -43,7 +42,6 @@ class DampingHeatSource final : public ReplayableHeatSource {
   wave::WaveSolver* waves_ = nullptr;
   Mat D_ = nullptr;
   Vec energy_ = nullptr, work_ = nullptr;
-  double deposited_ = 0.0;
   std::vector<double> Cumulative() const override { return cumulative_; }
   MPI_Comm comm() const override { return PetscObjectComm((PetscObject)D_); }
   std::vector<double> cumulative_;  ///< energy deposited so far per owned heat dof [J/m]

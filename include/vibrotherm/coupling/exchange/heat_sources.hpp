@@ -56,13 +56,22 @@ class ReplayableHeatSource : public HeatSource {
   PetscErrorCode StopRecording() override;
   PetscErrorCode Replay(ReplayMode mode) override;
   bool replaying() const { return mode_ != ReplayMode::Off; }
+  double deposited() const override { return deposited_; }
 
  protected:
+  /// Checkpoints under `name`/: the energy deposited, the replay, and a value per item
+  /// (`values_key`: what the source's next exchange starts from), keyed by `keys`; and back.
+  void SaveExchange(store::Checkpoint& checkpoint, const std::string& name, const std::vector<long long>& keys,
+                    const char* values_key, const std::vector<double>& values) const;
+  PetscErrorCode RestoreExchange(const store::Checkpoint& checkpoint, const std::string& name,
+                                 const std::vector<long long>& keys, const char* values_key,
+                                 std::vector<double>* values);
   /// Each item's cumulative energy now, as the live physics has it (the recording's start).
   virtual std::vector<double> Cumulative() const = 0;
   virtual MPI_Comm comm() const = 0;
   PeriodicReplay replay_;
   ReplayMode mode_ = ReplayMode::Off;
+  double deposited_ = 0.0;
 };
 
 /// Friction at the crack (crack law dissipation → line density on the crack),
@@ -74,7 +83,6 @@ class FrictionHeatSource final : public ReplayableHeatSource {
                        const mesh::CrackSurface& heat_cracks);
   PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
   PetscErrorCode Finish(const std::string& dir) override;
-  double deposited() const override { return deposited_; }
   const char* name() const override { return "friction"; }
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const override;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen) override;
@@ -90,7 +98,6 @@ class FrictionHeatSource final : public ReplayableHeatSource {
   std::vector<double> Cumulative() const override { return crack_->dissipated_per_area(); }
   MPI_Comm comm() const override { return comm_; }
   interface::CrackInterface* crack_ = nullptr;
-  double deposited_ = 0.0;
   FrictionHeat transfer_;
   CrackHeatRecord record_;
   MPI_Comm comm_ = MPI_COMM_NULL;
