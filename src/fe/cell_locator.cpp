@@ -1,29 +1,13 @@
 #include "vibrotherm/fe/cell_locator.hpp"
 
+#include "vibrotherm/fe/cell_corners.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace vibrotherm::fe {
 namespace {
-
-/// Sign (±1) of axis d at tensor corner k, corners in Gray-code order so that
-/// consecutive corners share an edge (2D: counter-clockwise from (−1, −1)).
-double CornerSign(int k, int d) { return ((k ^ (k >> 1)) >> d) & 1 ? 1.0 : -1.0; }
-
-/// The reference corners the locator maps: the simplex's vertices, or the
-/// 2^dim tensor corners (CornerSign).
-std::vector<double> ReferenceCorners(int dim, bool simplex) {
-  std::vector<double> corners;
-  if (simplex) {
-    for (int k = 0; k <= dim; ++k)
-      for (int d = 0; d < dim; ++d) corners.push_back(k == d + 1 ? 1.0 : -1.0);
-    return corners;
-  }
-  for (int k = 0; k < 1 << dim; ++k)
-    for (int d = 0; d < dim; ++d) corners.push_back(CornerSign(k, d));
-  return corners;
-}
 
 /// One Newton correction: J d = f for a dim × dim row-major J, by its adjugate.
 void SolveJacobian(const std::array<double, 9>& J, const double* f, int dim, double* d) {
@@ -47,13 +31,13 @@ PetscErrorCode CellLocator::Setup(const LagrangeSpace& space) {
   simplex_ = space.simplex();
   dim_ = space.dim();
   const int D = dim_;
-  const std::vector<double> ref_corners = ReferenceCorners(D, simplex_);
-  corners_ = static_cast<int>(ref_corners.size()) / D;
+  CellCorners reader(dm, D, simplex_);
+  corners_ = reader.corners();
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   cells_.clear();
   for (PetscInt c : space.cells()) {
     Cell cell{c, {}};
-    PetscCall(DMPlexReferenceToCoordinates(dm, c, corners_, ref_corners.data(), cell.corners.data()));
+    PetscCall(reader.Read(c, cell.corners.data()));
     for (int k = 0; k < corners_; ++k)
       for (int d = 0; d < D; ++d) {
         lo[d] = std::min(lo[d], cell.corners[D * k + d]);
@@ -102,26 +86,7 @@ void CellLocator::FillBins(const double* lo, const double* hi) {
 }
 
 ReferencePoint CellLocator::Map(const Cell& c, const ReferencePoint& r) const {
-  const int D = dim_;
-  const auto& p = c.corners;
-  ReferencePoint x = {0.0, 0.0, 0.0};
-  if (simplex_) {  // affine: x = p0 + Σ_d (p_{d+1} − p0)(ξ_d + 1)/2
-    for (int i = 0; i < D; ++i) {
-      x[i] = p[i];
-      for (int d = 0; d < D; ++d) x[i] += 0.5 * (r[d] + 1) * (p[D * (d + 1) + i] - p[i]);
-    }
-    return x;
-  }
-  double n[8] = {};  // multilinear: the corner's product of (1 ± ξ_d)/2
-  for (int k = 0; k < corners_; ++k) {
-    n[k] = D == 2 ? 0.25 : 0.125;
-    for (int d = 0; d < D; ++d) n[k] *= CornerSign(k, d) > 0 ? 1 + r[d] : 1 - r[d];
-  }
-  for (int i = 0; i < D; ++i) {
-    x[i] = n[0] * p[i];
-    for (int k = 1; k < corners_; ++k) x[i] += n[k] * p[D * k + i];
-  }
-  return x;
+  return MapToCell(c.corners.data(), dim_, simplex_, r);
 }
 
 std::array<double, 9> CellLocator::MapJacobian(const Cell& c, const ReferencePoint& r) const {
@@ -151,15 +116,20 @@ bool CellLocator::Inside(const Cell& c, const double* x, ReferencePoint* ref) co
   ReferencePoint r = {0.0, 0.0, 0.0};
   if (simplex_) r = D == 2 ? ReferencePoint{-1.0 / 3.0, -1.0 / 3.0, 0.0} : ReferencePoint{-0.5, -0.5, -0.5};
   bool converged = false;
+  // x's rounding: in a cell far thinner than its coordinates (the heat mesh's first
+  // layers at a crack) it is more than 1e-12 of the reference cell, so a residual
+  // at that level counts as converged too.
+  double magnitude = 0.0;
+  for (int i = 0; i < D; ++i) magnitude = std::max(magnitude, std::abs(x[i]));
   for (int it = 0; it < 20 && !converged; ++it) {  // Newton on x(r) = x; one step for simplices
     const auto X = Map(c, r);
-    double f[3], d[3];
-    for (int i = 0; i < D; ++i) f[i] = X[i] - x[i];
+    double f[3], d[3], residual = 0.0;
+    for (int i = 0; i < D; ++i) f[i] = X[i] - x[i], residual = std::max(residual, std::abs(f[i]));
     SolveJacobian(MapJacobian(c, r), f, D, d);
     double step = std::abs(d[0]);
     for (int i = 1; i < D; ++i) step += std::abs(d[i]);
     for (int i = 0; i < D; ++i) r[i] -= d[i];
-    converged = step < 1e-12;
+    converged = step < 1e-12 || residual <= 1e-14 * magnitude;
   }
   *ref = r;
   // From a point well outside a multilinear cell Newton may wander and stop

@@ -1,5 +1,7 @@
 #include "vibrotherm/fe/lagrange_space.hpp"
 
+#include "vibrotherm/fe/cell_corners.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -170,8 +172,16 @@ PetscErrorCode LagrangeSpace::NodePositions(std::vector<double>* coords) const {
     PetscCall(PetscQuadratureGetData(f, nullptr, nullptr, nullptr, &pts, nullptr));
     std::copy(pts, pts + D, &ref[D * b]);
   }
+  CellCorners corners(dm_, D, simplex_);
+  std::vector<double> x(static_cast<std::size_t>(corners.corners()) * D);
   for (PetscInt c : cells_) {
-    PetscCall(DMPlexReferenceToCoordinates(dm_, c, nodes_, ref.data(), real.data()));
+    PetscCall(corners.Read(c, x.data()));
+    for (int b = 0; b < nodes_; ++b) {
+      ReferencePoint r = {0.0, 0.0, 0.0};
+      std::copy(&ref[D * b], &ref[D * b] + D, r.begin());
+      const ReferencePoint p = MapToCell(x.data(), D, simplex_, r);
+      std::copy(p.begin(), p.begin() + D, &real[D * b]);
+    }
     PetscInt n, *indices = nullptr;
     PetscCall(DMPlexGetClosureIndices(dm_, section, section, c, PETSC_TRUE, &n, &indices, nullptr, nullptr));
     for (int b = 0; b < nodes_; ++b)

@@ -26,6 +26,12 @@ PetscErrorCode ParseKind(MPI_Comm comm, const char* option, const std::string& v
 }
 
 /// Points that exist on more than one rank (leaves and roots with leaves of the point SF).
+/// The option of side s: 0..3 by mesh::Side, 4 front (z = depth), 5 back (z = 0): the side label's values.
+std::string SideOption(int s) {
+  static const char* kDepthSides[2] = {"front", "back"};
+  return std::string("-heat_bc_") + (s < 4 ? mesh::to_string(static_cast<mesh::Side>(s)) : kDepthSides[s - 4]);
+}
+
 PetscErrorCode SharedPoints(DM dm, std::vector<bool>* shared) {
   PetscFunctionBeginUser;
   PetscInt pStart, pEnd, nroots, nleaves;
@@ -85,11 +91,13 @@ PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOpt
   PetscCall(PetscOptionsString("-heat_bc", "Every outer edge: sink, insulated, convective (default: sink edges)",
                                nullptr, value, value, sizeof(value), &set));
   o->all = set ? value : "";
-  for (int s = 0; s < 4; ++s) {
-    const std::string name = std::string("-heat_bc_") + mesh::to_string(static_cast<mesh::Side>(s));
+  for (int s = 0; s < 6; ++s) {
+    const std::string name = SideOption(s);
     value[0] = 0;
-    PetscCall(PetscOptionsString(name.c_str(), "One side of a generated specimen: sink, insulated, convective", nullptr,
-                                 value, value, sizeof(value), &set));
+    PetscCall(PetscOptionsString(name.c_str(),
+                                 s < 4 ? "One side of a generated specimen: sink, insulated, convective"
+                                       : "One face of a 3D box (front: z = depth, back: z = 0): sink, insulated, convective",
+                                 nullptr, value, value, sizeof(value), &set));
     o->side[s] = set ? value : "";
   }
   PetscCall(PetscOptionsReal("-heat_h", "Convective film coefficient [W/(m^2 K)]", nullptr, o->h, &o->h, nullptr));
@@ -99,11 +107,8 @@ PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOpt
   PetscOptionsEnd();
   ThermalEdge kind;
   if (!o->all.empty()) PetscCall(ParseKind(comm, "-heat_bc", o->all, &kind));
-  for (int s = 0; s < 4; ++s)
-    if (!o->side[s].empty()) {
-      const std::string name = std::string("-heat_bc_") + mesh::to_string(static_cast<mesh::Side>(s));
-      PetscCall(ParseKind(comm, name.c_str(), o->side[s], &kind));
-    }
+  for (int s = 0; s < 6; ++s)
+    if (!o->side[s].empty()) PetscCall(ParseKind(comm, SideOption(s).c_str(), o->side[s], &kind));
   PetscCheck(o->h >= 0 && std::isfinite(o->h), comm, PETSC_ERR_USER_INPUT, "-heat_h must be >= 0 and finite, got %g",
              o->h);
   PetscCheck(o->T_ext > 0 && std::isfinite(o->T_ext), comm, PETSC_ERR_USER_INPUT,
@@ -156,7 +161,7 @@ PetscErrorCode BuildHeatBoundary(const fe::LagrangeSpace& space, const HeatBound
     PetscInt s = -1, is_sink = -1;
     if (side) PetscCall(DMLabelGetValue(side, f, &s));
     if (sink) PetscCall(DMLabelGetValue(sink, f, &is_sink));
-    if (s >= 0 && s < 4 && !o.side[s].empty()) PetscCall(ParseKind(comm, "-heat_bc_<side>", o.side[s], &kind));
+    if (s >= 0 && s < 6 && !o.side[s].empty()) PetscCall(ParseKind(comm, "-heat_bc_<side>", o.side[s], &kind));
     else if (!o.all.empty()) PetscCall(ParseKind(comm, "-heat_bc", o.all, &kind));
     else kind = is_sink == 1 ? ThermalEdge::Sink : ThermalEdge::Insulated;
     ++counts[static_cast<int>(kind)];

@@ -101,7 +101,7 @@ PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
              "-heat_lumped_mass: row-sum lumping of P2 tetrahedra gives negative capacities; use the "
              "consistent mass or degree 1");
   PetscCall(DMCreateMatrix(dm_, &M_));
-  PetscCall(DMCreateMatrix(dm_, &K_));
+  PetscCall(MatDuplicate(M_, MAT_DO_NOT_COPY_VALUES, &K_));  // the same pattern: preallocated once
   const int Nb = space_.nodes_per_cell();
   std::vector<PetscScalar> Me(Nb * Nb), Ke(Nb * Nb);
   fe::CellQuadrature q;
@@ -166,7 +166,7 @@ PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType
   PetscCall(TSGetSNES(*ts, &snes));
   PetscCall(SNESSetType(snes, SNESKSPONLY));  // linear: one linear solve per stage
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(ConfigureLinearSolver(ksp, global_dofs_ <= kDirectSolveDofs));
+  PetscCall(ConfigureLinearSolver(ksp, direct_solve()));
   PetscCall(TSSetFromOptions(*ts));
   PetscFunctionReturn(0);
 }
@@ -181,6 +181,8 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct) {
   // with error-controlled steps once per step, still 1.5 s against 4.0 s with CG +
   // BoomerAMG at rtol 1e-12, same temperatures). Larger:
   // CG + hypre BoomerAMG (CG + GAMG diverged once the step grew, PETSC-NOTES.md).
+  // 3D factors fill far more: Cholesky took 8.8 s against CG + BoomerAMG's 1.9 s
+  // for 91 steps at 2.2e4 dofs (a 3D heat box), hence a lower threshold there.
   PC pc;
   PetscCall(KSPGetPC(ksp, &pc));
   if (direct) {

@@ -14,6 +14,7 @@ void WriteHeatView(JsonWriter& json, const RunSummary& s) {
     json.value("field_max_temperature_rise", s.field_peak.rise);
     json.begin_object("field_max_temperature_rise_at");
     json.value("t", s.field_peak.t).value("x", s.field_peak.x).value("y", s.field_peak.y);
+    if (s.field_peak.dimension == 3) json.value("z", s.field_peak.z);
     json.end_object();
   }
   const CameraSummary& c = s.camera;
@@ -76,7 +77,7 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
       {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
       {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},
       {"derived.couple_dt", "s"}, {"derived.heat_dt", "s"}, {"derived.final_time", "s"}, {"modes.frequency", "Hz"},
-      {"field_max_temperature_rise", "K"}, {"field_max_temperature_rise_at", "t in s, x and y in m"},
+      {"field_max_temperature_rise", "K"}, {"field_max_temperature_rise_at", "t in s, x, y (and z in 3D) in m"},
       {"camera.peak_rise", "K"}, {"camera.netd", "K"}, {"camera.peak_time", "s"}, {"camera_peak_snr", "1"}};
   json.begin_object("units");
   for (const auto& [key, unit] : units) json.value(key, std::string(unit));

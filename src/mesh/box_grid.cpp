@@ -32,16 +32,33 @@ std::vector<double> GradedSteps(double distance, double h0, double h, double gra
   return steps;
 }
 
+/// Geometric layers from `first` growing by `growth` until they reach h0, then
+/// GradedSteps from there: the heat grid's layers across the crack plane.
+std::vector<double> LayeredSteps(double distance, double first, double growth, double h0, double h, double grading) {
+  std::vector<double> steps;
+  double d = 0.0;
+  for (double step = first; step < h0 && d + step < 0.5 * distance; step *= growth) {
+    steps.push_back(step);
+    d += step;
+  }
+  const std::vector<double> rest = GradedSteps(distance - d, h0, h, grading);
+  steps.insert(steps.end(), rest.begin(), rest.end());
+  return steps;
+}
+
 /// The number of cells of size about h across `extent` (at least 1).
 int CellsAcross(double extent, double h) { return std::max(1, static_cast<int>(std::lround(extent / h))); }
 
 }  // namespace
 
 std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
-                               int* lo, int* hi) {
+                               int* lo, int* hi, double first_layer, double growth) {
   const double start = cells > 0 ? (b_hi - b_lo) / cells : h0;
-  const std::vector<double> below = GradedSteps(b_lo, start, h, grading),
-                            above = GradedSteps(length - b_hi, start, h, grading);
+  const auto steps = [&](double distance) {
+    return cells == 0 && first_layer > 0.0 ? LayeredSteps(distance, first_layer, growth, start, h, grading)
+                                           : GradedSteps(distance, start, h, grading);
+  };
+  const std::vector<double> below = steps(b_lo), above = steps(length - b_hi);
   std::vector<double> nodes = {0.0};
   for (auto it = below.rbegin(); it != below.rend(); ++it) nodes.push_back(nodes.back() + *it);
   nodes.back() = b_lo;
@@ -53,7 +70,9 @@ std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cell
   return nodes;
 }
 
-BoxGrid::BoxGrid(const SpecimenGeometry& g) {
+BoxGrid::BoxGrid(const SpecimenGeometry& g) : BoxGrid(g, BoxGridSizes{g.h_crack, g.h, g.grading}) {}
+
+BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
   validate(g);
   const Crack& c = g.cracks.front();
   const double theta = c.angle_deg * M_PI / 180.0;
@@ -68,11 +87,12 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g) {
   extent_[2] = c.width;
   normal_ = {-std::sin(theta), std::cos(theta), 0.0};
   std::array<int, 3> along{};
-  along[q_] = CellsAcross(c.length, g.h_crack);
-  along[2] = CellsAcross(c.width, g.h_crack);
+  along[q_] = CellsAcross(c.length, sizes.h_crack);
+  along[2] = CellsAcross(c.width, sizes.h_crack);
   for (int a = 0; a < 3; ++a)
-    nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a], g.h_crack,
-                           g.h, g.grading, &crack_lo_[a], &crack_hi_[a]);
+    nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a],
+                           sizes.h_crack, sizes.h, sizes.grading, &crack_lo_[a], &crack_hi_[a], sizes.first_layer,
+                           sizes.growth);
 }
 
 void BoxGrid::validate(const SpecimenGeometry& g) const {

@@ -44,6 +44,7 @@ PetscErrorCode LabelFaces(DM dm, const SpecimenGeometry& g, const BoxGrid& grid,
       const EdgeKind kind = s < 4 ? g.edges[s] : g.depth_edges[s - 4];
       PetscCall(DMLabelSetValue(side, f, s));
       PetscCall(DMSetLabelValue(dm, to_string(kind), f, 1));
+      PetscCall(DMSetLabelValue(dm, labels::sink, f, 1));  // as in 2D: every outer face a heat sink by default
     }
   }
   PetscFunctionReturn(0);

@@ -8,12 +8,41 @@
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::mesh {
+namespace {
 
-PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, Specimen* s) {
+/// The serial heat mesh: the box again, unsplit (temperature is continuous across
+/// the crack), on its own grid: -heat_mesh_h_along on the crack, layers from
+/// -heat_mesh_h_crack growing by -heat_mesh_growth across its plane, up to
+/// -heat_mesh_h away (-heat_mesh wave: the wave grid's sizes).
+PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& sizes, DM* heat,
+                                 std::string* heat_source) {
+  PetscFunctionBeginUser;
+  std::unique_ptr<BoxGrid> grid;
+  VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry, BoxHeatGridSizes(geometry, sizes)));
+  PetscCall(PetscPrintf(comm, "Meshing: the heat box of %d x %d x %d hexahedra (%s)\n", grid->cells(0),
+                        grid->cells(1), grid->cells(2),
+                        sizes.graded ? "layers graded across the crack plane" : "the wave grid, unsplit"));
+  PetscInt crack_faces;
+  PetscCall(CreateBoxPlex(comm, geometry, *grid, heat, &crack_faces));
+  *heat_source = sizes.graded ? "graded" : "wave";
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSizes& sizes) {
+  return sizes.graded ? BoxGridSizes{sizes.h_along, sizes.h, sizes.grading, sizes.h_crack, sizes.growth}
+                      : BoxGridSizes{geometry.h_crack, geometry.h, geometry.grading};
+}
+
+PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
+                                 Specimen* s) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   std::unique_ptr<BoxGrid> grid;
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry));
+  HeatMeshSizes heat_sizes;
+  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
   PetscCall(PetscPrintf(comm,
                         "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
                         "into its plane: %d x %d crack faces)\n",
@@ -23,12 +52,13 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
   s->cracks = {CrackInfo{"crack1", geometry.cracks.front().length}};
   s->source = "generated";
-  s->heat_source = "none";
   // SplitCracks puts the front (edges with one crack face, their vertices) in the
   // boundary label and checks one cohesive cell per crack face.
   PetscCall(SplitCracks(serial, &s->wave));
   PetscCall(DMDestroy(&serial));
+  PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &s->heat, &s->heat_source));
   PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
+  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
   PetscFunctionReturn(0);
 }

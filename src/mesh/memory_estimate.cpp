@@ -23,7 +23,7 @@ double CrackBandCells(const SpecimenGeometry& g, const Crack& c) {
 }
 
 /// A 3D box: its structured grid's hexahedra exactly; Q2 elasticity has ~192 nonzeros a row (3D-NOTES §5).
-MemoryEstimate EstimateBox(const SpecimenGeometry& g, int wave_degree, int ranks) {
+MemoryEstimate EstimateBox(const SpecimenGeometry& g, int wave_degree, int ranks, const BoxGridSizes* heat_grid) {
   const BoxGrid grid(g);
   MemoryEstimate e;
   e.wave_cells = static_cast<double>(grid.total_cells());
@@ -31,13 +31,21 @@ MemoryEstimate EstimateBox(const SpecimenGeometry& g, int wave_degree, int ranks
   for (int a = 0; a < 3; ++a) e.wave_dofs *= wave_degree * grid.cells(a) + 1.0;
   const double nonzeros_per_row = wave_degree == 2 ? 192.0 : 54.0;
   e.bytes = 4e3 * e.wave_cells + e.wave_dofs * (10.0 * nonzeros_per_row + 30.0 * 8.0) + 1e8 * ranks;
+  if (heat_grid) {
+    const BoxGrid heat(g, *heat_grid);
+    e.heat_cells = static_cast<double>(heat.total_cells());
+    e.heat_dofs = 1.0;
+    for (int a = 0; a < 3; ++a) e.heat_dofs *= heat.cells(a) + 1.0;
+    e.bytes += 4e3 * e.heat_cells + 2e3 * e.heat_dofs;
+  }
   return e;
 }
 
 }  // namespace
 
-MemoryEstimate EstimateMemory(const SpecimenGeometry& g, int refinements, int wave_degree, int ranks) {
-  if (g.depth > 0.0) return EstimateBox(g, wave_degree, ranks);
+MemoryEstimate EstimateMemory(const SpecimenGeometry& g, int refinements, int wave_degree, int ranks,
+                              const BoxGridSizes* heat_grid) {
+  if (g.depth > 0.0) return EstimateBox(g, wave_degree, ranks, heat_grid);
   MemoryEstimate e;
   double cells = g.width * g.height / (g.h * g.h);
   for (const Crack& c : g.cracks) cells += CrackBandCells(g, c);

@@ -162,6 +162,27 @@ PetscErrorCode CohesiveCell3D(DM dm, PetscInt c, const std::vector<bool>& ghost,
   PetscFunctionReturn(0);
 }
 
+/// Cells, vertices, edge lengths and cells per rank of the 3D heat box.
+PetscErrorCode SummariseBoxHeatMesh(const Specimen& specimen, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  DM dm = specimen.heat;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
+  PetscCall(CountOwned(dm, 0, &s->heat_vertices));
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  const PetscInt local = cEnd - cStart;  // no overlap: every cell is owned
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  s->heat_cells_per_rank.assign(size, 0);
+  PetscCallMPI(MPI_Allgather(&local, 1, MPIU_INT, s->heat_cells_per_rank.data(), 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allreduce(&local, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
+  double h[2];
+  PetscCall(EdgeRange(dm, &h[0], &h[1]));
+  PetscCallMPI(MPI_Allreduce(&h[0], &s->heat_h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&h[1], &s->heat_h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscFunctionReturn(0);
+}
+
 /// The 3D box: bulk and cohesive cells, edge range, the crack's faces, area, split and front vertices.
 PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionBeginUser;
@@ -199,6 +220,7 @@ PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscCallMPI(MPI_Allreduce(&local.tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&local.area, &crack.area, 1, MPI_DOUBLE, MPI_SUM, comm));
   s->cracks = {crack};
+  PetscCall(SummariseBoxHeatMesh(specimen, s));
   PetscFunctionReturn(0);
 }
 
@@ -305,11 +327,6 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
                                   " buried tips, length %.6g m\n",
                             c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
-  if (s.dimension == 3) {
-    PetscCall(
-        PetscPrintf(comm, "3D: waves and crack contact only (no heat mesh, heat solve or camera yet)\n"));
-    PetscFunctionReturn(0);
-  }
   PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT
                               " vertices, element edge length min %.3g m, max %.3g m\n",
                         s.heat_source.c_str(), s.heat_cells, s.heat_vertices, s.heat_h_min, s.heat_h_max));

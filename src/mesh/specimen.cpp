@@ -203,7 +203,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   SpecimenGeometry geometry;
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
   if (geometry.depth > 0.0) {
-    PetscCall(CreateBoxSpecimen(comm, geometry, s));
+    PetscCall(CreateBoxSpecimen(comm, geometry, exchange_length, s));
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
   }
@@ -263,7 +263,7 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree) {
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length) {
   PetscFunctionBeginUser;
   MeshSource source;
   PetscCall(ReadMeshSource(comm, &source));
@@ -272,7 +272,14 @@ PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree) {
   PetscCall(ReadSpecimenGeometry(comm, &geometry));
   PetscMPIInt ranks;
   PetscCallMPI(MPI_Comm_size(comm, &ranks));
-  const MemoryEstimate e = EstimateMemory(geometry, static_cast<int>(source.refinements), static_cast<int>(wave_degree), ranks);
+  BoxGridSizes heat_grid{};
+  if (geometry.depth > 0.0) {  // the 3D heat grid is known before meshing too
+    HeatMeshSizes heat;
+    PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat));
+    heat_grid = BoxHeatGridSizes(geometry, heat);
+  }
+  const MemoryEstimate e = EstimateMemory(geometry, static_cast<int>(source.refinements), static_cast<int>(wave_degree),
+                                          ranks, geometry.depth > 0.0 ? &heat_grid : nullptr);
   double available = AvailableMemory();
   PetscCallMPI(MPI_Bcast(&available, 1, MPI_DOUBLE, 0, comm));
   PetscCall(PetscPrintf(comm, "Memory estimate: %.3g wave cells, %.3g wave dofs, %.3g heat dofs: about %.3g GB (%.3g GB available)\n",

@@ -58,8 +58,8 @@ PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeo
 PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g, std::vector<double>* widths,
                               const char** three_d) {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box (waves only for "
-                             "now); 0 a 2D plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
+  PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box; 0 a 2D "
+                             "plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
   PetscBool given[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width", "3D: crack extent along z [m]", widths, &given[0]));
   PetscCall(ReadEdgeKind(PetscOptionsObject, "front", &g->depth_edges[0], &given[1]));

@@ -22,7 +22,7 @@ enum class ThermalEdge { Sink, Insulated, Convective };
 
 struct HeatBoundaryOptions {
   std::string all;        ///< -heat_bc ("" when not given)
-  std::string side[4];    ///< -heat_bc_<side> by mesh::Side ("" when not given)
+  std::string side[6];    ///< -heat_bc_<side> by mesh::Side, then front and back (3D; "" when not given)
   double h = 10.0;        ///< -heat_h [W/(m² K)]
   double T_ext = -1.0;    ///< -heat_T_ext [K] (default: T0)
 };

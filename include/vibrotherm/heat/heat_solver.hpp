@@ -157,7 +157,9 @@ class HeatSolver {
   std::vector<fe::LocatedPoint> probes_;
   PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
   PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);
-  static constexpr PetscInt kDirectSolveDofs = 50000;  ///< above: CG + AMG even for fixed steps
+  static constexpr PetscInt kDirectSolveDofs = 50000;   ///< above: CG + AMG even for fixed steps
+  static constexpr PetscInt kDirectSolveDofs3D = 5000;  ///< the same on a 3D mesh (more fill)
+  bool direct_solve() const { return global_dofs_ <= (space_.dim() == 3 ? kDirectSolveDofs3D : kDirectSolveDofs); }
   TS coupled_ts_ = nullptr, free_ts_ = nullptr;  ///< prefixes -heat_ and -heat_free_
   TS ts_ = nullptr;                             ///< the one in use
   double time_ = 0.0, deposited_ = 0.0, boundary_loss_ = 0.0;

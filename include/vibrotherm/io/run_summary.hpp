@@ -43,6 +43,8 @@ struct PeriodicSegment {
 struct FieldPeakSummary {
   bool known = false;
   double rise = 0.0, t = 0.0, x = 0.0, y = 0.0;  ///< [K], [s], [m]
+  double z = 0.0;                                ///< 3D only [m]
+  int dimension = 2;
 };
 
 struct RunSummary {

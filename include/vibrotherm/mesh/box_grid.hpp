@@ -22,12 +22,22 @@
 
 namespace vibrotherm::mesh {
 
+/// The sizes of a box grid: h_crack on the crack (and across its plane), growing
+/// by `grading` per metre up to h. first_layer > 0 (the heat grid): across the
+/// crack plane, layers from first_layer growing by `growth` up to h_crack first.
+struct BoxGridSizes {
+  double h_crack, h, grading;
+  double first_layer = 0.0, growth = 1.0;
+};
+
 class BoxGrid {
  public:
   /// Checks the 3D specimen (throws std::invalid_argument naming the option: one
   /// crack, buried, resolved by 2 cells along each extent, a shear that does not
   /// fold the mesh) and builds the node positions along each axis.
   explicit BoxGrid(const SpecimenGeometry& geometry);
+  /// The same crack and box with other sizes (the heat grid).
+  BoxGrid(const SpecimenGeometry& geometry, const BoxGridSizes& sizes);
 
   /// Cells along axis a.
   int cells(int axis) const { return static_cast<int>(nodes_[axis].size()) - 1; }
@@ -59,8 +69,10 @@ class BoxGrid {
 /// The 1D nodes of [0, length] with the crack's segment [b_lo, b_hi] in `cells`
 /// uniform cells (cells = 0: b_lo = b_hi, a plane whose neighbours get h0), and
 /// outside a spacing that starts at the segment's and grows by `grading` per metre
-/// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi.
+/// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi. A plane
+/// (cells = 0) with first_layer > 0 gets geometric layers from first_layer by
+/// `growth` up to h0 on each side before that.
 std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
-                               int* lo, int* hi);
+                               int* lo, int* hi, double first_layer = 0.0, double growth = 1.0);
 
 }  // namespace vibrotherm::mesh

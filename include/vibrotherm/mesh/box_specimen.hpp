@@ -1,15 +1,22 @@
 // A 3D box specimen (-specimen_depth > 0): the graded hexahedral grid with its
 // buried crack (box_grid.hpp, box_mesher.hpp), split serially with the crack front
 // in the boundary label (one cohesive cell per crack face, checked), distributed.
-// Waves only for now: the specimen has no heat mesh (heat null) and no crack
-// surface gathers (wave_cracks, heat_cracks empty: they are 2D).
+// The heat mesh is the box again, unsplit, on a grid with layers across the crack
+// plane (box_specimen.cpp). No crack surface gathers (wave_cracks, heat_cracks
+// empty: they are 2D; the friction heat finds the crack from the contact cells).
 #pragma once
 
+#include "vibrotherm/mesh/box_grid.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 
 namespace vibrotherm::mesh {
 
-/// geometry: checked by ReadSpecimenGeometry (depth > 0). Collective.
-PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, Specimen* specimen);
+/// The heat grid's sizes from the -heat_mesh* options (-heat_mesh wave: the wave grid's).
+BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSizes& sizes);
+
+/// geometry: checked by ReadSpecimenGeometry (depth > 0); exchange_length: as
+/// SpecimenCreate's (the heat mesh's default first layer). Collective.
+PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
+                                 Specimen* specimen);
 
 }  // namespace vibrotherm::mesh

@@ -5,9 +5,11 @@
 // dofs per cell of the Lagrange degree; bytes per cell and per dof calibrated
 // on the paper scene (mesh and topology ~2 kB/cell, matrix and vectors
 // ~10 B per nonzero + 30 vectors). A rough estimate: within a factor 2–3.
-// A 3D box (-specimen_depth): its grid's cells exactly, no heat mesh.
+// A 3D box (-specimen_depth): its wave and heat grids' cells exactly (the heat
+// grid's sizes given), ~2 kB per heat dof (Q1: M, K, the Jacobian, BoomerAMG).
 #pragma once
 
+#include "vibrotherm/mesh/box_grid.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
 
 namespace vibrotherm::mesh {
@@ -17,7 +19,9 @@ struct MemoryEstimate {
   double bytes = 0;  ///< all ranks together, the libraries' own footprint included
 };
 
-MemoryEstimate EstimateMemory(const SpecimenGeometry& geometry, int refinements, int wave_degree, int ranks);
+/// heat_grid: the 3D heat grid's sizes (null: the heat mesh is not estimated in 3D).
+MemoryEstimate EstimateMemory(const SpecimenGeometry& geometry, int refinements, int wave_degree, int ranks,
+                              const BoxGridSizes* heat_grid = nullptr);
 
 /// Bytes the machine can still give (MemAvailable of /proc/meminfo); 0 if unknown.
 double AvailableMemory();

@@ -54,7 +54,7 @@ PetscErrorCode SpecimenDestroy(Specimen* specimen);
 PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
 /// Prints the memory estimate of a generated specimen (memory_estimate.hpp) and
 /// refuses, naming the options, one beyond the memory available unless -force.
-PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree);
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length);
 
 /// Reads the generated-specimen options into geometry (used by SpecimenCreate);
 /// check: refuse a specimen that cannot be meshed (false: declare them only).

@@ -134,7 +134,7 @@ PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const co
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
-  PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree));
+  PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree, scene.exchange_length()));
   const double t = MPI_Wtime();
   const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
   PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen, lts));

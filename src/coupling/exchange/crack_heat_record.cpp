@@ -44,10 +44,13 @@ PetscErrorCode CrackHeatRecord::Write(MPI_Comm comm, const std::string& path, co
   std::vector<double> density;
   std::size_t cells = 0;
   PetscCall(GatherDensities(comm, densities_, n, heat.density().size(), &density, &cells));
+  std::vector<double> places;  // the columns' cells, rank by rank as the densities
+  PetscCall(util::GatherToRoot(comm, heat.cell_places(), &places));
   if (rank != 0) PetscFunctionReturn(0);
   std::map<std::string, io::H5Table> tables;
   tables["time"] = {n, 1, times_, "s"};
   tables["density"] = {n, cells, density, "W/m^2"};
+  tables["cells"] = {cells, 4, places, "x, y, z [m], weight (2D: tributary length [m]; 3D: area [m^2])"};
   io::H5Table& elements = tables["elements"];
   for (const CrackElement& e : heat.wave_elements())
     elements.values.insert(elements.values.end(), {double(e.crack), e.xi0, e.xi1, e.length, double(e.degree),

@@ -9,26 +9,26 @@
 namespace vibrotherm::coupling {
 
 FieldPeak::~FieldPeak() {
-  (void)VecDestroy(&x_);
-  (void)VecDestroy(&y_);
+  for (Vec& v : axes_) (void)VecDestroy(&v);
 }
 
 PetscErrorCode FieldPeak::Setup(const fe::LagrangeSpace& space) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
-  std::vector<std::array<double, 2>> nodes;
-  PetscCall(space.NodeCoordinates(&nodes));
+  dim_ = space.dim();
+  std::vector<double> nodes;
+  PetscCall(space.NodePositions(&nodes));
   Vec local;
   PetscCall(DMGetLocalVector(dm, &local));
   PetscInt n;
   PetscCall(VecGetLocalSize(local, &n));
-  PetscCheck(static_cast<std::size_t>(n) == nodes.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "field peak: %" PetscInt_FMT " local dofs for %zu nodes", n, nodes.size());
-  for (int d = 0; d < 2; ++d) {
-    Vec& global = d == 0 ? x_ : y_;
+  PetscCheck(static_cast<std::size_t>(n) * dim_ == nodes.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "field peak: %" PetscInt_FMT " local dofs for %zu node coordinates", n, nodes.size());
+  for (int d = 0; d < dim_; ++d) {
+    Vec& global = axes_[d];
     PetscScalar* a;
     PetscCall(VecGetArray(local, &a));
-    for (PetscInt i = 0; i < n; ++i) a[i] = nodes[i][d];
+    for (PetscInt i = 0; i < n; ++i) a[i] = nodes[dim_ * i + d];
     PetscCall(VecRestoreArray(local, &a));
     PetscCall(DMCreateGlobalVector(dm, &global));
     PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
@@ -44,21 +44,18 @@ PetscErrorCode FieldPeak::Update(const heat::HeatSolver& heat) {
   PetscCall(VecMax(heat.rise(), &at, &rise));
   if (peak_.known && rise <= peak_.rise) PetscFunctionReturn(0);
   PetscInt first, end;
-  PetscCall(VecGetOwnershipRange(x_, &first, &end));
-  double place[2] = {0.0, 0.0};
-  if (at >= first && at < end) {
-    const PetscScalar *x, *y;
-    PetscCall(VecGetArrayRead(x_, &x));
-    PetscCall(VecGetArrayRead(y_, &y));
-    place[0] = PetscRealPart(x[at - first]);
-    place[1] = PetscRealPart(y[at - first]);
-    PetscCall(VecRestoreArrayRead(x_, &x));
-    PetscCall(VecRestoreArrayRead(y_, &y));
+  PetscCall(VecGetOwnershipRange(axes_[0], &first, &end));
+  double place[3] = {0.0, 0.0, 0.0};
+  for (int d = 0; d < dim_ && at >= first && at < end; ++d) {
+    const PetscScalar* x;
+    PetscCall(VecGetArrayRead(axes_[d], &x));
+    place[d] = PetscRealPart(x[at - first]);
+    PetscCall(VecRestoreArrayRead(axes_[d], &x));
   }
-  MPI_Comm comm = PetscObjectComm((PetscObject)x_);
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, place, 2, MPI_DOUBLE, MPI_SUM, comm));
+  MPI_Comm comm = PetscObjectComm((PetscObject)axes_[0]);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, place, 3, MPI_DOUBLE, MPI_SUM, comm));
   const bool crossed = rise > kConstantPropertyRise && !(peak_.known && peak_.rise > kConstantPropertyRise);
-  peak_ = {true, rise, heat.time(), place[0], place[1]};
+  peak_ = {true, rise, heat.time(), place[0], place[1], place[2], dim_};
   if (crossed)  // once: a restart past it knows from the restored peak
     PetscCall(PetscPrintf(comm, "vibrotherm: warning: %s\n", ValidityWarning().c_str()));
   PetscFunctionReturn(0);

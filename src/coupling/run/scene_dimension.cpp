@@ -31,24 +31,26 @@ PetscErrorCode ReadSceneDimension(int* dimension) {
 
 PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
-  if (s->run.dimension != 3) PetscFunctionReturn(0);
   const char* given = nullptr;
+  if (s->run.dimension != 3) {
+    PetscCall(FirstGiven({"-heat_bc_front", "-heat_bc_back", "-camera_face"}, &given));
+    PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D box only (-specimen_depth > 0)", given);
+    PetscFunctionReturn(0);
+  }
   PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-restart", "-crack_probe",
                         "-crack_probe_crack", "-crack_state_every", "-source_patch_edge", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
-             "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", given);
-  const std::pair<bool, const char*> refused[] = {{s->run.heat == HeatChoice::On, "-heat on"},
-                                                  {s->run.physics == PhysicsChoice::Heat, "-physics heat"},
+             "%s is not supported in 3D yet (-specimen_depth > 0)", given);
+  const std::pair<bool, const char*> refused[] = {{s->run.physics == PhysicsChoice::Heat, "-physics heat"},
                                                   {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
-                                                  {s->camera.on, "-camera"},
                                                   {s->periodic.choice == PeriodicChoice::On, "-periodic on"},
                                                   {s->wave.lts.on, "-wave_lts on"},
                                                   {s->wave.harmonic_start, "-wave_start harmonic"},
                                                   {s->material.damping_heat, "-material_damping_heat"}};
   for (const auto& [refuse, option] : refused)
     PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
-               "%s is not supported in 3D yet (-specimen_depth > 0: a 3D run is waves and crack contact only)", option);
+               "%s is not supported in 3D yet (-specimen_depth > 0)", option);
   char type[64] = "velocityverlet", cell[16] = "quad";
   PetscInt refine = 0;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
@@ -59,12 +61,9 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscCheck(std::string(cell) == "quad", comm, PETSC_ERR_USER_INPUT,
              "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell);
   PetscCheck(refine == 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine is not supported in 3D yet: refine with -mesh_h");
-  s->run.heat = HeatChoice::Off;
   s->run.crack_state_every = 0;
   s->periodic.on = false;
-  PetscCall(PetscPrintf(comm,
-                        "vibrotherm: note: a 3D specimen: waves and crack contact only (no heat solve, camera "
-                        "or crack_state.csv yet)\n"));
+  PetscCall(PetscPrintf(comm, "vibrotherm: note: a 3D specimen: no crack_state.csv or periodic continuation yet\n"));
   PetscFunctionReturn(0);
 }
 

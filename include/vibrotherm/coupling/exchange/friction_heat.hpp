@@ -1,8 +1,10 @@
-// Friction energy → heat load: the one home of that transfer (line_transfer.hpp
-// for the mathematics). Built once per run: the crack elements of both meshes
-// are matched along each crack by ξ, and the exact transfer T (heat dofs ×
-// contact cells) becomes a parallel sparse matrix, so every exchange is one
-// MatMult (PETSc moves the values between the two partitions).
+// Friction energy → heat load: the one home of that transfer. Built once per run
+// as a parallel sparse matrix T (heat dofs × contact cells), so every exchange is
+// one MatMult (PETSc moves the values between the two partitions).
+//   2D: the crack elements of both meshes matched along each crack by ξ, T the
+//       exact line integrals (line_transfer.hpp);
+//   3D: T = Ψ Φ, the quadrature of the crack's faces (crack_face_quadrature.hpp)
+//       through the surface transfer of its points (surface_transfer.hpp).
 #pragma once
 
 #include <petscmat.h>
@@ -25,7 +27,8 @@ class FrictionHeat {
   ~FrictionHeat();
 
   /// Matches the contact cells of `crack` (on wave_space's split mesh, whose cracks
-  /// are wave_cracks) with the crack facets of heat_space's mesh (heat_cracks).
+  /// are wave_cracks) with the crack facets of heat_space's mesh (heat_cracks; in 3D
+  /// the contact cells' faces are located in the heat mesh, the crack surfaces unused).
   /// Collective over both meshes' communicator.
   PetscErrorCode Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
                        const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
@@ -44,6 +47,8 @@ class FrictionHeat {
   const std::vector<CrackElement>& wave_elements() const { return wave_elements_; }
   /// Vertices of the wave mesh's cracks: (crack, ξ, x, y) per vertex, the same on every rank.
   const std::vector<std::array<double, 4>>& crack_vertices() const { return crack_vertices_; }
+  /// x, y, z [m] and weight (tributary length [m] in 2D, area [m²] in 3D) of each owned cell.
+  const std::vector<double>& cell_places() const { return cell_places_; }
   /// Global index of this rank's first contact cell.
   PetscInt first_cell() const { return first_cell_; }
   /// Tᵀw per owned contact cell [m]: what a unit density at each cell adds to wᵀQ
@@ -55,6 +60,9 @@ class FrictionHeat {
                                    const mesh::CrackSurface& wave_cracks);
   PetscErrorCode BuildHeatElements(const fe::LagrangeSpace& heat_space, const mesh::CrackSurface& heat_cracks,
                                    std::vector<CrackElement>* elements) const;
+  /// T = Ψ Φ of the 3D crack faces' quadrature.
+  PetscErrorCode SetupSurface(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                              const fe::LagrangeSpace& heat_space);
   PetscErrorCode AssembleTransfer(const fe::LagrangeSpace& heat_space, const std::vector<CrackElement>& heat_elements,
                                   PetscInt owned_cells);
 
@@ -62,7 +70,7 @@ class FrictionHeat {
   std::vector<std::array<double, 4>> crack_vertices_;
   Mat transfer_ = nullptr;  ///< T: heat dofs × contact cells
   Vec rate_ = nullptr;      ///< q per contact cell (owned layout of the interface)
-  std::vector<double> previous_, density_;
+  std::vector<double> previous_, density_, cell_places_;
   PetscInt first_cell_ = 0;
 };
 

@@ -39,6 +39,8 @@ class SurfaceHeatTransfer {
   PetscErrorCode Setup(const fe::LagrangeSpace& heat_space, const SurfacePoints& mine);
   /// Q += T q for the densities q_p [W/m²] of this rank's points. Collective.
   PetscErrorCode AddRates(const std::vector<double>& density, Vec Q);
+  /// T itself (heat dofs × points), owned by this object.
+  Mat matrix() const { return transfer_; }
   /// Σ A_p over every rank's points [m²].
   double area() const { return area_; }
   /// Global index of this rank's first point.

@@ -5,6 +5,8 @@
 
 #include <petscvec.h>
 
+#include <array>
+
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 
@@ -33,7 +35,8 @@ class FieldPeak {
 
  private:
   std::string ValidityWarning() const;
-  Vec x_ = nullptr, y_ = nullptr;
+  std::array<Vec, 3> axes_ = {nullptr, nullptr, nullptr};  ///< node coordinates (z in 3D only)
+  int dim_ = 2;
   io::FieldPeakSummary peak_;
 };
 
