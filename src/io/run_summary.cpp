@@ -69,10 +69,11 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
   json.begin_object("derived_rules");
   for (const auto& [name, rule] : s.derived_rules) json.value(name.c_str(), rule);
   json.end_object();
-  static const std::pair<const char*, const char*> units[] = {
-      {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", "J/m"},
-      {"heat_deposited", "J/m"}, {"heat_content", "J/m"}, {"heat_boundary_loss", "J/m"}, {"wave_energy_left", "J/m"},
-      {"work_thermal", "J/m"},
+  const char* energy = s.mesh.dimension == 3 ? "J" : "J/m";  // 2D: per metre of depth
+  const std::pair<const char*, const char*> units[] = {
+      {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", energy},
+      {"heat_deposited", energy}, {"heat_content", energy}, {"heat_boundary_loss", energy},
+      {"wave_energy_left", energy}, {"work_thermal", energy},
       {"probe_max_temperature_rise", "K"}, {"output_temperature_rise", "K (t in s)"}, {"max_budget_error", "1"},
       {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
       {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},

@@ -44,7 +44,6 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
              "%s is not supported in 3D yet (-specimen_depth > 0)", given);
   const std::pair<bool, const char*> refused[] = {{s->run.physics == PhysicsChoice::Heat, "-physics heat"},
                                                   {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
-                                                  {s->periodic.choice == PeriodicChoice::On, "-periodic on"},
                                                   {s->wave.lts.on, "-wave_lts on"},
                                                   {s->wave.harmonic_start, "-wave_start harmonic"},
                                                   {s->material.damping_heat, "-material_damping_heat"}};
@@ -62,8 +61,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
              "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell);
   PetscCheck(refine == 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine is not supported in 3D yet: refine with -mesh_h");
   s->run.crack_state_every = 0;
-  s->periodic.on = false;
-  PetscCall(PetscPrintf(comm, "vibrotherm: note: a 3D specimen: no crack_state.csv or periodic continuation yet\n"));
+  PetscCall(PetscPrintf(comm, "vibrotherm: note: a 3D specimen: no crack_state.csv yet\n"));
   PetscFunctionReturn(0);
 }
 
