@@ -33,7 +33,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   if (s->run.dimension != 3) PetscFunctionReturn(0);
   const char* given = nullptr;
-  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-restart", "-crack_probe",
+  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-crack_probe",
                         "-crack_probe_crack", "-crack_state_every", "-source_patch_edge", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
