@@ -11,13 +11,12 @@ the waves stopped and finishes bit-identical (before: no checkpoint there, with 
 default -checkpoint_every_s the restart was refused and the run lost).
 
 usage: test_checkpoint_restart.py VIBROTHERM MPIEXEC"""
-import json, os, signal, subprocess, sys, tempfile, time
-
-import h5py
-import numpy as np
+import json, os, signal, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks
+import restart_compare
+from restart_compare import why
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("checkpoint_restart")
@@ -27,13 +26,6 @@ SCENE = ["-options_file", os.path.join(ROOT, "options", "paper.opts"), "-final_t
          "-camera", "-camera_fps", "10000", "-camera_integration", "5e-5"]  # frames open across the checkpoint
 ACTIVE = 4e-5  # s: the shear wave has reached the crack, its faces rub (a restart must carry their memory)
 TEXT = ["probes.csv", "energy.csv", "crack_state.csv"]
-NOT_FIGURES = {"wall_time_s", "stages", "date", "command_line", "restarted_from", "complete", "host", "options", "option_values"}
-
-
-def why(err):
-    """The run's own error line, or the end of what it printed."""
-    lines = [l for l in err.splitlines() if l.startswith("vibrotherm: error")]
-    return lines[0] if lines else err[-500:]
 
 
 def command(ranks, extra):
@@ -45,69 +37,17 @@ def run(ranks, extra):
     return r.returncode, r.stdout, r.stderr
 
 
-def checkpoint_time(out):
-    """Simulated time of the latest checkpoint (-1: none yet)."""
-    try:
-        with h5py.File(os.path.join(out, "checkpoint.h5"), "r") as f:
-            return float(f["wave.clock"]["values"][0])
-    except (OSError, KeyError):
-        return -1.0
-
-
 def interrupted(out, how):
-    """Starts the run, waits for a checkpoint taken once the crack works, then stops it (SIGUSR1 to mpiexec,
-    which forwards it, or SIGKILL to the ranks); the exit status."""
-    p = subprocess.Popen(command(2, ["-output_dir", out]), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while checkpoint_time(out) < ACTIVE and p.poll() is None and time.time() < deadline:
-        time.sleep(0.05)
-    if how == "usr1":
-        p.send_signal(signal.SIGUSR1)
-    else:  # a crash: the ranks die without a word
-        time.sleep(0.5)
-        # This run's ranks only (their command line starts with the executable and names
-        # this output directory): other tests run the same executable at the same time.
-        subprocess.run(["pkill", "-KILL", "-f", "^%s .*-output_dir %s$" % (exe, out)])
-    _, err = p.communicate()
-    return p.returncode, err
-
-
-def datasets(path):
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, o[()]) if isinstance(o, h5py.Dataset) else None)
-    return out
+    """A 2-rank run stopped once its checkpoint is past ACTIVE (SIGUSR1, or SIGKILL: a crash)."""
+    return restart_compare.interrupted(command(2, ["-output_dir", out]), exe, out, ACTIVE, how)
 
 
 def compare_exact(ref, out, label):
-    for name in TEXT:
-        same = open(os.path.join(ref, name), "rb").read() == open(os.path.join(out, name), "rb").read()
-        check(same, "%s: %s differs from the uninterrupted run" % (label, name))
-    for name in ["fields.h5", "crack_heat.h5", "camera.h5"]:
-        a, b = datasets(os.path.join(ref, name)), datasets(os.path.join(out, name))
-        check(a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a),
-              "%s: %s differs from the uninterrupted run" % (label, name))
-    sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in (ref, out))
-    differ = [k for k in sa if k not in NOT_FIGURES and sa[k] != sb.get(k)]
-    check(not differ, "%s: summary figures differ: %s" % (label, differ))
-    check(sb["complete"] is True and "restarted_from" in sb, "%s: summary says complete, restarted from" % label)
+    restart_compare.compare_exact(check, ref, out, label, TEXT, ["fields.h5", "crack_heat.h5", "camera.h5"])
 
 
 def compare_rounding(ref, out, label):
-    """Columns relative to their largest value; the budget error (a small difference of
-    large energies, as a fraction of the work) absolutely."""
-    for name in ["probes.csv", "energy.csv"]:
-        a = np.genfromtxt(os.path.join(ref, name), delimiter=",", names=True)
-        b = np.genfromtxt(os.path.join(out, name), delimiter=",", names=True)
-        for column in a.dtype.names:
-            x, y = a[column], b[column]
-            scale = 1.0 if column == "budget_error" else np.nanmax(np.abs(x)) + 1e-300
-            ok = x.shape == y.shape and (np.all(np.isnan(x)) or np.nanmax(np.abs(x - y)) < 1e-9 * scale)
-            check(ok, "%s: %s column %s not within rounding of the 2-rank run" % (label, name, column))
-    sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in (ref, out))
-    for key in ["dissipated_energy", "heat_deposited"]:
-        check(abs(sa[key] - sb[key]) <= 1e-9 * abs(sa[key]), "%s: %s %g vs %g" % (label, key, sa[key], sb[key]))
-    check(abs(sa["max_budget_error"] - sb["max_budget_error"]) <= 1e-9, "%s: max_budget_error" % label)
+    restart_compare.compare_rounding(check, ref, out, label)
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -169,12 +109,6 @@ with tempfile.TemporaryDirectory() as tmp:
     r = subprocess.run(heat_alone + ["-restart", out], capture_output=True, text=True)
     check(r.returncode == 0, "heat alone, restart: exit 0 (%s)" % why(r.stderr))
     if r.returncode == 0:
-        for name in TEXT:
-            same = open(os.path.join(ref, name), "rb").read() == open(os.path.join(out, name), "rb").read()
-            check(same, "heat alone, restart: %s differs from the uninterrupted run" % name)
-        for name in ["fields.h5", "crack_heat.h5"]:
-            a, b = datasets(os.path.join(ref, name)), datasets(os.path.join(out, name))
-            check(a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a),
-                  "heat alone, restart: %s differs from the uninterrupted run" % name)
+        restart_compare.compare_files(check, ref, out, "heat alone, restart", TEXT, ["fields.h5", "crack_heat.h5"])
 
 check.finish()

@@ -42,7 +42,7 @@ PetscErrorCode Recorder::Save(store::Checkpoint& checkpoint) const {
   }
   checkpoint.PutShared("recorder/output_rises", rises);
   const io::FieldPeakSummary& p = field_peak_.peak();
-  checkpoint.PutShared("recorder/field_peak", {p.known ? 1.0 : 0.0, p.rise, p.t, p.x, p.y});
+  checkpoint.PutShared("recorder/field_peak", {p.known ? 1.0 : 0.0, p.rise, p.t, p.x, p.y, p.z});
   if (camera_) PetscCall(camera_->Save(checkpoint));
   PetscFunctionReturn(0);
 }
@@ -60,8 +60,8 @@ PetscErrorCode Recorder::Restore(const store::Checkpoint& checkpoint, const wave
   summary_->output_temperature_rise.clear();
   for (std::size_t i = 0; i + 1 < v.size(); i += 2 + static_cast<std::size_t>(v[i + 1]))
     summary_->output_temperature_rise.push_back({v[i], Unflatten(&v[i + 2], static_cast<std::size_t>(v[i + 1]))});
-  PetscCall(checkpoint.GetShared("recorder/field_peak", &v, 5));
-  field_peak_.set_peak({v[0] != 0.0, v[1], v[2], v[3], v[4]});
+  PetscCall(checkpoint.GetShared("recorder/field_peak", &v, 6));
+  field_peak_.set_peak({v[0] != 0.0, v[1], v[2], v[3], v[4], v[5]});
   if (camera_) PetscCall(camera_->Restore(checkpoint, dir_));
   PetscCall(checkpoint.GetShared("recorder/written_times", &written_times_));
   if (fields_.open() && checkpoint.same_ranks()) {  // index what the .partial holds already

@@ -31,7 +31,10 @@ class FieldPeak {
   void Summarise(io::RunSummary* summary) const;
   /// The peak so far (checkpoints).
   const io::FieldPeakSummary& peak() const { return peak_; }
-  void set_peak(const io::FieldPeakSummary& peak) { peak_ = peak; }
+  void set_peak(const io::FieldPeakSummary& peak) {
+    peak_ = peak;
+    peak_.dimension = dim_;
+  }
 
  private:
   std::string ValidityWarning() const;
