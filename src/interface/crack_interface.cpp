@@ -98,6 +98,7 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
   if (dim_ == 3) {  // one planar crack; no parameterisation along it yet (ξ = 0.5)
     PetscCall(ContactCells3D(space, &cells_));
     for (ContactCell& cell : cells_) cell.xi = 0.5, cell.a0 = a0.at(cell.xi);
+    PetscCall(FindCentre());
     PetscFunctionReturn(0);
   }
   const ContactGeometry geometry(cracks.facets(), static_cast<int>(space.degree()));
@@ -343,6 +344,20 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CrackInterface::FindCentre() {
+  PetscFunctionBeginUser;
+  // The area-weighted mean of the cells: the centre of a rectangular crack (its
+  // lattice of nodes is symmetric), the origin of crack_state.csv's s1, s2.
+  double sums[4] = {0.0, 0.0, 0.0, 0.0};
+  for (const ContactCell& c : cells_) {
+    sums[0] += c.weight * c.x, sums[1] += c.weight * c.y, sums[2] += c.weight * c.z;
+    sums[3] += c.weight;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 4, MPI_DOUBLE, MPI_SUM, comm_));
+  for (int d = 0; d < 3; ++d) centre_[d] = sums[3] > 0.0 ? sums[d] / sums[3] : 0.0;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u, std::vector<CrackCellRecord>* records) {
   PetscFunctionBeginUser;
   const PetscScalar* U = nullptr;
@@ -357,6 +372,12 @@ PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u
     r.a = a_[i], r.b = b_[i][0], r.b0 = law_->slip_offset(i)[0];
     r.N = s.N, r.T = s.T[0], r.state = s.state;
     r.power = power_[i], r.W = W_[i];
+    if (dim_ == 3) {  // the position on the crack plane, and the second tangential components
+      const double d[3] = {c.x - centre_[0], c.y - centre_[1], c.z - centre_[2]};
+      r.xi = d[0] * c.s[0] + d[1] * c.s[1] + d[2] * c.s[2];
+      r.eta = d[0] * c.s2[0] + d[1] * c.s2[1] + d[2] * c.s2[2];
+      r.z = c.z, r.b2 = b_[i][1], r.T2 = s.T[1];
+    }
     if (U) r.ux = PetscRealPart(U[Slot(i, 0)]), r.uy = PetscRealPart(U[Slot(i, 1)]);
     records->push_back(r);
   }

@@ -8,11 +8,11 @@
 namespace vibrotherm::interface {
 namespace {
 
-constexpr int kFields = 15;
+constexpr int kFields = 19;
 
 std::array<double, kFields> Pack(const CrackCellRecord& r) {
   return {double(r.slot), double(r.crack), r.xi, r.x, r.y, r.a, r.b, r.b0, r.N, r.T,
-          double(static_cast<int>(r.state)), r.power, r.W, r.ux, r.uy};
+          double(static_cast<int>(r.state)), r.power, r.W, r.ux, r.uy, r.eta, r.z, r.b2, r.T2};
 }
 
 CrackCellRecord Unpack(const double* v) {
@@ -22,6 +22,7 @@ CrackCellRecord Unpack(const double* v) {
   r.xi = v[2], r.x = v[3], r.y = v[4], r.a = v[5], r.b = v[6], r.b0 = v[7], r.N = v[8], r.T = v[9];
   r.state = static_cast<contact::ContactState>(static_cast<int>(v[10]));
   r.power = v[11], r.W = v[12], r.ux = v[13], r.uy = v[14];
+  r.eta = v[15], r.z = v[16], r.b2 = v[17], r.T2 = v[18];
   return r;
 }
 
@@ -43,7 +44,8 @@ PetscErrorCode GatherCrackRecords(MPI_Comm comm, const std::vector<CrackCellReco
   const bool slotted = std::all_of(on_root->begin(), on_root->end(), [](const CrackCellRecord& r) { return r.slot >= 0; });
   std::sort(on_root->begin(), on_root->end(), [slotted](const CrackCellRecord& p, const CrackCellRecord& q) {
     if (slotted) return p.slot < q.slot;
-    return p.crack != q.crack ? p.crack < q.crack : p.xi < q.xi;
+    if (p.crack != q.crack) return p.crack < q.crack;
+    return p.xi != q.xi ? p.xi < q.xi : p.eta < q.eta;  // 3D: along t1, then t2
   });
   PetscFunctionReturn(0);
 }

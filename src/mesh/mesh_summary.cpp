@@ -31,6 +31,19 @@ PetscErrorCode EdgeLength(const VertexCoordinates& x, DM dm, PetscInt edge, doub
   PetscFunctionReturn(0);
 }
 
+/// The heat mesh's cells per rank and in all, and its edge length range, from this rank's.
+PetscErrorCode ShareHeatMeshCounts(MPI_Comm comm, PetscInt local, double h_min, double h_max, MeshSummary* s) {
+  PetscFunctionBeginUser;
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  s->heat_cells_per_rank.assign(size, 0);
+  PetscCallMPI(MPI_Allgather(&local, 1, MPIU_INT, s->heat_cells_per_rank.data(), 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allreduce(&local, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&h_min, &s->heat_h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
+  PetscCallMPI(MPI_Allreduce(&h_max, &s->heat_h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscFunctionReturn(0);
+}
+
 /// Cells, vertices, edge lengths and cells per rank of the heat mesh.
 PetscErrorCode SummariseHeatMesh(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionBeginUser;
@@ -55,14 +68,7 @@ PetscErrorCode SummariseHeatMesh(const Specimen& specimen, MeshSummary* s) {
       h_max = std::max(h_max, h);
     }
   }
-  const PetscInt local = cEnd - cStart;  // no overlap: every cell is owned
-  PetscMPIInt size;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  s->heat_cells_per_rank.assign(size, 0);
-  PetscCallMPI(MPI_Allgather(&local, 1, MPIU_INT, s->heat_cells_per_rank.data(), 1, MPIU_INT, comm));
-  PetscCallMPI(MPI_Allreduce(&local, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(&h_min, &s->heat_h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
-  PetscCallMPI(MPI_Allreduce(&h_max, &s->heat_h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(ShareHeatMeshCounts(comm, cEnd - cStart, h_min, h_max, s));  // no overlap: every cell is owned
   PetscFunctionReturn(0);
 }
 
@@ -170,16 +176,9 @@ PetscErrorCode SummariseBoxHeatMesh(const Specimen& specimen, MeshSummary* s) {
   PetscCall(CountOwned(dm, 0, &s->heat_vertices));
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  const PetscInt local = cEnd - cStart;  // no overlap: every cell is owned
-  PetscMPIInt size;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  s->heat_cells_per_rank.assign(size, 0);
-  PetscCallMPI(MPI_Allgather(&local, 1, MPIU_INT, s->heat_cells_per_rank.data(), 1, MPIU_INT, comm));
-  PetscCallMPI(MPI_Allreduce(&local, &s->heat_cells, 1, MPIU_INT, MPI_SUM, comm));
   double h[2];
   PetscCall(EdgeRange(dm, &h[0], &h[1]));
-  PetscCallMPI(MPI_Allreduce(&h[0], &s->heat_h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
-  PetscCallMPI(MPI_Allreduce(&h[1], &s->heat_h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCall(ShareHeatMeshCounts(comm, cEnd - cStart, h[0], h[1], s));  // no overlap: every cell is owned
   PetscFunctionReturn(0);
 }
 

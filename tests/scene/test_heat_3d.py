@@ -10,10 +10,14 @@ with layers graded across the crack plane) with the friction power of its contac
    centre cell exchanged (crack_heat.h5), through the kernel of a plane source in an
    infinite body, θ(t) = Σ_k q_k (√(t − t_{k−1}) − √(t − t_k)) / (ρ c √(π α)) (the
    diffusion length, 44 µm at 20 µs, is far below the crack's 0.5 mm node spacing, so the
-   crack is a plane there): within 2.5 % at every heat step over the last third of the
-   run, 1 % at the end (the first steps after a clapping burst carry the time
-   discretisation's error, a few µs long);
+   crack is a plane there): within 1 % on average over the heat steps of the last third
+   of the run and at its end, 5 % at every one of them (the first step after a clapping
+   burst carries the time discretisation's error);
  - the camera films the front face (-camera_face front): its frames are written;
+ - crack_state.csv is keyed by the position on the crack plane (s1, s2 from the centre
+   along the strike and along t2 = -z: the Q2 node lattice inside the 6 x 4 mm crack,
+   every contact cell at every record time), and Σ W × area over its rows is the crack's
+   dissipated energy in energy.csv at the same time (1e-7: W has 9 digits there);
  - 2 ranks = serial: probe temperatures and camera frames within 1e-10 of the field's peak rise.
 
 usage: test_heat_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
@@ -31,7 +35,8 @@ CENTRE = (0.01, 0.01, 0.005)  # the crack's centre (a split vertex: a contact ce
 RHO_C, ALPHA = 2700 * 900.0, 237 / (2700 * 900.0)
 opts = ["-options_file", os.path.join(src, "options/block3d_small.opts"),
         "-probe_points", "%g,%g,%g,0.004,0.01,0.002" % CENTRE,
-        "-camera_face", "front", "-camera_fps", "2e5", "-camera_integration", "5e-6", "-camera_pixel", "5e-4"]
+        "-camera_face", "front", "-camera_fps", "2e5", "-camera_integration", "5e-6", "-camera_pixel", "5e-4",
+        "-crack_state_every", "40"]
 
 
 def plane_source(t, q, n):
@@ -39,6 +44,30 @@ def plane_source(t, q, n):
     tk = np.concatenate([[0.0], t])
     return np.sum(q[:n + 1] * (np.sqrt(t[n] - tk[:n + 1]) - np.sqrt(t[n] - tk[1:n + 2]))) / (
         RHO_C * np.sqrt(np.pi * ALPHA))
+
+
+def check_crack_state(out, cells, count):
+    rows = list(csv.DictReader(open(os.path.join(out, "crack_state.csv"))))
+    check(rows and list(rows[0].keys()) == "t,crack,s1,s2,x,y,z,a,b1,b2,N,T1,T2,state,power,W".split(","),
+          "crack_state.csv header %s" % (list(rows[0].keys()) if rows else None))
+    times = sorted({float(r["t"]) for r in rows})
+    check(len(rows) == count * len(times), "%d rows: %d cells x %d times" % (len(rows), count, len(times)))
+    s1, s2 = np.array([float(r["s1"]) for r in rows]), np.array([float(r["s2"]) for r in rows])
+    check(np.abs(s1).max() <= 3e-3 - 5e-4 + 1e-12 and np.abs(s2).max() <= 2e-3 - 5e-4 + 1e-12,
+          "s1, s2 inside the crack less its front: |s1| <= %.4g, |s2| <= %.4g" % (np.abs(s1).max(), np.abs(s2).max()))
+
+    def area(r):  # the cell's area from crack_heat.h5 (crack_state.csv has 9 digits)
+        d = np.linalg.norm(cells[:, :3] - np.array([float(r["x"]), float(r["y"]), float(r["z"])]), axis=1)
+        return cells[np.argmin(d), 3] if d.min() < 1e-8 else np.nan
+    energy = {float(r["t"]): float(r["dissipated"]) for r in csv.DictReader(open(os.path.join(out, "energy.csv")))}
+    matched = [t for t in times if any(abs(t - e) <= 1e-12 for e in energy)]
+    check(bool(matched), "a crack_state.csv time that energy.csv has")
+    if matched:
+        t = matched[-1]
+        W = sum(float(r["W"]) * area(r) for r in rows if float(r["t"]) == t)
+        D = [v for e, v in energy.items() if abs(e - t) <= 1e-12][0]
+        check(D > 0 and abs(W - D) <= 1e-7 * D, "crack_state.csv: sum W x area %.6g = dissipated %.6g at %.4g s"
+              % (W, D, t))
 
 
 def check_heat(out):
@@ -61,7 +90,7 @@ def check_heat(out):
     check(np.linalg.norm(cells[i, :3] - np.array(CENTRE)) < 1e-12, "a contact cell at the crack centre")
     rows = {float(r["t"]): float(r["temperature"]) - 293.15
             for r in csv.DictReader(open(os.path.join(out, "probes.csv"))) if r["probe"] == "0"}
-    worst, compared, last = 0.0, 0, None
+    worst, compared, last, errors = 0.0, 0, None, []
     for n in range(len(t)):
         match = [s for s in rows if abs(s - t[n]) <= 1e-12]
         if t[n] < 2 / 3 * t[-1] or not match:
@@ -70,8 +99,11 @@ def check_heat(out):
         check(reference > 0, "the crack centre heated by %.3g K at %.4g s" % (reference, t[n]))
         error = abs(rows[match[0]] / reference - 1)
         worst, compared, last = max(worst, error), compared + 1, error
+        errors.append(error)
     check(compared >= 5, "%d heat steps compared with the plane source" % compared)
-    check(worst <= 0.025, "crack centre vs plane source: worst %.4f over the last third" % worst)
+    check(worst <= 0.05, "crack centre vs plane source: worst %.4f over the last third" % worst)
+    check(bool(errors) and np.mean(errors) <= 0.01, "crack centre vs plane source: mean %.4f over the last third"
+          % (np.mean(errors) if errors else -1))
     check(last is not None and last <= 0.01, "crack centre vs plane source at the end: %s" % last)
     print("plane source: %d steps, worst %.4f, last %.4f" % (compared, worst, last or -1))
     with h5py.File(os.path.join(out, "camera.h5"), "r") as f:
@@ -80,6 +112,7 @@ def check_heat(out):
     check(count >= 3 and len(frames) == count, "camera.h5: %d noise-free frames of %d" % (len(frames), count))
     check(np.isfinite(frames).all() and frames.max() > 0, "camera frames finite, the face warmed (%.3g K)"
           % frames.max())
+    check_crack_state(out, cells, summary["contact_cells"])
     return rows, frames, summary["field_max_temperature_rise"]
 
 

@@ -16,6 +16,7 @@
 
 #include <petscvec.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -113,6 +114,8 @@ class CrackInterface final : public wave::WaveInterface {
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int dim_ = 2;
+  std::array<double, 3> centre_{};  ///< 3D: the crack's centre (FindCentre)
+  PetscErrorCode FindCentre();
   std::vector<ContactCell> cells_;
   PetscInt global_cells_ = 0;
   std::unique_ptr<contact::CrackLaw> law_;

@@ -14,8 +14,10 @@ namespace vibrotherm::interface {
 struct CrackCellRecord {
   long slot = -1;   ///< where the gathered record goes (probe index, or −1: sort along the cracks)
   int crack = 0;    ///< 0-based
-  double xi = 0.0;  ///< fraction along the crack
-  double x = 0.0, y = 0.0;
+  double xi = 0.0;  ///< fraction along the crack (3D: s1, the distance from the crack's centre along t1 [m])
+  double eta = 0.0;  ///< 3D: s2, the distance from the crack's centre along t2 [m]
+  double x = 0.0, y = 0.0, z = 0.0;
+  double b2 = 0.0, T2 = 0.0;  ///< 3D: the second tangential components [m], [Pa]
   double a = 0.0, b = 0.0, b0 = 0.0;  ///< half approach, half tangential displacement, slip offset [m]
   double N = 0.0, T = 0.0;            ///< tractions [Pa]
   contact::ContactState state = contact::ContactState::Loss;

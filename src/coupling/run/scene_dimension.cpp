@@ -38,7 +38,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
     PetscFunctionReturn(0);
   }
   PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-crack_probe",
-                        "-crack_probe_crack", "-crack_state_every", "-source_patch_edge", "-heat_crack_power"},
+                        "-crack_probe_crack", "-source_patch_edge", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
              "%s is not supported in 3D yet (-specimen_depth > 0)", given);
@@ -60,8 +60,6 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscCheck(std::string(cell) == "quad", comm, PETSC_ERR_USER_INPUT,
              "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell);
   PetscCheck(refine == 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine is not supported in 3D yet: refine with -mesh_h");
-  s->run.crack_state_every = 0;
-  PetscCall(PetscPrintf(comm, "vibrotherm: note: a 3D specimen: no crack_state.csv yet\n"));
   PetscFunctionReturn(0);
 }
 
