@@ -84,22 +84,33 @@ PetscErrorCode SurfaceHeatTransfer::Setup(const fe::LagrangeSpace& heat, const S
   PetscCall(VecGetSize(shape, &global_rows));
   PetscCall(DMRestoreGlobalVector(dm, &shape));
   const PetscInt n = static_cast<PetscInt>(owner.size()), owned = static_cast<PetscInt>(mine.size());
-  PetscCall(MatCreateAIJ(comm, rows, owned, global_rows, n, 64, nullptr, 64, nullptr, &transfer_));
-  PetscCall(MatSetOption(transfer_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   area_ = 0.0;
-  for (PetscInt i = 0; i < n; ++i) {
-    area_ += all[kPointFields * i + 3];
-    if (owner[i] == rank) PetscCall(AddColumn(heat, i, cells[i], refs[i], all[kPointFields * i + 3]));
+  for (PetscInt i = 0; i < n; ++i) area_ += all[kPointFields * i + 3];
+  // Twice: into a preallocator, then into T with its exact pattern (a heat node at a
+  // crack meets a hundred points or more; reallocating rows took minutes).
+  Mat pattern;
+  PetscCall(MatCreate(comm, &pattern));
+  PetscCall(MatSetType(pattern, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pattern, rows, owned, global_rows, n));
+  PetscCall(MatSetUp(pattern));
+  PetscCall(MatCreate(comm, &transfer_));
+  PetscCall(MatSetType(transfer_, MATAIJ));
+  PetscCall(MatSetSizes(transfer_, rows, owned, global_rows, n));
+  for (Mat T : {pattern, transfer_}) {
+    if (T == transfer_) PetscCall(MatPreallocatorPreallocate(pattern, PETSC_TRUE, transfer_));
+    for (PetscInt i = 0; i < n; ++i)
+      if (owner[i] == rank) PetscCall(AddColumn(heat, T, i, cells[i], refs[i], all[kPointFields * i + 3]));
+    PetscCall(MatAssemblyBegin(T, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(T, MAT_FINAL_ASSEMBLY));
   }
-  PetscCall(MatAssemblyBegin(transfer_, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(transfer_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDestroy(&pattern));
   PetscCall(MatCreateVecs(transfer_, &rate_, nullptr));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SurfaceHeatTransfer::AddColumn(const fe::LagrangeSpace& heat, PetscInt column, PetscInt cell,
+PetscErrorCode SurfaceHeatTransfer::AddColumn(const fe::LagrangeSpace& heat, Mat T, PetscInt column, PetscInt cell,
                                               const fe::ReferencePoint& ref, double area) {
   PetscFunctionBeginUser;
   DM dm = heat.dm();
@@ -112,7 +123,7 @@ PetscErrorCode SurfaceHeatTransfer::AddColumn(const fe::LagrangeSpace& heat, Pet
   PetscCall(DMPlexGetClosureIndices(dm, local, global, cell, PETSC_TRUE, &nc, &idx, nullptr, nullptr));
   for (PetscInt b = 0; b < nc; ++b) {
     const PetscInt row = idx[b] >= 0 ? idx[b] : -(idx[b] + 1);  // rows other ranks own: assembly moves them
-    PetscCall(MatSetValue(transfer_, row, column, area * psi[b], ADD_VALUES));
+    PetscCall(MatSetValue(T, row, column, area * psi[b], ADD_VALUES));
   }
   PetscCall(DMPlexRestoreClosureIndices(dm, local, global, cell, PETSC_TRUE, &nc, &idx, nullptr, nullptr));
   PetscFunctionReturn(0);

@@ -47,8 +47,8 @@ class SurfaceHeatTransfer {
   PetscInt first_point() const { return first_point_; }
 
  private:
-  /// Rows and values of point p's column: the closure dofs of its cell and A_p ψ there.
-  PetscErrorCode AddColumn(const fe::LagrangeSpace& heat_space, PetscInt column, PetscInt cell,
+  /// Rows and values of point p's column in T: the closure dofs of its cell and A_p ψ there.
+  PetscErrorCode AddColumn(const fe::LagrangeSpace& heat_space, Mat T, PetscInt column, PetscInt cell,
                            const fe::ReferencePoint& ref, double area);
   Mat transfer_ = nullptr;  ///< T: heat dofs × source points
   Vec rate_ = nullptr;      ///< q per source point (this rank's points)
