@@ -16,16 +16,17 @@ so the two discretisations are the same and only the crack law's two slip compon
    uz below 1e-9 of the ux amplitude; the slab's step never reduced (wave_dt_reductions 0);
  - with the coulomb law (one component of the vector law is the 2D law operation for
    operation) the agreement is to rounding: energies and probes within 1e-9;
- - the check discriminates: absorbing front and back faces instead of rollers change the
-   dissipated energy and the probes by more than 1 %.
+ - the check discriminates: absorbing front and back faces instead of rollers, or free ones
+   (plane stress), change the dissipated energy and the probes by more than 1 %.
 A temperature comparison (issue: crack centre within 2 %) belongs here once 3D runs heat:
 the twin's crack_state.csv and the slab's crack-centre temperature.
 
-Serial runs (a loaded 2-core machine runs two ranks slower); the coulomb pair and the
-absorbing slab run the first half of the excitation only.
+Serial runs, two at a time once the twin's mesh exists (a loaded 2-core machine runs two
+ranks slower); the coulomb pair and the slabs with other faces run the first half of the
+excitation only.
 
 usage: test_slab_2d3d.py VIBROTHERM SOURCE_DIR"""
-import csv, json, os, subprocess, sys, tempfile
+import concurrent.futures, csv, json, os, subprocess, sys, tempfile
 
 import numpy as np
 
@@ -136,16 +137,17 @@ with tempfile.TemporaryDirectory() as tmp:
         agree("mmd", differences(slab, twin), 2e-3, 1e-4, 1e-3)
         half = ["-final_time", str(T / 2)]
         coulomb = ["-crack_law", "coulomb"] + half
-        agree("coulomb", differences(run(SLAB + coulomb, path("slab_c")),
-                                     run(TWIN + coulomb + ["-mesh_file", path("section.msh")], path("twin_c"))),
-              1e-9, 1e-9, 1e-9)
-        d = differences(run(SLAB + half + ["-edge_front", "absorbing", "-edge_back", "absorbing"], path("absorbing")),
-                        twin)
-        if d:
-            print("absorbing front/back: dissipated %.3g, worst probe %.3g" %
-                  (d["dissipated"], max(v for k, v in d.items() if k.startswith("probe"))))
-        check(d is not None and d["dissipated"] > 1e-2, "absorbing front/back: dissipated differs by %s" %
-              (d and d["dissipated"]))
-        check(d is not None and max(v for k, v in d.items() if k.startswith("probe")) > 1e-2,
-              "absorbing front/back: the probes differ by more than 1 %")
+        faces = {kind: ["-edge_front", kind, "-edge_back", kind] for kind in ("absorbing", "free")}
+        jobs = {"slab_c": SLAB + coulomb, "twin_c": TWIN + coulomb + ["-mesh_file", path("section.msh")],
+                **{kind: SLAB + half + faces[kind] for kind in faces}}
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:  # two cores: two serial runs at once
+            runs = dict(zip(jobs, pool.map(lambda name: run(jobs[name], path(name)), jobs)))
+        agree("coulomb", differences(runs["slab_c"], runs["twin_c"]), 1e-9, 1e-9, 1e-9)
+        for kind in faces:  # damped faces; free faces: plane stress, not strain
+            d = differences(runs[kind], twin)
+            probes = d and max(v for k, v in d.items() if k.startswith("probe"))
+            print("%s front/back: dissipated %.3g, worst probe %.3g" % (kind, d["dissipated"], probes) if d else kind)
+            check(d is not None and d["dissipated"] > 1e-2 and probes > 1e-2,
+                  "%s front/back: the dissipated energy or the probes differ by 1 %% or less (%s, %s)" %
+                  (kind, d and d["dissipated"], probes))
 check.finish()
