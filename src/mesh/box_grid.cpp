@@ -28,7 +28,7 @@ std::vector<double> GradedSteps(double distance, double h0, double h, double gra
     steps.push_back(step);
     d += step;
   }
-  if (steps.empty()) steps.push_back(distance);  // distance below h0/2: one short step
+  if (steps.empty()) steps.push_back(distance);
   for (double& s : steps) s *= distance / d;
   return steps;
 }

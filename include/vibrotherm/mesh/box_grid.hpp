@@ -1,6 +1,7 @@
 // The structured hexahedral grid of a 3D box specimen with one planar rectangular
-// crack, buried, or through the thickness (z extent [0, D]) (plain C++, no PETSc): the node positions along each axis and
-// the smooth shear that tilts one grid plane into the crack plane.
+// crack, buried or through the thickness (z extent [0, D]) (plain C++, no PETSc): the
+// node positions along each axis and the smooth shear that tilts one grid plane into
+// the crack plane.
 //
 // The crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
 // -crack_angle), width Wc along z, normal in the x–y plane. A grid plane through
@@ -26,7 +27,8 @@ class BoxGrid {
  public:
   /// Checks the 3D specimen (throws std::invalid_argument naming the option: one
   /// crack, buried in x-y, buried or through the thickness in z, resolved by 2
-  /// cells along each extent it has a front across, a shear that does not fold the mesh) and builds the node positions along each axis.
+  /// cells along each extent it has a front across, a shear that does not fold the
+  /// mesh) and builds the node positions along each axis.
   explicit BoxGrid(const SpecimenGeometry& geometry);
 
   /// Cells along axis a.
