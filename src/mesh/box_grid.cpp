@@ -20,6 +20,7 @@ template <class... Parts>
 /// scaled to end exactly there (at least one step).
 std::vector<double> GradedSteps(double distance, double h0, double h, double grading) {
   std::vector<double> steps;
+  if (!(distance > 0.0)) return steps;  // the crack reaches this face (through the thickness)
   double d = 0.0;
   while (d < distance) {
     const double step = std::min(h, h0 + grading * d);
@@ -85,6 +86,7 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
   extent_[q_] = c.length * std::abs(steep ? std::sin(theta) : std::cos(theta));
   extent_[p_] = 0.0;
   extent_[2] = c.width;
+  if (through_thickness(g)) centre_[2] = 0.5 * g.depth, extent_[2] = g.depth;  // ends exactly on the faces
   normal_ = {-std::sin(theta), std::cos(theta), 0.0};
   std::array<int, 3> along{};
   along[q_] = CellsAcross(c.length, sizes.h_crack);
@@ -104,15 +106,18 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
   if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width);
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
   const auto e0 = c.end(0), e1 = c.end(1);
-  const bool buried = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
-                      std::max(e0[1], e1[1]) < g.height - tol && c.z - 0.5 * c.width > tol &&
-                      c.z + 0.5 * c.width < g.depth - tol;
-  if (!buried)
+  const bool inside_outline = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
+                              std::max(e0[1], e1[1]) < g.height - tol;
+  const double z0 = c.z - 0.5 * c.width, z1 = c.z + 0.5 * c.width;
+  // z: buried, or through the thickness (exactly [0, D]: a plane-strain slab's crack).
+  const bool z_ok = (z0 > tol && z1 < g.depth - tol) || through_thickness(g);
+  if (!inside_outline || !z_ok)
     reject("-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must ",
-           "be buried for now; z extent [", c.z - 0.5 * c.width, ", ", c.z + 0.5 * c.width, "] of [0, ", g.depth, "])");
+           "be buried in x-y and either buried in z or through the thickness, -crack_width = -specimen_depth centred ",
+           "at z = depth/2; z extent [", z0, ", ", z1, "] of [0, ", g.depth, "])");
   if (CellsAcross(c.length, g.h_crack) < 2)
     reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
-  if (CellsAcross(c.width, g.h_crack) < 2)
+  if (CellsAcross(c.width, g.h_crack) < 2 && !through_thickness(g))  // a through crack has no front along z
     reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
   // The shear x_p' = x_p + (x_q − c_q) m β(x_p) must not fold: |x_q − c_q| |m| max|β'| ≤ 3/4.
   const double theta = c.angle_deg * M_PI / 180.0;
@@ -125,6 +130,12 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
     reject("-crack_angle ", c.angle_deg, ": the 3D grid cannot be sheared into this crack plane without folding (the ",
            "crack centre lies ", std::min(cp, Lp - cp), " m from the faces normal to ", steep ? "x" : "y",
            "): a smaller inclination, or the crack farther from those faces");
+}
+
+bool BoxGrid::through_thickness(const SpecimenGeometry& g) {
+  const Crack& c = g.cracks.front();
+  const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
+  return std::abs(c.z - 0.5 * c.width) <= tol && std::abs(c.z + 0.5 * c.width - g.depth) <= tol;
 }
 
 double BoxGrid::blend(double xp) const {

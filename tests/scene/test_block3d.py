@@ -16,8 +16,10 @@
    tributary area in the crack plane, and Σ W·area over the squares (from the HDF5
    geometry) is the run's dissipated energy at the last output;
  - bad input is refused in one line naming the option (exit 2, nothing written): a
-   crack reaching outside, a crack under 2 cells along an extent, what 3D cannot do
-   yet (-physics heat, thermoelastic heating), the 3D-only options on a 2D specimen.
+   crack reaching outside (a through-thickness crack, -crack_width = -specimen_depth centred,
+   is accepted, but not one off-centre or reaching the x-y outline), a crack under 2 cells
+   along an extent, what 3D cannot do yet (-physics heat, thermoelastic heating), the
+   3D-only options on a 2D specimen.
 
 usage: test_block3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
@@ -114,6 +116,8 @@ if 1 in runs and 2 in runs:
 bad = [
     (["-crack_center", "0.01,0.01,0.009"], "-crack_width"),            # reaches z = 0.011 > depth
     (["-crack_width", "0.0012"], "-crack_width"),                       # one cell of -mesh_h_crack along z
+    (["-crack_width", "0.01", "-crack_center", "0.01,0.01,0.0045"], "-crack_width"),  # z [-0.0005, 0.0095]
+    (["-crack_width", "0.01", "-crack_length", "0.03"], "-crack_length"),  # through, but beyond left and right
     (["-crack_center", "0.01,0.01"], "-crack_center"),                  # 3 values a crack in 3D
     (["-physics", "heat"], "-physics heat"),
     (["-thermoelastic", "one_way"], "-thermoelastic"),

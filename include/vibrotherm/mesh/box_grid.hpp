@@ -1,6 +1,7 @@
-// The structured hexahedral grid of a 3D box specimen with one buried planar
-// rectangular crack (plain C++, no PETSc): the node positions along each axis and
-// the smooth shear that tilts one grid plane into the crack plane.
+// The structured hexahedral grid of a 3D box specimen with one planar rectangular
+// crack, buried or through the thickness (z extent [0, D]) (plain C++, no PETSc): the
+// node positions along each axis and the smooth shear that tilts one grid plane into
+// the crack plane.
 //
 // The crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
 // -crack_angle), width Wc along z, normal in the x–y plane. A grid plane through
@@ -33,8 +34,9 @@ struct BoxGridSizes {
 class BoxGrid {
  public:
   /// Checks the 3D specimen (throws std::invalid_argument naming the option: one
-  /// crack, buried, resolved by 2 cells along each extent, a shear that does not
-  /// fold the mesh) and builds the node positions along each axis.
+  /// crack, buried in x-y, buried or through the thickness in z, resolved by 2
+  /// cells along each extent it has a front across, a shear that does not fold the
+  /// mesh) and builds the node positions along each axis.
   explicit BoxGrid(const SpecimenGeometry& geometry);
   /// The same crack and box with other sizes (the heat grid).
   BoxGrid(const SpecimenGeometry& geometry, const BoxGridSizes& sizes);
@@ -51,6 +53,9 @@ class BoxGrid {
   int crack_cells(int along) const { return along == 0 ? crack_hi_[q_] - crack_lo_[q_] : crack_hi_[2] - crack_lo_[2]; }
   /// The unit normal of the crack plane (p = y: (−sin θ, cos θ, 0) up to sign).
   std::array<double, 3> normal() const { return normal_; }
+  /// Whether the crack of g runs through the thickness: its z extent is [0, D]
+  /// (-crack_width = -specimen_depth, centred), a plane-strain slab's crack.
+  static bool through_thickness(const SpecimenGeometry& g);
   /// Smallest and largest grid spacing before the shear [m].
   double h_min() const;
   double h_max() const;
