@@ -54,6 +54,7 @@ void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
     json.end_object();
   }
   json.end_array();
+  if (m.dimension == 3) json.value("source_area", m.source_area);
   json.end_object();
 }
 
@@ -76,7 +77,8 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
       {"wave_energy_left", energy}, {"work_thermal", energy},
       {"probe_max_temperature_rise", "K"}, {"output_temperature_rise", "K (t in s)"}, {"max_budget_error", "1"},
       {"max_friction_excess", "1"}, {"mesh.h_min", "m"}, {"mesh.h_max", "m"}, {"mesh.heat_h_min", "m"},
-      {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"derived.wave_dt", "s"}, {"derived.wave_stable_dt", "s"},
+      {"mesh.heat_h_max", "m"}, {"mesh.cracks.length", "m"}, {"mesh.source_area", "m^2"}, {"derived.wave_dt", "s"},
+      {"derived.wave_stable_dt", "s"},
       {"derived.couple_dt", "s"}, {"derived.heat_dt", "s"}, {"derived.final_time", "s"}, {"modes.frequency", "Hz"},
       {"field_max_temperature_rise", "K"}, {"field_max_temperature_rise_at", "t in s, x, y (and z in 3D) in m"},
       {"camera.peak_rise", "K"}, {"camera.netd", "K"}, {"camera.peak_time", "s"}, {"camera_peak_snr", "1"}};

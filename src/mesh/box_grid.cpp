@@ -95,6 +95,7 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
     nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a],
                            sizes.h_crack, sizes.h, sizes.grading, &crack_lo_[a], &crack_hi_[a], sizes.first_layer,
                            sizes.growth);
+  align_patch(g);
 }
 
 void BoxGrid::validate(const SpecimenGeometry& g) const {

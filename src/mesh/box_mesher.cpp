@@ -69,6 +69,7 @@ PetscErrorCode CreateBoxPlex(MPI_Comm comm, const SpecimenGeometry& g, const Box
       for (int d = 0; d < 3; ++d) x[3 * v + d] = p[d];
     }
   }));
+  PetscCall(LabelBoxPatch(*dm, g));
   PetscFunctionReturn(0);
 }
 

@@ -47,6 +47,10 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
                         "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
                         "into its plane: %d x %d crack faces)\n",
                         grid->cells(0), grid->cells(1), grid->cells(2), grid->crack_cells(0), grid->crack_cells(1)));
+  for (const BoxGrid::PatchSnap& snap : grid->patch_snaps())
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: the patch's edge at %c = %g m stays on the grid line at %g m "
+                          "(a fixed line within a third of a cell; summary.json mesh.source_area has the area)\n",
+                          "xyz"[snap.axis], snap.bound, snap.line));
   DM serial;
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));

@@ -85,6 +85,7 @@ double side_distance(const Point& p, const SpecimenGeometry& g, Side side) {
     case Side::Right: return g.width - p[0];
     case Side::Top: return g.height - p[1];
     case Side::Left: return p[0];
+    default: break;  // front, back: 3D faces
   }
   return 0.0;
 }

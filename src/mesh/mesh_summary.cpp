@@ -182,6 +182,22 @@ PetscErrorCode SummariseBoxHeatMesh(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionReturn(0);
 }
 
+/// 3D: the area of the faces labelled source, summed over the ranks (each face once).
+PetscErrorCode SourceArea(DM dm, const std::vector<bool>& ghost, PetscInt chart0, double* area) {
+  PetscFunctionBeginUser;
+  double mine = 0.0;
+  std::vector<PetscInt> faces;
+  PetscCall(StratumPoints(dm, to_string(EdgeKind::Source), 1, &faces));
+  for (PetscInt f : faces) {
+    PetscReal a, c[3], normal[3];
+    if (ghost[f - chart0]) continue;
+    PetscCall(DMPlexComputeCellGeometryFVM(dm, f, &a, c, normal));
+    mine += a;
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, area, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
 /// The 3D box: bulk and cohesive cells, edge range, the crack's faces, area, split and front vertices.
 PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionBeginUser;
@@ -219,6 +235,7 @@ PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscCallMPI(MPI_Allreduce(&local.tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&local.area, &crack.area, 1, MPI_DOUBLE, MPI_SUM, comm));
   s->cracks = {crack};
+  PetscCall(SourceArea(dm, ghost, chart0, &s->source_area));
   PetscCall(SummariseBoxHeatMesh(specimen, s));
   PetscFunctionReturn(0);
 }
@@ -326,6 +343,7 @@ PetscErrorCode PrintMeshSummary(MPI_Comm comm, const MeshSummary& s) {
                                   " buried tips, length %.6g m\n",
                             c.name.c_str(), c.facets, c.node_pairs, c.tips, c.length));
   if (s.cracks.empty()) PetscCall(PetscPrintf(comm, "  no cracks\n"));
+  if (s.dimension == 3) PetscCall(PetscPrintf(comm, "  source faces: area %.6g m^2\n", s.source_area));
   PetscCall(PetscPrintf(comm, "Heat mesh (%s): %" PetscInt_FMT " cells, %" PetscInt_FMT
                               " vertices, element edge length min %.3g m, max %.3g m\n",
                         s.heat_source.c_str(), s.heat_cells, s.heat_vertices, s.heat_h_min, s.heat_h_max));

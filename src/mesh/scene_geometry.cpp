@@ -37,8 +37,25 @@ const char* to_string(Side side) {
     case Side::Right: return "right";
     case Side::Top: return "top";
     case Side::Left: return "left";
+    case Side::Front: return "front";
+    case Side::Back: return "back";
   }
   return "?";
+}
+
+std::array<int, 2> face_axes(Side side) {
+  switch (side) {
+    case Side::Bottom:
+    case Side::Top: return {0, 2};
+    case Side::Left:
+    case Side::Right: return {1, 2};
+    default: return {0, 1};
+  }
+}
+
+int face_normal_axis(Side side) {
+  const auto a = face_axes(side);
+  return 3 - a[0] - a[1];
 }
 
 std::array<double, 2> Crack::end(int which) const {
@@ -141,19 +158,30 @@ void SpecimenGeometry::validate_patch() const {
   if (!patch.on) return;
   std::ostringstream msg;
   const Side side = patch.side;
-  const double length = side == Side::Bottom || side == Side::Top ? width : height;
-  if (!(patch.width > 0.0) || !std::isfinite(patch.width)) {
-    msg << "-source_patch_width must be > 0, got " << patch.width;
+  const bool box = depth > 0.0;
+  const char* where = box ? "face" : "edge";
+  if (!box && static_cast<int>(side) >= 4) {
+    msg << "-source_patch_edge " << to_string(side) << " applies to a 3D box only (-specimen_depth > 0)";
     reject(msg.str());
   }
-  if (!std::isfinite(patch.center) || patch.start() < -tolerance(*this) || patch.end() > length + tolerance(*this)) {
-    msg << "-source_patch_center " << patch.center << " with -source_patch_width " << patch.width << ": the patch ["
-        << patch.start() << ", " << patch.end() << "] m leaves the " << to_string(side) << " edge [0, " << length << "] m";
+  const double sizes[2] = {patch.width, patch.width2}, tol = 1e-9 * std::max({width, height, depth});
+  for (int k = 0; k < (box ? 2 : 1); ++k)
+    if (!(sizes[k] > 0.0) || !std::isfinite(sizes[k])) {
+      msg << "-source_patch_width must be > 0, got " << sizes[k];
+      reject(msg.str());
+    }
+  for (int k = 0; k < (box ? 2 : 1); ++k) {
+    const auto b = patch.bounds(k);
+    const double length = extent(face_axes(side)[k]);
+    if (std::isfinite(b[0] + b[1]) && b[0] >= -tol && b[1] <= length + tol) continue;
+    msg << "-source_patch_center " << (k == 0 ? patch.center : patch.center2) << " with -source_patch_width " << sizes[k]
+        << ": the patch [" << b[0] << ", " << b[1] << "] m leaves the " << to_string(side) << " " << where << " [0, "
+        << length << "] m" << (box ? (k == 0 ? " (its first axis)" : " (its second axis)") : "");
     reject(msg.str());
   }
-  if (edges[static_cast<int>(side)] == EdgeKind::Source) {
-    msg << "-source_patch_edge " << to_string(side) << ": -edge_" << to_string(side)
-        << " gives the kind of the rest of that edge and cannot be source (free, absorbing, roller, ...)";
+  if (face_kind(side) == EdgeKind::Source) {
+    msg << "-source_patch_edge " << to_string(side) << ": -edge_" << to_string(side) << " gives the kind of the rest of"
+        << " that " << where << " and cannot be source (free, absorbing, roller, ...)";
     reject(msg.str());
   }
 }
@@ -164,6 +192,7 @@ std::array<std::array<double, 2>, 2> SpecimenGeometry::patch_ends() const {
     case Side::Top: return {{{patch.start(), height}, {patch.end(), height}}};
     case Side::Left: return {{{0.0, patch.start()}, {0.0, patch.end()}}};
     case Side::Right: return {{{width, patch.start()}, {width, patch.end()}}};
+    default: break;  // front, back: 3D faces
   }
   return {};
 }

@@ -29,24 +29,47 @@ PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const char* na
   PetscFunctionReturn(0);
 }
 
-/// -source_patch_edge (its presence makes the patch), -source_patch_center (default the edge's middle),
-/// -source_patch_width.
+/// One or (3D) two values of a patch option into *first, *second; one value in 3D
+/// sets both (same_second: a square patch) or the first only (the centre's second
+/// coordinate keeps its default).
+PetscErrorCode PatchPair(PetscOptionItems* PetscOptionsObject, const char* option, const char* help, bool box,
+                         bool same_second, double* first, double* second, PetscBool* given) {
+  PetscFunctionBeginUser;
+  std::vector<double> v;
+  if (*first > 0.0) v = box ? std::vector<double>{*first, *second} : std::vector<double>{*first};
+  PetscCall(OptionsRealList(PetscOptionsObject, option, help, &v, given));
+  if (!*given) PetscFunctionReturn(0);
+  PetscCheck(v.size() == 1 || (box && v.size() == 2), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "%s takes %s, got %d values", option, box ? "one or two values on a 3D face (its two axes)" :
+             "one value on a 2D edge", static_cast<int>(v.size()));
+  *first = v[0];
+  if (v.size() == 2 || same_second) *second = v.back();
+  PetscFunctionReturn(0);
+}
+
+/// -source_patch_edge (its presence makes the patch), -source_patch_center (default the
+/// middle of the edge or face), -source_patch_width; 3D: two values each, along face_axes().
 PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g) {
   PetscFunctionBeginUser;
   PetscInt side = static_cast<PetscInt>(Side::Top);
   PetscBool on = PETSC_FALSE;
   PetscCall(OptionsChoice(PetscOptionsObject, "-source_patch_edge",
-                          "A transducer patch on this edge is the source (the rest of the edge keeps -edge_<side>)",
-                          {"bottom", "right", "top", "left"}, &side, &on));
+                          "A transducer patch on this edge (3D: face) is the source (the rest keeps -edge_<side>)",
+                          {"bottom", "right", "top", "left", "front", "back"}, &side, &on));
   g->patch.on = on;
   g->patch.side = static_cast<Side>(side);
-  const bool along_x = g->patch.side == Side::Bottom || g->patch.side == Side::Top;
-  g->patch.center = 0.5 * (along_x ? g->width : g->height);
+  const bool box = g->depth > 0.0;
+  const auto axes = face_axes(g->patch.side);
+  g->patch.center = 0.5 * g->extent(axes[0]);
+  g->patch.center2 = 0.5 * g->extent(axes[1]);
   PetscBool has_center = PETSC_FALSE, has_width = PETSC_FALSE;
-  PetscCall(PetscOptionsReal("-source_patch_center", "Centre of the patch along its edge [m] (x on bottom/top, y on the "
-                             "sides; default the middle)", nullptr, g->patch.center, &g->patch.center, &has_center));
-  PetscCall(PetscOptionsReal("-source_patch_width", "Width of the transducer patch [m]", nullptr, g->patch.width,
-                             &g->patch.width, &has_width));
+  PetscCall(PatchPair(PetscOptionsObject, "-source_patch_center",
+                      "Centre of the patch along its edge [m] (x on bottom/top, y on the sides; 3D: then z, "
+                      "front/back: x then y; default the middle)", box, false, &g->patch.center,
+                      &g->patch.center2, &has_center));
+  PetscCall(PatchPair(PetscOptionsObject, "-source_patch_width",
+                      "Width of the transducer patch [m] (3D: along the face's two axes; one value: a square)", box,
+                      true, &g->patch.width, &g->patch.width2, &has_width));
   PetscCheck(on || (!has_center && !has_width), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
              "-source_patch_%s given without -source_patch_edge (the edge the transducer sits on)",
              has_width ? "width" : "center");
@@ -98,8 +121,8 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
-  PetscCall(ReadSourcePatch(PetscOptionsObject, g));
   PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &three_d_given));
+  PetscCall(ReadSourcePatch(PetscOptionsObject, g));  // after the depth: the patch's axes
   PetscOptionsEnd();
   g->quads = cell == 0;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry

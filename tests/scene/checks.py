@@ -1,4 +1,5 @@
 """Shared by the scene tests: count checks, report failures, print the closing line; run a scene."""
+import os
 import subprocess
 import sys
 
@@ -33,6 +34,14 @@ def one_line_error(check, label, code, err, *words):
           "%s: one line, exit 2 (exit %d: %s)" % (label, code, err[-400:]))
     for word in words:
         check(bool(lines) and word in lines[0], "%s: the line names %s: %s" % (label, word, lines))
+
+
+def refused(check, exe, base, extra, out, *words):
+    """Runs vibrotherm with base + extra into out: refused in one line holding every word
+    (one_line_error), nothing written."""
+    r = subprocess.run([exe] + base + extra + ["-output_dir", out], capture_output=True, text=True)
+    one_line_error(check, " ".join(extra), r.returncode, r.stderr, *words)
+    check(not os.path.exists(out), "%s: nothing written" % " ".join(extra))
 
 
 def run_scene(check, exe, args, out, mpiexec=None, ranks=1):

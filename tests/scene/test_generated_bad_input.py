@@ -82,6 +82,8 @@ ALLOWED = {
     "-material_nu": {"0"},
     # No thermoelastic coupling (-help: "(-thermoelastic)"; the heat reader wants >= 0).
     "-material_expansion": {"0"},
+    # "0: a 2D plane-strain specimen" (-help).
+    "-specimen_depth": {"0"},
     # The wave reader declares -source_duration >= 0: 0 is a run without excitation.
     "-source_duration": {"0"},
     # Abrupt switch-on; uniform element size.

@@ -59,16 +59,29 @@ class BoxGrid {
   /// Smallest and largest grid spacing before the shear [m].
   double h_min() const;
   double h_max() const;
+  /// A patch bound that stayed on a fixed grid line nearby (the crack's edge, a face):
+  /// axis, requested bound, grid line (unsheared) [m].
+  struct PatchSnap {
+    int axis;
+    double bound, line;
+  };
+  const std::vector<PatchSnap>& patch_snaps() const { return patch_snaps_; }
 
  private:
   void validate(const SpecimenGeometry& g) const;
   double blend(double xp) const;
+  /// Moves grid nodes onto the transducer patch's bounds (box_patch.cpp).
+  void align_patch(const SpecimenGeometry& g);
+  /// The unsheared coordinate along axis a whose node lies at `target` on the face of
+  /// normal axis n at x_n = at; NaN when the shear bends that face's grid lines.
+  double unsheared(int a, int n, double at, double target) const;
 
   std::array<std::vector<double>, 3> nodes_;
   std::array<int, 3> crack_lo_{}, crack_hi_{};  ///< node indices of the crack's ends (p: its plane twice)
   int p_ = 1, q_ = 0;
   double slope_ = 0.0;
   std::array<double, 3> centre_{}, extent_{}, size_{}, normal_{};
+  std::vector<PatchSnap> patch_snaps_;
 };
 
 /// The 1D nodes of [0, length] with the crack's segment [b_lo, b_hi] in `cells`
@@ -77,6 +90,12 @@ class BoxGrid {
 /// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi. A plane
 /// (cells = 0) with first_layer > 0 gets geometric layers from first_layer by
 /// `growth` up to h0 on each side before that.
+/// Makes `target` a node of the sorted `nodes`: an existing node within tol (a node in
+/// `fixed`: within a third of the cell), else the nearest node not in `fixed` moved there
+/// (the nodes between its fixed neighbours stretched linearly), else a new node. Updates
+/// the indices in `fixed`, adds the target's, returns its position.
+double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol);
+
 std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
                                int* lo, int* hi, double first_layer = 0.0, double growth = 1.0);
 

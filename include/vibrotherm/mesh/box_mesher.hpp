@@ -15,4 +15,8 @@ namespace vibrotherm::mesh {
 PetscErrorCode CreateBoxPlex(MPI_Comm comm, const SpecimenGeometry& geometry, const BoxGrid& grid, DM* dm,
                              PetscInt* crack_faces);
 
+/// The faces of the transducer patch (-source_patch_edge) labelled source instead of
+/// their face's kind; after the vertices moved (the test is in physical coordinates).
+PetscErrorCode LabelBoxPatch(DM dm, const SpecimenGeometry& geometry);
+
 }  // namespace vibrotherm::mesh

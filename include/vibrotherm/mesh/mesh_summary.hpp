@@ -34,6 +34,7 @@ struct MeshSummary {
   std::vector<PetscInt> cells_per_rank;
   double h_min = 0.0, h_max = 0.0;  ///< shortest and longest bulk cell edge [m]
   std::vector<CrackSummary> cracks;
+  double source_area = 0.0;  ///< 3D: Σ areas of the faces labelled source (the face or the patch) [m²]
 };
 
 PetscErrorCode ComputeMeshSummary(const Specimen& specimen, MeshSummary* summary);

@@ -22,8 +22,15 @@ const std::array<EdgeKind, 6>& all_edge_kinds();
 /// "absorbing|free|roller|antisymmetric|fixed|source", for messages and help.
 std::string edge_kind_names();
 
-enum class Side { Bottom = 0, Right = 1, Top = 2, Left = 3 };
+/// The outer faces: the four edges of 2D (and of the box's x-y section), then the
+/// 3D box's front (z = depth) and back (z = 0), the `side` label's values.
+enum class Side { Bottom = 0, Right = 1, Top = 2, Left = 3, Front = 4, Back = 5 };
 const char* to_string(Side side);
+/// The axes a patch on this face is measured along (0 x, 1 y, 2 z): the 2D edge's
+/// direction first (x on top/bottom and front/back, y on left/right), then z (y on front/back).
+std::array<int, 2> face_axes(Side side);
+/// The axis normal to this face.
+int face_normal_axis(Side side);
 
 struct Crack {
   double x = 0.0, y = 0.0;  ///< centre [m]
@@ -39,14 +46,22 @@ double crack_distance(const Crack& a, const Crack& b);
 
 /// A transducer patch: the source acts on [center − width/2, center + width/2] of one
 /// edge (measured along x on the bottom and top edges, along y on the sides); the rest
-/// of that edge keeps the edge's own kind.
+/// of that edge keeps the edge's own kind. 3D: the rectangle with that extent along the
+/// face's first axis and [center2 − width2/2, center2 + width2/2] along its second
+/// (face_axes: z on top/bottom/left/right, y on front/back).
 struct SourcePatch {
   bool on = false;
   Side side = Side::Top;
-  double center = 0.0, width = 0.0;  ///< [m]
+  double center = 0.0, width = 0.0;    ///< [m]
+  double center2 = 0.0, width2 = 0.0;  ///< 3D: along the face's second axis [m]
   /// The patch's ends as positions along its edge.
   double start() const { return center - 0.5 * width; }
   double end() const { return center + 0.5 * width; }
+  /// Its bounds along face axis k (0, 1): {start, end}.
+  std::array<double, 2> bounds(int k) const {
+    return k == 0 ? std::array<double, 2>{start(), end()}
+                  : std::array<double, 2>{center2 - 0.5 * width2, center2 + 0.5 * width2};
+  }
 };
 
 struct SpecimenGeometry {
@@ -64,6 +79,13 @@ struct SpecimenGeometry {
   SourcePatch patch;              ///< -source_patch_edge, -source_patch_center, -source_patch_width
   /// The patch's end points (x, y) on its edge.
   std::array<std::array<double, 2>, 2> patch_ends() const;
+  /// The kind of an outer face (the 2D edges, front, back).
+  EdgeKind face_kind(Side side) const {
+    const int s = static_cast<int>(side);
+    return s < 4 ? edges[s] : depth_edges[s - 4];
+  }
+  /// The box's extent along axis a (0 x, 1 y, 2 z).
+  double extent(int axis) const { return axis == 0 ? width : axis == 1 ? height : depth; }
 
   /// Throws std::invalid_argument naming the option: non-positive sizes, a
   /// crack reaching beyond the specimen or lying along an edge, crossing or

@@ -38,7 +38,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
     PetscFunctionReturn(0);
   }
   PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-crack_probe",
-                        "-crack_probe_crack", "-source_patch_edge", "-heat_crack_power"},
+                        "-crack_probe_crack", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
              "%s is not supported in 3D yet (-specimen_depth > 0)", given);

@@ -120,6 +120,24 @@ PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode StratumPoints(DM dm, const char* label, PetscInt value, std::vector<PetscInt>* points) {
+  PetscFunctionBeginUser;
+  points->clear();
+  DMLabel l;
+  IS is = nullptr;
+  PetscCall(DMGetLabel(dm, label, &l));
+  if (l) PetscCall(DMLabelGetStratumIS(l, value, &is));
+  if (!is) PetscFunctionReturn(0);
+  PetscInt n;
+  const PetscInt* p;
+  PetscCall(ISGetLocalSize(is, &n));
+  PetscCall(ISGetIndices(is, &p));
+  points->assign(p, p + n);
+  PetscCall(ISRestoreIndices(is, &p));
+  PetscCall(ISDestroy(&is));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move) {
   PetscFunctionBeginUser;
   Vec coordinates;

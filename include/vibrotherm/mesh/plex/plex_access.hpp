@@ -41,6 +41,9 @@ PetscErrorCode FaceCycle(DM dm, PetscInt face, std::vector<PetscInt>* corners, s
 /// coordinates in place (the coordinate dimension's values a vertex).
 PetscErrorCode MoveVertices(DM dm, const std::function<void(PetscScalar* x, PetscInt n)>& move);
 
+/// The points of a label's stratum on this rank (none when the label or the stratum is absent).
+PetscErrorCode StratumPoints(DM dm, const char* label, PetscInt value, std::vector<PetscInt>* points);
+
 /// Marks the points this rank does not own (leaves of the point SF).
 PetscErrorCode GhostPoints(DM dm, std::vector<bool>* ghost);
 

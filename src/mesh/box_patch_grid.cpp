@@ -1,0 +1,81 @@
+// The transducer patch on a face of a 3D box, in its grid: nodes moved onto the
+// patch's bounds so that its edges are grid lines and its faces exactly the
+// requested rectangle (box_patch_labels.cpp labels them).
+#include <algorithm>
+#include <cmath>
+
+#include "vibrotherm/mesh/box_grid.hpp"
+
+namespace vibrotherm::mesh {
+
+double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol) {
+  std::vector<double>& x = *nodes;
+  const auto is_fixed = [&](int i) { return std::find(fixed->begin(), fixed->end(), i) != fixed->end(); };
+  const int last = static_cast<int>(x.size()) - 1;
+  const int above = std::clamp(static_cast<int>(std::lower_bound(x.begin(), x.end(), target) - x.begin()), 1, last);
+  int near = above, far = above - 1;  // target in [x[above − 1], x[above]]
+  if (target - x[far] < x[near] - target) std::swap(near, far);
+  // A fixed node (the crack's edge, a face, the other bound) within a third of the cell
+  // stays the bound: a sliver cell would shrink the stable time step as much.
+  const double reach = is_fixed(near) ? std::max(tol, (x[above] - x[above - 1]) / 3.0) : tol;
+  if (std::abs(x[near] - target) <= reach) {
+    if (!is_fixed(near)) x[near] = target;
+    fixed->push_back(near);
+    return x[near];
+  }
+  const int m = !is_fixed(near) ? near : !is_fixed(far) ? far : -1;
+  if (m < 0) {  // both ends fixed (a patch narrower than a cell, a crack end): split the cell
+    x.insert(x.begin() + above, target);
+    for (int& f : *fixed) f += f >= above;
+    fixed->push_back(above);
+    return target;
+  }
+  // Stretch the nodes between m's fixed neighbours linearly: m moves by at most half a
+  // cell (2/3 when the nearer end is fixed), which keeps the grading (each cell at least
+  // a third of its size).
+  int lo = 0, hi = last;
+  for (int f : *fixed) {
+    if (f < m) lo = std::max(lo, f);
+    if (f > m) hi = std::min(hi, f);
+  }
+  const double old = x[m];
+  for (int i = lo + 1; i < m; ++i) x[i] = x[lo] + (x[i] - x[lo]) * (target - x[lo]) / (old - x[lo]);
+  for (int i = m + 1; i < hi; ++i) x[i] = x[hi] - (x[hi] - x[i]) * (x[hi] - target) / (x[hi] - old);
+  x[m] = target;
+  fixed->push_back(m);
+  return target;
+}
+
+double BoxGrid::unsheared(int a, int n, double at, double target) const {
+  if (a != p_ || slope_ == 0.0) return target;  // the shear moves x_p only
+  if (n != q_) return NAN;  // front, back: the shear moves x_p by x_q − c_q, which varies across the face
+  // On a face x_q = at the shear is x_p + (at − c_q) m β(x_p), increasing (it does not fold): bisect.
+  double lo = 0.0, hi = size_[p_];
+  for (int i = 0; i < 80; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (mid + (at - centre_[q_]) * slope_ * blend(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+void BoxGrid::align_patch(const SpecimenGeometry& g) {
+  if (!g.patch.on) return;
+  const Side side = g.patch.side;
+  const int n = face_normal_axis(side);
+  const bool far = side == Side::Top || side == Side::Right || side == Side::Front;
+  const auto axes = face_axes(side);
+  for (int k = 0; k < 2; ++k) {
+    const int a = axes[k];
+    std::vector<int> fixed = {0, crack_lo_[a], crack_hi_[a], cells(a)};
+    for (double bound : g.patch.bounds(k)) {
+      const double raw = unsheared(a, n, far ? size_[n] : 0.0, bound);
+      if (!std::isfinite(raw)) continue;
+      const double line = AlignNode(&nodes_[a], &fixed, raw, 1e-9 * size_[a]);
+      if (std::abs(line - raw) > 1e-9 * size_[a]) patch_snaps_.push_back({a, raw, line});
+    }
+    crack_lo_[a] = fixed[1];
+    crack_hi_[a] = fixed[2];
+  }
+}
+
+}  // namespace vibrotherm::mesh
