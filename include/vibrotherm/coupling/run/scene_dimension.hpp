@@ -1,8 +1,9 @@
 // The dimension of a scene and what a 3D scene may do yet. A 3D box
-// (-specimen_depth > 0) runs the waves and the crack contact only: no heat solve,
-// camera, modes, field output, crack probes or crack_state.csv, local time
-// stepping, thermoelastic coupling, harmonic start, implicit waves, restart,
-// mesh files, transducer patch or refinement. Each is refused naming its option.
+// (-specimen_depth > 0) runs waves, contact, friction heat, camera, outputs,
+// checkpoints, a transducer patch and the periodic continuation; not yet -physics
+// heat, modes, crack probes, local time stepping, thermoelastic coupling, damping
+// heat, harmonic start, implicit waves, mesh files or refinement: each is refused
+// naming its option. The 3D-only face options are refused on a 2D specimen.
 #pragma once
 
 #include "vibrotherm/coupling/run/scene.hpp"
@@ -12,9 +13,8 @@ namespace vibrotherm::coupling {
 /// 3 when -specimen_depth > 0 (the specimen module declares and checks the option), else 2.
 PetscErrorCode ReadSceneDimension(int* dimension);
 
-/// In 3D: refuses what 3D does not support (one line naming the option, exit 2),
-/// turns the automatic heat solve, periodic continuation and crack_state.csv off,
-/// and says once that the run is waves-only. Nothing in 2D. Collective.
+/// In 3D: refuses what 3D does not support (one line naming the option, exit 2); in
+/// 2D the 3D-only -heat_bc_front|back and -camera_face. Collective.
 PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* scene);
 
 }  // namespace vibrotherm::coupling
