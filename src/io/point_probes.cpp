@@ -128,10 +128,17 @@ void PointProbes::Flush(const TemperatureSeries* temperature) {
   pending_.clear();
 }
 
-void PointProbes::WriteTemperature(double t, std::size_t probe, double x, double y, double temperature) {
+void PointProbes::WriteTemperature(double t, std::size_t probe, const std::array<double, 3>& x, double temperature) {
   if (!file_) return;
-  file_->stream() << t << ',' << probe << ',' << x << ',' << y << ",nan,nan,nan,nan," << std::setprecision(17)
-                  << temperature << std::setprecision(12) << ",nan,nan,nan,nan,nan,,nan,nan\n";
+  std::ostream& out = file_->stream();
+  out << t << ',' << probe << ',' << x[0] << ',' << x[1];
+  if (dim_ == 3) {  // t,probe,x,y,z,ux,uy,uz,vx,vy,vz,temperature
+    out << ',' << x[2] << ",nan,nan,nan,nan,nan,nan," << std::setprecision(17) << temperature
+        << std::setprecision(12) << '\n';
+    return;
+  }
+  out << ",nan,nan,nan,nan," << std::setprecision(17) << temperature << std::setprecision(12)
+      << ",nan,nan,nan,nan,nan,,nan,nan\n";
 }
 
 PetscErrorCode PointProbes::Finish() {

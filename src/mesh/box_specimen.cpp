@@ -1,6 +1,8 @@
 #include "vibrotherm/mesh/box_specimen.hpp"
 
+#include <algorithm>
 #include <memory>
+#include <numeric>
 
 #include "vibrotherm/mesh/box_mesher.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
@@ -14,10 +16,10 @@ namespace {
 /// the crack), on its own grid: -heat_mesh_h_along on the crack, layers from
 /// -heat_mesh_h_crack growing by -heat_mesh_growth across its plane, up to
 /// -heat_mesh_h away (-heat_mesh wave: the wave grid's sizes).
-PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& sizes, DM* heat,
-                                 std::string* heat_source) {
+PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& sizes,
+                                 std::unique_ptr<BoxGrid>* heat_grid, DM* heat, std::string* heat_source) {
   PetscFunctionBeginUser;
-  std::unique_ptr<BoxGrid> grid;
+  std::unique_ptr<BoxGrid>& grid = *heat_grid;
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry, BoxHeatGridSizes(geometry, sizes)));
   PetscCall(PetscPrintf(comm, "Meshing: the heat box of %d x %d x %d hexahedra (%s)\n", grid->cells(0),
                         grid->cells(1), grid->cells(2),
@@ -29,6 +31,16 @@ PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry
 }
 
 }  // namespace
+
+int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array<int, 2>& heat_cells, bool* exact) {
+  constexpr int kLeast = 4, kMost = 16;
+  int nest = 1;
+  for (int side = 0; side < 2; ++side)
+    nest = std::lcm(nest, heat_cells[side] / std::gcd(heat_cells[side], wave_cells[side]));
+  const int subdivisions = nest * ((kLeast + nest - 1) / nest);
+  *exact = subdivisions <= kMost;
+  return std::min(subdivisions, kMost);
+}
 
 BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSizes& sizes) {
   return sizes.graded ? BoxGridSizes{sizes.h_along, sizes.h, sizes.grading, sizes.h_crack, sizes.growth}
@@ -60,7 +72,15 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   // boundary label and checks one cohesive cell per crack face.
   PetscCall(SplitCracks(serial, &s->wave));
   PetscCall(DMDestroy(&serial));
-  PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &s->heat, &s->heat_source));
+  std::unique_ptr<BoxGrid> heat_grid;
+  PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &heat_grid, &s->heat, &s->heat_source));
+  bool exact;
+  s->crack_face_subdivisions = CrackFaceSubdivisions({grid->crack_cells(0), grid->crack_cells(1)},
+                                                     {heat_grid->crack_cells(0), heat_grid->crack_cells(1)}, &exact);
+  if (!exact)
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat grid's crack faces do not nest in %d sub-squares a side "
+                          "of the wave grid's: the friction heat's transfer is conservative but not exact (make "
+                          "-mesh_h_crack a multiple of -heat_mesh_h_along)\n", s->crack_face_subdivisions));
   PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
   PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));

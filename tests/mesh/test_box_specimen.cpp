@@ -6,7 +6,9 @@
 //  - the crack's faces (-crack_length and -crack_width over -mesh_h_crack of them)
 //    lie in the crack plane through its centre, with its normal, and their areas
 //    sum to length × width;
-//  - the split adds exactly one cohesive cell per crack face.
+//  - the split adds exactly one cohesive cell per crack face;
+//  - the friction heat's sub-squares per wave crack face nest the heat grid's crack
+//    lines (every heat line on a sub-square edge) whenever 16 a side suffice.
 // Bad geometry is refused naming the option.
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
@@ -17,6 +19,7 @@
 
 #include "vibrotherm/mesh/box_grid.hpp"
 #include "vibrotherm/mesh/box_mesher.hpp"
+#include "vibrotherm/mesh/box_specimen.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
@@ -91,6 +94,29 @@ TEST_P(BoxSpecimen, FillsTheBoxAndLabelsThePlanarCrack) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Angles, BoxSpecimen, ::testing::Values(20.0, 70.0));
+
+TEST(CrackFaceSubdivisions, NestTheHeatGridLines) {
+  // Heat line j of n_h lies at j/n_h of the crack, sub-square edge i of m n_w at i/(m n_w):
+  // every heat line is an edge iff n_h divides m n_w.
+  for (int n_w = 1; n_w <= 24; ++n_w)
+    for (int n_h = n_w; n_h <= 8 * n_w; ++n_h) {
+      bool exact;
+      const int m = mesh::CrackFaceSubdivisions({n_w, 20}, {n_h, 40}, &exact);
+      ASSERT_GE(m, 4);
+      ASSERT_LE(m, 16);
+      const bool nests = (m * n_w) % n_h == 0 && (m * 20) % 40 == 0;
+      ASSERT_EQ(exact, nests) << n_w << " wave cells, " << n_h << " heat cells: " << m << " sub-squares";
+    }
+  bool exact;
+  EXPECT_EQ(mesh::CrackFaceSubdivisions({20, 10}, {40, 20}, &exact), 4);  // the default heat grid: halves
+  EXPECT_TRUE(exact);
+  EXPECT_EQ(mesh::CrackFaceSubdivisions({20, 1}, {160, 8}, &exact), 8);  // eighths (the slab of the 2D = 3D check)
+  EXPECT_TRUE(exact);
+  EXPECT_EQ(mesh::CrackFaceSubdivisions({20, 10}, {30, 10}, &exact), 6);  // thirds on one side
+  EXPECT_TRUE(exact);
+  mesh::CrackFaceSubdivisions({20, 10}, {33, 10}, &exact);  // 33 sub-squares would be needed
+  EXPECT_FALSE(exact);
+}
 
 TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   const auto message = [](mesh::SpecimenGeometry g) -> std::string {

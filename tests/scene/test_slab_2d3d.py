@@ -14,12 +14,16 @@ so the two discretisations are the same and only the crack law's two slip compon
    second order in the step where the diagram's is exact), every other column within 1e-4 of its largest value;
    the probes (mid-depth in 3D) within 1e-3 of each component's amplitude (issue: 1 %),
    uz below 1e-9 of the ux amplitude; the slab's step never reduced (wave_dt_reductions 0);
+ - the crack-centre temperature (both runs with heat; the slab's front and back faces
+   insulated, as plane strain is in z): at every source-period end within 2 % of the twin's
+   peak (issue: 2 %; measured 0.6 %). A period end, not every heat step: a clapping burst
+   heats the crack's first µm within one heat step, and the two laws' bursts may fall a
+   step apart (pointwise 15 % at a burst's top). The check discriminates: the slab with
+   sink front and back faces (the 3D default) differs by more than 2 %;
  - with the coulomb law (one component of the vector law is the 2D law operation for
    operation) the agreement is to rounding: energies and probes within 1e-9;
  - the check discriminates: absorbing front and back faces instead of rollers, or free ones
    (plane stress), change the dissipated energy and the probes by more than 1 %.
-A temperature comparison (issue: crack centre within 2 %) belongs here once 3D runs heat:
-the twin's crack_state.csv and the slab's crack-centre temperature.
 
 Serial runs, two at a time once the twin's mesh exists (a loaded 2-core machine runs two
 ranks slower); the coulomb pair and the slabs with other faces run the first half of the
@@ -37,13 +41,14 @@ exe, src = sys.argv[1:3]
 check = Checks("slab_2d3d")
 DEPTH, DT, T = 0.001, 3.5e-8, 1e-4  # DT: 0.7 of the slab's stability limit 5.03e-8 s (0.84: reduced)
 PROBES = [(0.025, 0.095), (0.025, 0.06), (0.0344, 0.0534)]  # near the top, above the crack, a tip
+CENTRE, PERIOD = (0.025, 0.05), 1e-5  # the crack centre: a temperature probe only (its wave side is either face)
 COARSE = ["-mesh_h", "0.004", "-mesh_h_crack", "0.001", "-source_duration", str(T), "-final_time", str(T),
           "-wave_dt", str(DT), "-probe_every", "5"]
-SLAB = ["-options_file", os.path.join(src, "options/slab3d.opts"), "-heat", "off", "-specimen_depth", str(DEPTH),
+SLAB = ["-options_file", os.path.join(src, "options/slab3d.opts"), "-specimen_depth", str(DEPTH),
         "-crack_center", "0.025,0.05,%g" % (DEPTH / 2), "-crack_width", str(DEPTH),
-        "-probe_points", ",".join("%g,%g,%g" % (x, y, DEPTH / 2) for x, y in PROBES)] + COARSE
-TWIN = ["-options_file", os.path.join(src, "options/paper.opts"), "-heat", "off", "-output_times", str(T),
-        "-probe_points", ",".join("%g,%g" % p for p in PROBES)] + COARSE
+        "-probe_points", ",".join("%g,%g,%g" % (x, y, DEPTH / 2) for x, y in PROBES + [CENTRE])] + COARSE
+TWIN = ["-options_file", os.path.join(src, "options/paper.opts"), "-output_times", str(T),
+        "-probe_points", ",".join("%g,%g" % p for p in PROBES + [CENTRE])] + COARSE
 CRACK_FACES, LAYERS = 20, 1  # 20 mm / 1 mm along the strike, 1 mm / 1 mm through the depth
 CONTACT_CELLS = (2 * CRACK_FACES - 1) * (2 * LAYERS + 1)  # Q2 node pairs but the two tip lines
 
@@ -98,6 +103,23 @@ def differences(slab, twin):
     return d
 
 
+def crack_centre_temperature(slab, twin):
+    """The largest difference of the crack-centre rise at the source-period ends (the
+    twin's rows), relative to the twin's largest rise over all its rows."""
+    def centre(run):
+        probes = run[2]
+        mine = probes["probe"] == len(PROBES)
+        return probes["t"][mine], probes["temperature"][mine] - 293.15
+
+    (t3, T3), (t2, T2) = centre(slab), centre(twin)
+    ends = np.arange(1, int(round(T / PERIOD)) + 1) * PERIOD
+    check(np.array_equal(t3, t2), "the crack-centre probe has the same rows in both runs")
+    check(np.isfinite(T3).all() and np.isfinite(T2).all() and T2.max() > 0, "the crack centre heats in both runs")
+    if not np.array_equal(t3, t2):
+        return np.inf
+    return np.abs(np.interp(ends, t3, T3) - np.interp(ends, t2, T2)).max() / T2.max()
+
+
 def agree(label, d, tol_dissipated, tol_energy, tol_probes):
     check(d is not None, "%s: the slab and the twin have the same rows" % label)
     for k, v in (d or {}).items():
@@ -126,7 +148,8 @@ with tempfile.TemporaryDirectory() as tmp:
     if slab:
         check_split(slab[0])
         check(slab[0]["wave_dt_reductions"] == 0, "the slab's step was reduced: lower DT")
-        uz = np.abs(slab[2]["uz"]).max() / np.abs(slab[2]["ux"]).max()
+        points = slab[2]["probe"] < len(PROBES)  # not the crack centre: one face's node of the split
+        uz = np.abs(slab[2]["uz"][points]).max() / np.abs(slab[2]["ux"][points]).max()
         check(uz < 1e-9, "plane strain: uz %.3g of the ux amplitude" % uz)
         r = subprocess.run(["/usr/bin/python3", os.path.join(src, "scripts/slab_section"), path("slab"),
                             path("section.msh")], capture_output=True, text=True)
@@ -135,14 +158,21 @@ with tempfile.TemporaryDirectory() as tmp:
     if slab and twin:
         check(twin[0]["mesh"]["cells"] == slab[0]["mesh"]["cells"], "the twin has the slab's cells in x-y")
         agree("mmd", differences(slab, twin), 2e-3, 1e-4, 1e-3)
+        dT = crack_centre_temperature(slab, twin)
+        print("crack-centre temperature at period ends: slab and twin differ by %.3g of the peak" % dT)
+        check(dT <= 2e-2, "crack-centre temperature: slab and twin differ by %.3g of the peak (issue: 2 %%)" % dT)
         half = ["-final_time", str(T / 2)]
         coulomb = ["-crack_law", "coulomb"] + half
         faces = {kind: ["-edge_front", kind, "-edge_back", kind] for kind in ("absorbing", "free")}
         jobs = {"slab_c": SLAB + coulomb, "twin_c": TWIN + coulomb + ["-mesh_file", path("section.msh")],
-                **{kind: SLAB + half + faces[kind] for kind in faces}}
+                **{kind: SLAB + half + faces[kind] for kind in faces},
+                "sink": SLAB + ["-heat_bc_front", "sink", "-heat_bc_back", "sink"]}
         with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:  # two cores: two serial runs at once
             runs = dict(zip(jobs, pool.map(lambda name: run(jobs[name], path(name)), jobs)))
         agree("coulomb", differences(runs["slab_c"], runs["twin_c"]), 1e-9, 1e-9, 1e-9)
+        dT = runs["sink"] and crack_centre_temperature(runs["sink"], twin)
+        print("sink front/back: crack-centre temperature differs by %.3g of the peak" % dT)
+        check(dT > 2e-2, "sink front/back: the crack-centre temperature differs by %.3g only" % dT)
         for kind in faces:  # damped faces; free faces: plane stress, not strain
             d = differences(runs[kind], twin)
             probes = d and max(v for k, v in d.items() if k.startswith("probe"))

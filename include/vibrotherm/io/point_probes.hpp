@@ -51,7 +51,7 @@ class PointProbes {
   /// Writes the held rows; temperature from `temperature` (nullptr: nan).
   void Flush(const TemperatureSeries* temperature);
   /// Writes a row with only a temperature (after the waves have stopped).
-  void WriteTemperature(double t, std::size_t probe, double x, double y, double temperature);
+  void WriteTemperature(double t, std::size_t probe, const std::array<double, 3>& x, double temperature);
   /// Publishes probes.csv (call once at the end of a successful run).
   PetscErrorCode Finish();
   std::size_t count() const { return points_.size(); }

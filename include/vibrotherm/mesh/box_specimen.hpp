@@ -6,6 +6,8 @@
 // empty: they are 2D; the friction heat finds the crack from the contact cells).
 #pragma once
 
+#include <array>
+
 #include "vibrotherm/mesh/box_grid.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 
@@ -13,6 +15,14 @@ namespace vibrotherm::mesh {
 
 /// The heat grid's sizes from the -heat_mesh* options (-heat_mesh wave: the wave grid's).
 BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSizes& sizes);
+
+/// Sub-squares per side of a wave crack face for the friction heat's quadrature (3 × 3
+/// Gauss points each), given the cells both grids put along the crack's two sides (each
+/// grid splits the crack evenly): a multiple of n_heat / gcd(n_heat, n_wave) on every
+/// side, so the heat grid's lines are sub-square edges and the heat basis is one
+/// polynomial on each (exact); at least 4 (a Q2 wave face), at most 16 (exact false:
+/// then accurate, not exact).
+int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array<int, 2>& heat_cells, bool* exact);
 
 /// geometry: checked by ReadSpecimenGeometry (depth > 0); exchange_length: as
 /// SpecimenCreate's (the heat mesh's default first layer). Collective.

@@ -34,6 +34,9 @@ struct Specimen {
   std::string heat_source;  ///< "graded", "wave" (the unsplit wave mesh) or the heat mesh file
   PointOrigin wave_origin, heat_origin;  ///< serial point of each local point (checkpoint keys)
   CrackSurface wave_cracks, heat_cracks;  ///< the cracks of each mesh, gathered once
+  /// 3D: sub-squares per side of a wave crack face in the friction heat's quadrature,
+  /// chosen so that their edges include the heat grid's lines on the crack (exact).
+  int crack_face_subdivisions = 4;
 };
 
 /// Reads -mesh_file or the generated-specimen options (-specimen_*, -crack_*,

@@ -167,14 +167,13 @@ PetscErrorCode FrictionHeat::AssembleTransfer(const fe::LagrangeSpace& heat_spac
 }
 
 PetscErrorCode FrictionHeat::SetupSurface(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                                          const fe::LagrangeSpace& heat_space) {
+                                          const fe::LagrangeSpace& heat_space, int subdivisions) {
   PetscFunctionBeginUser;
-  // 4 × 4 sub-squares of 3 × 3 Gauss points a face: exact for heat faces that split
-  // a wave face in 1, 2 or 4 along each side (the default heat grid: in 2).
-  constexpr int kSubdivisions = 4;
+  // m × m sub-squares of 3 × 3 Gauss points a face: exact when the heat faces split
+  // each sub-square's sides no further (the heat basis is then one polynomial on it).
   SurfacePoints points;
   Mat basis;
-  PetscCall(BuildCrackFaceQuadrature(crack, wave_space, kSubdivisions, &points, &basis));
+  PetscCall(BuildCrackFaceQuadrature(crack, wave_space, subdivisions, &points, &basis));
   SurfaceHeatTransfer psi;
   PetscCall(psi.Setup(heat_space, points));
   PetscCall(MatMatMult(psi.matrix(), basis, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &transfer_));
@@ -203,11 +202,11 @@ PetscErrorCode FrictionHeat::SetupSurface(const interface::CrackInterface& crack
 
 PetscErrorCode FrictionHeat::Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
                                    const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
-                                   const mesh::CrackSurface& heat_cracks) {
+                                   const mesh::CrackSurface& heat_cracks, int face_subdivisions) {
   PetscFunctionBeginUser;
   const PetscInt owned = static_cast<PetscInt>(crack.cells().size());
   if (wave_space.dim() == 3) {
-    PetscCall(SetupSurface(crack, wave_space, heat_space));
+    PetscCall(SetupSurface(crack, wave_space, heat_space, face_subdivisions));
   } else {
     PetscCall(BuildWaveElements(crack, wave_space, wave_cracks));
     std::vector<CrackElement> heat_elements;

@@ -14,12 +14,12 @@ PetscErrorCode AddEnergyLoad(Vec E, double interval, Vec Q, double* deposited) {
 }
 
 PetscErrorCode FrictionHeatSource::Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
-                                         const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
-                                         const mesh::CrackSurface& heat_cracks) {
+                                         const fe::LagrangeSpace& heat_space, const mesh::Specimen& specimen) {
   PetscFunctionBeginUser;
   crack_ = crack;
   comm_ = PetscObjectComm((PetscObject)heat_space.dm());
-  PetscCall(transfer_.Setup(*crack, wave_space, wave_cracks, heat_space, heat_cracks));
+  PetscCall(transfer_.Setup(*crack, wave_space, specimen.wave_cracks, heat_space, specimen.heat_cracks,
+                            specimen.crack_face_subdivisions));
   PetscFunctionReturn(0);
 }
 

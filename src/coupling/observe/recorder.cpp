@@ -127,9 +127,10 @@ PetscErrorCode Recorder::RecordTemperature(const io::TemperatureSeries& series, 
   } else {
     const std::size_t n = probes_.count();
     for (std::size_t p = 0; p < last_T_.size(); ++p) {
-      const double x = p < n ? probes_.points()[p][0] : crack_probe_xy_[2 * (p - n)];
-      const double y = p < n ? probes_.points()[p][1] : crack_probe_xy_[2 * (p - n) + 1];
-      probes_.WriteTemperature(series.t.back(), p, x, y, last_T_[p]);
+      const std::array<double, 3> x =
+          p < n ? probes_.points()[p]
+                : std::array<double, 3>{crack_probe_xy_[2 * (p - n)], crack_probe_xy_[2 * (p - n) + 1], 0.0};
+      probes_.WriteTemperature(series.t.back(), p, x, last_T_[p]);
     }
   }
   PetscFunctionReturn(0);

@@ -28,8 +28,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_.SetCrackPower(specimen.heat_cracks, std::vector<double>(ncracks, scene.run.heat_crack_power)));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
-    PetscCall(friction->Setup(waves->crack(), waves->solver().space(), specimen.wave_cracks, solver_.space(),
-                              specimen.heat_cracks));
+    PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), specimen));
     friction_ = friction.get();
     sources_.push_back(std::move(friction));
   }

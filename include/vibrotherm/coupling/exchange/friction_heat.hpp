@@ -28,11 +28,12 @@ class FrictionHeat {
 
   /// Matches the contact cells of `crack` (on wave_space's split mesh, whose cracks
   /// are wave_cracks) with the crack facets of heat_space's mesh (heat_cracks; in 3D
-  /// the contact cells' faces are located in the heat mesh, the crack surfaces unused).
+  /// the contact cells' faces are located in the heat mesh at the points of
+  /// face_subdivisions² sub-squares a face, the crack surfaces unused).
   /// Collective over both meshes' communicator.
   PetscErrorCode Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
                        const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
-                       const mesh::CrackSurface& heat_cracks);
+                       const mesh::CrackSurface& heat_cracks, int face_subdivisions);
   /// Q += heat load [W/m per heat dof] of the friction energy each cell dissipated
   /// since the last call (cumulative W [J/m²] per owned cell), spread over `interval`.
   PetscErrorCode AddLoad(const std::vector<double>& dissipated_per_area, double interval, Vec Q);
@@ -62,7 +63,7 @@ class FrictionHeat {
                                    std::vector<CrackElement>* elements) const;
   /// T = Ψ Φ of the 3D crack faces' quadrature.
   PetscErrorCode SetupSurface(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                              const fe::LagrangeSpace& heat_space);
+                              const fe::LagrangeSpace& heat_space, int subdivisions);
   PetscErrorCode AssembleTransfer(const fe::LagrangeSpace& heat_space, const std::vector<CrackElement>& heat_elements,
                                   PetscInt owned_cells);
 

@@ -79,8 +79,7 @@ class ReplayableHeatSource : public HeatSource {
 class FrictionHeatSource final : public ReplayableHeatSource {
  public:
   PetscErrorCode Setup(interface::CrackInterface* crack, const fe::LagrangeSpace& wave_space,
-                       const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
-                       const mesh::CrackSurface& heat_cracks);
+                       const fe::LagrangeSpace& heat_space, const mesh::Specimen& specimen);
   PetscErrorCode AddLoad(double t, double interval, Vec Q) override;
   PetscErrorCode Finish(const std::string& dir) override;
   const char* name() const override { return "friction"; }
