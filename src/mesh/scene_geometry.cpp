@@ -63,6 +63,15 @@ std::array<double, 2> Crack::end(int which) const {
   return {x + sign * length * std::cos(t), y + sign * length * std::sin(t)};
 }
 
+double Crack::distance_to(const std::array<double, 3>& p) const {
+  const double t = angle_deg * M_PI / 180.0;
+  const double dx = p[0] - x, dy = p[1] - y, dz = p[2] - z;
+  const double along = dx * std::cos(t) + dy * std::sin(t), normal = -dx * std::sin(t) + dy * std::cos(t);
+  const double beyond_length = std::max(std::abs(along) - 0.5 * length, 0.0);
+  const double beyond_width = std::max(std::abs(dz) - 0.5 * width, 0.0);
+  return std::sqrt(beyond_length * beyond_length + beyond_width * beyond_width + normal * normal);
+}
+
 namespace {
 
 [[noreturn]] void reject(const std::string& text) { throw std::invalid_argument(text); }

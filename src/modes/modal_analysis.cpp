@@ -41,22 +41,43 @@ ModalAnalysis::~ModalAnalysis() {
 
 namespace {
 
-/// Free directions of every owned node (2 − independent constraints of it).
-std::vector<std::vector<std::array<double, 2>>> FreeDirections(PetscInt nodes,
-                                                              const std::vector<wave::Constraint>& constraints) {
-  std::vector<std::vector<std::array<double, 2>>> constrained(nodes), free(nodes);
+using Direction = std::array<double, 3>;
+
+/// v minus its components along the orthonormal basis; true if what is left is not
+/// (nearly) zero, then normalised.
+bool Orthonormalise(const std::vector<Direction>& basis, Direction* v) {
+  for (const Direction& b : basis) {
+    const double dot = b[0] * (*v)[0] + b[1] * (*v)[1] + b[2] * (*v)[2];
+    for (int i = 0; i < 3; ++i) (*v)[i] -= dot * b[i];
+  }
+  const double norm = std::sqrt((*v)[0] * (*v)[0] + (*v)[1] * (*v)[1] + (*v)[2] * (*v)[2]);
+  if (norm < 1e-8) return false;
+  if (std::abs(norm - 1.0) > 1e-14)  // a unit vector stays as it is, bit for bit
+    for (double& x : *v) x /= norm;
+  return true;
+}
+
+/// Free directions of every owned node: the orthonormal complement, in D dimensions, of
+/// the span of its constraint directions (D − independent constraints of them). A
+/// direction orthogonal to one constraint keeps the 2D rule's (−d_y, d_x).
+std::vector<std::vector<Direction>> FreeDirections(int D, PetscInt nodes,
+                                                   const std::vector<wave::Constraint>& constraints) {
+  std::vector<std::vector<Direction>> constrained(nodes), free(nodes);
   for (const wave::Constraint& c : constraints) {
-    auto& dirs = constrained[c.node];
-    const bool repeated = std::any_of(dirs.begin(), dirs.end(), [&](const std::array<double, 2>& d) {
-      return std::abs(d[0] * c.d[1] - d[1] * c.d[0]) < 1e-8;
-    });
-    if (!repeated) dirs.push_back({c.d[0], c.d[1]});
+    Direction d{c.d[0], c.d[1], D == 3 ? c.d[2] : 0.0};
+    if (Orthonormalise(constrained[c.node], &d)) constrained[c.node].push_back(d);
   }
   for (PetscInt i = 0; i < nodes; ++i) {
-    if (constrained[i].empty())
-      free[i] = {{1.0, 0.0}, {0.0, 1.0}};
-    else if (constrained[i].size() == 1)
-      free[i] = {{-constrained[i][0][1], constrained[i][0][0]}};
+    std::vector<Direction> span = constrained[i];
+    std::vector<Direction> candidates;
+    if (D == 2 && span.size() == 1) candidates.push_back({-span[0][1], span[0][0], 0.0});
+    for (int axis = 0; axis < D; ++axis) candidates.push_back({axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0,
+                                                                axis == 2 ? 1.0 : 0.0});
+    for (Direction v : candidates)
+      if (static_cast<int>(span.size()) < D && Orthonormalise(span, &v)) {
+        span.push_back(v);
+        free[i].push_back(v);
+      }
   }
   return free;
 }
@@ -81,17 +102,18 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   PetscInt n_full, row_start;
   PetscCall(VecGetLocalSize(mass, &n_full));
   PetscCall(VecGetOwnershipRange(mass, &row_start, nullptr));
-  const auto free = FreeDirections(n_full / 2, boundary.constraints);
+  const PetscInt D = space_.dim();
+  const auto free = FreeDirections(static_cast<int>(D), n_full / D, boundary.constraints);
   PetscInt n_reduced = 0, col_start = 0;
   for (const auto& f : free) n_reduced += static_cast<PetscInt>(f.size());
   PetscCallMPI(MPI_Exscan(&n_reduced, &col_start, 1, MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(&n_reduced, &reduced_dofs_, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCall(MatCreateAIJ(comm, n_full, n_reduced, PETSC_DETERMINE, PETSC_DETERMINE, 2, nullptr, 2, nullptr, &P_));
+  PetscCall(MatCreateAIJ(comm, n_full, n_reduced, PETSC_DETERMINE, PETSC_DETERMINE, D, nullptr, D, nullptr, &P_));
   PetscInt col = col_start;
   for (std::size_t node = 0; node < free.size(); ++node)
     for (const auto& t : free[node]) {
-      for (PetscInt i = 0; i < 2; ++i)
-        if (t[i] != 0.0) PetscCall(MatSetValue(P_, row_start + 2 * node + i, col, t[i], INSERT_VALUES));
+      for (PetscInt i = 0; i < D; ++i)
+        if (t[i] != 0.0) PetscCall(MatSetValue(P_, row_start + D * node + i, col, t[i], INSERT_VALUES));
       ++col;
     }
   PetscCall(MatAssemblyBegin(P_, MAT_FINAL_ASSEMBLY));
@@ -109,18 +131,26 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::CellsNearCracks(const mesh::CrackSurface& cracks, double radius,
+PetscErrorCode ModalAnalysis::CellsNearCracks(const CrackDistance& crack_distance, double radius,
                                               std::vector<bool>* near) const {
   PetscFunctionBeginUser;
-  mesh::VertexCoordinates x;
-  PetscCall(x.Setup(space_.dm()));
   near->clear();
-  for (PetscInt c : space_.cells()) {
-    std::array<double, 2> centre;
-    PetscCall(mesh::CellCentroid(space_.dm(), x, c, &centre));
-    near->push_back(std::any_of(cracks.lines().begin(), cracks.lines().end(), [&](const mesh::CrackLine& crack) {
-      return crack.Distance(centre[0], centre[1]) <= radius;
-    }));
+  if (space_.dim() == 2) {
+    mesh::VertexCoordinates x;
+    PetscCall(x.Setup(space_.dm()));
+    for (PetscInt c : space_.cells()) {
+      std::array<double, 2> centre;
+      PetscCall(mesh::CellCentroid(space_.dm(), x, c, &centre));
+      near->push_back(crack_distance({centre[0], centre[1], 0.0}) <= radius);
+    }
+  } else {
+    mesh::VertexPositions<3> x;
+    PetscCall(x.Setup(space_.dm()));
+    for (PetscInt c : space_.cells()) {
+      geometry::Point<3> centre;
+      PetscCall(mesh::CellCentroid(space_.dm(), x, c, &centre));
+      near->push_back(crack_distance({centre[0], centre[1], centre[2]}) <= radius);
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -156,7 +186,7 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<boo
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const mesh::CrackSurface& cracks) {
+PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDistance& crack_distance) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)K_);
   PetscLogEvent solve_event;
@@ -191,7 +221,7 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const mesh::Cra
              "-modes: SLEPc found no mode near %g Hz (try -modes_eps_max_it or another -modes_target_frequency)",
              options.target_frequency);
   std::vector<bool> near;
-  PetscCall(CellsNearCracks(cracks, options.defect_radius, &near));
+  if (crack_distance) PetscCall(CellsNearCracks(crack_distance, options.defect_radius, &near));
   Vec reduced, full;
   PetscCall(MatCreateVecs(K_, &reduced, nullptr));
   PetscCall(MatCreateVecs(P_, nullptr, &full));
@@ -214,7 +244,7 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const mesh::Cra
     Mode mode{std::sqrt(std::max(PetscRealPart(lambda), 0.0)) / (2.0 * M_PI), NAN, error};
     // A rigid motion (a free specimen's zero mode) strains nothing: no participation.
     const bool rigid = mode.frequency < 1e-3 * options.target_frequency;
-    if (!rigid && cracks.crack_count() > 0) PetscCall(DefectParticipation(shape, near, &mode.participation));
+    if (!rigid && crack_distance) PetscCall(DefectParticipation(shape, near, &mode.participation));
     found.push_back({mode, shape});
   }
   std::sort(found.begin(), found.end(),

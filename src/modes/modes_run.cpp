@@ -1,8 +1,46 @@
 #include "vibrotherm/modes/modes_run.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
 
 namespace vibrotherm::modes {
+namespace {
+
+/// The distance to the specimen's cracks (empty without one) and the longest crack's
+/// length: the 2D cracks as gathered lines, a 3D box's as the rectangles of its options.
+PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, CrackDistance* distance,
+                               double* longest) {
+  PetscFunctionBeginUser;
+  *longest = 0.0;
+  PetscInt dim;
+  PetscCall(DMGetDimension(specimen.wave, &dim));
+  if (dim == 2) {
+    const mesh::CrackSurface& cracks = specimen.wave_cracks;
+    for (PetscInt i = 0; i < cracks.crack_count(); ++i) *longest = std::max(*longest, cracks.line(i).length());
+    if (cracks.crack_count() > 0)
+      *distance = [&cracks](const std::array<double, 3>& p) {
+        double nearest = INFINITY;
+        for (const mesh::CrackLine& crack : cracks.lines()) nearest = std::min(nearest, crack.Distance(p[0], p[1]));
+        return nearest;
+      };
+    PetscFunctionReturn(0);
+  }
+  mesh::SpecimenGeometry geometry;
+  PetscCall(mesh::ReadSpecimenGeometry(comm, &geometry));
+  const std::vector<mesh::Crack> rectangles = geometry.cracks;
+  for (const mesh::Crack& c : rectangles) *longest = std::max(*longest, c.length);
+  if (!rectangles.empty())
+    *distance = [rectangles](const std::array<double, 3>& p) {
+      double nearest = INFINITY;
+      for (const mesh::Crack& crack : rectangles) nearest = std::min(nearest, crack.distance_to(p));
+      return nearest;
+    };
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
 
 PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::Scene& scene, io::RunSummary* summary) {
   PetscFunctionBeginUser;
@@ -10,9 +48,9 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
   const wave::ElasticMaterial& material = scene.material;
   const wave::Excitation& excitation = scene.excitation;
   const wave::WaveOptions& wave_options = scene.wave;
-  double longest = 0.0;
-  for (PetscInt i = 0; i < specimen.wave_cracks.crack_count(); ++i)
-    longest = std::max(longest, specimen.wave_cracks.line(i).length());
+  CrackDistance crack_distance;
+  double longest;
+  PetscCall(CrackDistanceOf(comm, specimen, &crack_distance, &longest));
   PetscCall(modes::ReadModesOptions(comm, excitation.signal.frequency, longest / 2, &options_));
   PetscLogStage stage;
   PetscCall(PetscLogStageRegister("Modes", &stage));
@@ -23,7 +61,7 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
                         " modes near %g Hz, defect radius %g m\n",
                         analysis_.dofs(), wave_options.degree, options_.n, options_.target_frequency,
                         options_.defect_radius));
-  PetscCall(analysis_.Solve(options_, specimen.wave_cracks));
+  PetscCall(analysis_.Solve(options_, crack_distance));
   PetscCall(PetscLogStagePop());
   summary->stages["modes"] = MPI_Wtime() - t0;
   summary->physics_ran = {"modes"};

@@ -39,6 +39,8 @@ struct Crack {
   double z = 0.0, width = 0.0;  ///< 3D: centre's z and extent along z [m]
   /// End points: centre ∓ (L/2)(cos θ, sin θ); tangent s from end 0 to end 1.
   std::array<double, 2> end(int which) const;
+  /// 3D: distance from p to the crack's rectangle (centre ± (L/2)(cos θ, sin θ, 0) ± (W/2) ẑ).
+  double distance_to(const std::array<double, 3>& p) const;
 };
 
 /// Shortest distance between two cracks (0 when they cross).

@@ -17,6 +17,9 @@
 // cells whose centroid lies within -modes_defect_radius of a crack.
 #pragma once
 #include <slepceps.h>
+
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 #include "vibrotherm/fe/lagrange_space.hpp"
@@ -39,6 +42,9 @@ struct Mode {
   double error;          ///< relative residual ‖Kφ − ω²Mφ‖ / ‖Kφ‖ (SLEPc)
 };
 
+/// Distance from a point (x, y, z; 2D: z = 0) to the nearest crack [m].
+using CrackDistance = std::function<double(const std::array<double, 3>&)>;
+
 class ModalAnalysis {
  public:
   ModalAnalysis() = default;
@@ -48,8 +54,9 @@ class ModalAnalysis {
   /// Assembles the reduced K and M on the wave mesh. Collective.
   PetscErrorCode Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
                        const wave::Excitation& excitation);
-  /// Solves for the modes nearest the target; cracks give the participation.
-  PetscErrorCode Solve(const ModesOptions& options, const mesh::CrackSurface& cracks);
+  /// Solves for the modes nearest the target; the distance to the cracks gives each
+  /// mode's participation (none: no crack, no participation).
+  PetscErrorCode Solve(const ModesOptions& options, const CrackDistance& crack_distance);
   /// modes.csv (rank 0) and the mode shapes in modes.h5 + modes.xmf ("time" = frequency).
   PetscErrorCode Write(const std::string& dir) const;
   const std::vector<Mode>& modes() const { return modes_; }
@@ -57,8 +64,7 @@ class ModalAnalysis {
 
  private:
   /// Per local bulk cell (space order): whether its centroid lies within radius of a crack.
-  PetscErrorCode CellsNearCracks(const mesh::CrackSurface& cracks, double radius,
-                                 std::vector<bool>* near) const;
+  PetscErrorCode CellsNearCracks(const CrackDistance& crack_distance, double radius, std::vector<bool>* near) const;
   /// Share of the strain energy of φ (full displacement) in the cells marked near.
   PetscErrorCode DefectParticipation(Vec phi, const std::vector<bool>& near, double* share) const;
   fe::LagrangeSpace space_;

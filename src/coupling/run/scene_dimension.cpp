@@ -37,7 +37,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
     PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D box only (-specimen_depth > 0)", given);
     PetscFunctionReturn(0);
   }
-  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-modes", "-crack_probe",
+  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-crack_probe",
                         "-crack_probe_crack", "-heat_crack_power"},
                        &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
