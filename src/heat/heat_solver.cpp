@@ -179,7 +179,8 @@ PetscErrorCode DefaultOption(const char* prefix, const char* name, const char* v
   PetscFunctionBeginUser;
   PetscBool given;
   PetscCall(PetscOptionsHasName(nullptr, prefix, name, &given));
-  if (!given) PetscCall(PetscOptionsSetValue(nullptr, ("-" + std::string(prefix ? prefix : "") + (name + 1)).c_str(), value));
+  const std::string full = "-" + std::string(prefix ? prefix : "") + (name + 1);  // name without its '-'
+  if (!given) PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
   PetscFunctionReturn(0);
 }
 
