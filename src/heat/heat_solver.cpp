@@ -82,12 +82,13 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   // at the crack centre at 0.1 ms with one step per interval, measured), backward
   // Euler is L-stable and its balance closes exactly (Account). The step is fixed:
   // the matrix is factored once.
-  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, &coupled_ts_));
+  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, options.coupled_step > 0.0 ? 1.0 / options.coupled_step : 0.0,
+                     &coupled_ts_));
   ts_ = coupled_ts_;
   // The free phase's TS now too, not when the waves stop: its options (-heat_free_*)
   // are read, and a bad one refused, before any step.
   PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
-  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
+  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, 0.0, &free_ts_));
   PetscFunctionReturn(0);
 }
 
@@ -139,7 +140,7 @@ PetscErrorCode HeatSolver::AddConvectiveFilm() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts) {
+PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double shift, TS* ts) {
   PetscFunctionBeginUser;
   Mat J;  // the pattern of the assembled K (and M, assembled from the same closures)
   PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &J));
@@ -167,99 +168,8 @@ PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType
   PetscCall(TSGetSNES(*ts, &snes));
   PetscCall(SNESSetType(snes, SNESKSPONLY));  // linear: one linear solve per stage
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(ConfigureLinearSolver(ksp, direct_solve()));
+  PetscCall(ConfigureLinearSolver(ksp, direct_solve(), shift));
   PetscCall(TSSetFromOptions(*ts));
-  PetscFunctionReturn(0);
-}
-
-namespace {
-
-/// Puts -<prefix>name value in the options database unless the user gave it.
-PetscErrorCode DefaultOption(const char* prefix, const char* name, const char* value) {
-  PetscFunctionBeginUser;
-  PetscBool given;
-  PetscCall(PetscOptionsHasName(nullptr, prefix, name, &given));
-  const std::string full = "-" + std::string(prefix ? prefix : "") + (name + 1);  // name without its '-'
-  if (!given) PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
-  PetscFunctionReturn(0);
-}
-
-/// BoomerAMG for a 3D heat mesh (hypre's advice for 3D problems): strong threshold
-/// 0.5, HMIS coarsening, ext+i interpolation, one level of aggressive coarsening.
-/// On block3d_small's free phase (21735 dofs, 486 steps): 9.8 s against 59 s with
-/// hypre's defaults, 14 CG iterations a solve instead of 20, the same temperatures
-/// (heat content to 1e-13). The user's -<prefix>pc_hypre_boomeramg_* win.
-PetscErrorCode DefaultBoomerAmg3D(KSP ksp) {
-  PetscFunctionBeginUser;
-  const char* prefix;
-  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
-  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_strong_threshold", "0.5"));
-  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_coarsen_type", "HMIS"));
-  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_interp_type", "ext+i"));
-  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_agg_nl", "1"));
-  PetscFunctionReturn(0);
-}
-
-}  // namespace
-
-PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct) {
-  PetscFunctionBeginUser;
-  // The Jacobian (K + shift M, sink rows and columns replaced by the identity)
-  // is SPD. Below kDirectSolveDofs: Cholesky (nested dissection, on every rank),
-  // factored once for a fixed step (0.7 ms a solve at 6e3 dofs against 2 ms for
-  // CG + BoomerAMG or MUMPS on 2 ranks, measured) and numerically refactored when
-  // a new step changes the shift (the free phase's step ladder: once per rung;
-  // with error-controlled steps once per step, still 1.5 s against 4.0 s with CG +
-  // BoomerAMG at rtol 1e-12, same temperatures). Larger:
-  // CG + hypre BoomerAMG (CG + GAMG diverged once the step grew, PETSC-NOTES.md).
-  // 3D factors fill far more: Cholesky took 8.8 s against CG + BoomerAMG's 1.9 s
-  // for 91 steps at 2.2e4 dofs (a 3D heat box), hence a lower threshold there.
-  PC pc;
-  PetscCall(KSPGetPC(ksp, &pc));
-  if (direct) {
-    PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(PCSetType(pc, PCREDUNDANT));
-    KSP inner;
-    PC factor;
-    PetscCall(PCRedundantGetKSP(pc, &inner));
-    PetscCall(KSPGetPC(inner, &factor));
-    PetscCall(PCSetType(factor, PCCHOLESKY));
-    PetscCall(PCFactorSetMatOrderingType(factor, MATORDERINGND));
-  } else {
-    PetscCall(KSPSetType(ksp, KSPCG));
-    PetscCall(KSPSetTolerances(ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
-    PetscCall(PCSetType(pc, PCHYPRE));
-    PetscInt dim;
-    PetscCall(DMGetDimension(dm_, &dim));
-    if (dim == 3) PetscCall(DefaultBoomerAmg3D(ksp));
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(source_event_, 0, 0, 0, 0));
-  Vec local;
-  PetscCall(DMGetLocalVector(dm_, &local));
-  PetscCall(VecSet(local, 0.0));
-  PetscScalar* q;
-  PetscCall(VecGetArray(local, &q));
-  std::vector<PetscInt> offsets;
-  std::vector<double> weights;
-  for (const mesh::OwnedCrackFacet& owned : cracks.owned()) {
-    const int crack = cracks.facets()[owned.index].crack;
-    PetscCheck(crack < static_cast<int>(power.size()), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
-               "crack power given for %zu cracks, crack %d exists", power.size(), crack + 1);
-    double length;
-    PetscCall(space_.FaceNodes(owned.facet, &offsets, &weights, &length));
-    for (std::size_t j = 0; j < offsets.size(); ++j) q[offsets[j]] += power[crack] * weights[j];
-  }
-  PetscCall(VecRestoreArray(local, &q));
-  PetscCall(VecSet(Q_, 0.0));
-  PetscCall(DMLocalToGlobal(dm_, local, ADD_VALUES, Q_));
-  PetscCall(DMRestoreLocalVector(dm_, &local));
-  PetscCall(SetSourceLoad(Q_));
-  PetscCall(PetscLogEventEnd(source_event_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

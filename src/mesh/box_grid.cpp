@@ -91,6 +91,8 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
   std::array<int, 3> along{};
   along[q_] = CellsAcross(c.length, sizes.h_crack);
   along[2] = CellsAcross(c.width, sizes.h_crack);
+  shape_ = c.shape;
+  outline_cells_ = {CellsAcross(c.length, g.h_crack), CellsAcross(c.width, g.h_crack)};  // the wave grid's
   for (int a = 0; a < 3; ++a)
     nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a],
                            sizes.h_crack, sizes.h, sizes.grading, &crack_lo_[a], &crack_hi_[a], sizes.first_layer,
@@ -116,6 +118,9 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
     reject("-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must ",
            "be buried in x-y and either buried in z or through the thickness, -crack_width = -specimen_depth centred ",
            "at z = depth/2; z extent [", z0, ", ", z1, "] of [0, ", g.depth, "])");
+  if (c.shape == CrackShape::Ellipse && through_thickness(g))
+    reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack through ",
+           "the thickness is a rectangle");
   if (CellsAcross(c.length, g.h_crack) < 2)
     reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
   if (CellsAcross(c.width, g.h_crack) < 2 && !through_thickness(g))  // a through crack has no front along z
@@ -154,7 +159,23 @@ std::array<double, 3> BoxGrid::position(const std::array<double, 3>& index) cons
 
 bool BoxGrid::on_crack(const std::array<double, 3>& f) const {
   const auto inside = [&](int a) { return f[a] > crack_lo_[a] && f[a] < crack_hi_[a]; };
-  return std::abs(f[p_] - crack_lo_[p_]) < 1e-9 && inside(q_) && inside(2);
+  return std::abs(f[p_] - crack_lo_[p_]) < 1e-9 && inside(q_) && inside(2) && inside_outline(f);
+}
+
+bool BoxGrid::inside_outline(const std::array<double, 3>& f) const {
+  if (shape_ == CrackShape::Rectangle) return true;
+  // The wave grid's crack face that holds f is kept when its centre lies in the
+  // ellipse: a staircase of wave faces, which the heat grid's faces (nested in them)
+  // tile exactly, so the friction heat lands on heat crack faces.
+  const int axes[2] = {q_, 2};
+  double r2 = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    const int a = axes[k];
+    const double u = (f[a] - crack_lo_[a]) / (crack_hi_[a] - crack_lo_[a]);
+    const double centre = (std::floor(u * outline_cells_[k]) + 0.5) / outline_cells_[k];
+    r2 += (2.0 * centre - 1.0) * (2.0 * centre - 1.0);
+  }
+  return r2 <= 1.0;
 }
 
 double BoxGrid::h_min() const {

@@ -1,6 +1,7 @@
 #include "vibrotherm/mesh/box_specimen.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 
@@ -66,6 +67,14 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   DM serial;
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
+  const Crack& crack = geometry.cracks.front();
+  if (crack.shape == CrackShape::Ellipse) {
+    const int n1 = grid->crack_cells(0), n2 = grid->crack_cells(1);
+    const double area = static_cast<double>(crack_faces) * crack.length * crack.width / (n1 * n2);
+    const double ellipse = 0.25 * M_PI * crack.length * crack.width;
+    PetscCall(PetscPrintf(comm, "Meshing: the elliptical crack is %" PetscInt_FMT " of its %d x %d rectangle's faces: "
+                          "%.4g m2, %.4f of the ellipse's area\n", crack_faces, n1, n2, area, area / ellipse));
+  }
   s->cracks = {CrackInfo{"crack1", geometry.cracks.front().length}};
   s->source = "generated";
   // SplitCracks puts the front (edges with one crack face, their vertices) in the

@@ -63,13 +63,43 @@ std::array<double, 2> Crack::end(int which) const {
   return {x + sign * length * std::cos(t), y + sign * length * std::sin(t)};
 }
 
+namespace {
+
+/// In-plane distance from (s, t) to the elliptical disc s²/a² + t²/b² ≤ 1: 0 inside,
+/// else to the nearest point (a cos φ, b sin φ), found by sampling φ and refining by
+/// golden sections (the distance is unimodal near its minimum).
+double DistanceToEllipse(double a, double b, double s, double t) {
+  if ((s * s) / (a * a) + (t * t) / (b * b) <= 1.0) return 0.0;
+  const auto d2 = [&](double phi) { return std::pow(a * std::cos(phi) - s, 2) + std::pow(b * std::sin(phi) - t, 2); };
+  constexpr int kSamples = 256;
+  double best = 0.0;
+  for (int k = 1; k < kSamples; ++k)
+    if (d2(2 * M_PI * k / kSamples) < d2(best)) best = 2 * M_PI * k / kSamples;
+  double lo = best - 2 * M_PI / kSamples, hi = best + 2 * M_PI / kSamples;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 60; ++it) {
+    const double m1 = hi - golden * (hi - lo), m2 = lo + golden * (hi - lo);
+    if (d2(m1) < d2(m2)) hi = m2;
+    else lo = m1;
+  }
+  return std::sqrt(d2(0.5 * (lo + hi)));
+}
+
+}  // namespace
+
 double Crack::distance_to(const std::array<double, 3>& p) const {
   const double t = angle_deg * M_PI / 180.0;
   const double dx = p[0] - x, dy = p[1] - y, dz = p[2] - z;
   const double along = dx * std::cos(t) + dy * std::sin(t), normal = -dx * std::sin(t) + dy * std::cos(t);
-  const double beyond_length = std::max(std::abs(along) - 0.5 * length, 0.0);
-  const double beyond_width = std::max(std::abs(dz) - 0.5 * width, 0.0);
-  return std::sqrt(beyond_length * beyond_length + beyond_width * beyond_width + normal * normal);
+  double in_plane;
+  if (shape == CrackShape::Ellipse) {
+    in_plane = DistanceToEllipse(0.5 * length, 0.5 * width, along, dz);
+  } else {
+    const double beyond_length = std::max(std::abs(along) - 0.5 * length, 0.0);
+    const double beyond_width = std::max(std::abs(dz) - 0.5 * width, 0.0);
+    in_plane = std::hypot(beyond_length, beyond_width);
+  }
+  return std::hypot(in_plane, normal);
 }
 
 namespace {

@@ -79,17 +79,22 @@ PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeo
 /// -specimen_depth, -crack_width, -edge_front, -edge_back. *three_d: the first of
 /// the 3D-only ones given (nullptr: none).
 PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g, std::vector<double>* widths,
-                              const char** three_d) {
+                              CrackShape* shape, const char** three_d) {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box; 0 a 2D "
                              "plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
-  PetscBool given[3] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+  PetscBool given[4] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width", "3D: crack extent along z [m]", widths, &given[0]));
   PetscCall(ReadEdgeKind(PetscOptionsObject, "front", &g->depth_edges[0], &given[1]));
   PetscCall(ReadEdgeKind(PetscOptionsObject, "back", &g->depth_edges[1], &given[2]));
-  const char* names[3] = {"-crack_width", "-edge_front", "-edge_back"};
+  PetscInt choice = static_cast<PetscInt>(*shape);
+  PetscCall(OptionsChoice(PetscOptionsObject, "-crack_shape",
+                          "3D: the crack's outline, the length x width rectangle or the ellipse inscribed in it",
+                          {"rectangle", "ellipse"}, &choice, &given[3]));
+  *shape = static_cast<CrackShape>(choice);
+  const char* names[4] = {"-crack_width", "-edge_front", "-edge_back", "-crack_shape"};
   *three_d = nullptr;
-  for (int k = 2; k >= 0; --k)
+  for (int k = 3; k >= 0; --k)
     if (given[k]) *three_d = names[k];
   PetscFunctionReturn(0);
 }
@@ -99,6 +104,7 @@ PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeom
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
   std::vector<double> centers, lengths, angles, widths;
+  CrackShape shape = CrackShape::Rectangle;
   const char* three_d_given = nullptr;
   PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
   PetscInt cell = g->quads ? 0 : 1;
@@ -121,7 +127,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
-  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &three_d_given));
+  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &shape, &three_d_given));
   PetscCall(ReadSourcePatch(PetscOptionsObject, g));  // after the depth: the patch's axes
   PetscOptionsEnd();
   g->quads = cell == 0;
@@ -153,6 +159,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
     if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : std::min<std::size_t>(i, widths.size() - 1)];
     c.length = lengths[nlengths == 1 ? 0 : i];
     c.angle_deg = nangles == 0 ? 0.0 : angles[nangles == 1 ? 0 : i];
+    c.shape = shape;
     g->cracks.push_back(c);
   }
   if (dim == 3) VibrothermCallCpp(comm, (void)BoxGrid(*g));

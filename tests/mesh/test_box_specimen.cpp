@@ -8,7 +8,12 @@
 //    sum to length × width;
 //  - the split adds exactly one cohesive cell per crack face;
 //  - the friction heat's sub-squares per wave crack face nest the heat grid's crack
-//    lines (every heat line on a sub-square edge) whenever 16 a side suffice.
+//    lines (every heat line on a sub-square edge) whenever 16 a side suffice;
+//  - an elliptical crack (-crack_shape ellipse) is the staircase of the wave faces whose
+//    centres lie in the ellipse (counted independently here), within 3 % of its area,
+//    split with one cohesive cell per face; the heat grid's halves tile it exactly (4
+//    heat faces per wave face); the distance to it is the distance to the elliptical
+//    disc (sampled independently).
 // Bad geometry is refused naming the option.
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
@@ -118,6 +123,78 @@ TEST(CrackFaceSubdivisions, NestTheHeatGridLines) {
   EXPECT_FALSE(exact);
 }
 
+/// Crack faces of a grid and their total area.
+void CrackFaces(const mesh::SpecimenGeometry& g, const mesh::BoxGrid& grid, PetscInt* count, double* area, DM* dm) {
+  ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, grid, dm, count), 0);
+  DMLabel crack;
+  DMGetLabel(*dm, mesh::labels::crack, &crack);
+  PetscInt fStart, fEnd;
+  mesh::FacetRange(*dm, &fStart, &fEnd);
+  *area = 0.0;
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscInt on_crack;
+    PetscReal a, c[3];
+    DMLabelGetValue(crack, f, &on_crack);
+    DMPlexComputeCellGeometryFVM(*dm, f, &a, c, nullptr);
+    if (on_crack == 1) *area += a;
+  }
+}
+
+TEST(EllipticalCrack, IsTheStaircaseOfWaveFacesInTheEllipse) {
+  mesh::SpecimenGeometry g = Block(20.0);
+  g.h_crack = 0.0005;
+  g.cracks[0].length = 0.008, g.cracks[0].width = 0.006, g.cracks[0].shape = mesh::CrackShape::Ellipse;
+  const int n1 = 16, n2 = 12;  // wave faces along the strike and z
+  int expected = 0;
+  for (int i = 0; i < n1; ++i)
+    for (int j = 0; j < n2; ++j) {
+      const double u = 2.0 * (i + 0.5) / n1 - 1.0, v = 2.0 * (j + 0.5) / n2 - 1.0;
+      expected += u * u + v * v <= 1.0;
+    }
+  const mesh::BoxGrid grid(g);
+  DM dm;
+  PetscInt faces;
+  double area;
+  CrackFaces(g, grid, &faces, &area, &dm);
+  EXPECT_EQ(faces, expected);
+  EXPECT_NEAR(area, expected * (0.008 / n1) * (0.006 / n2), 1e-15);
+  EXPECT_NEAR(area / (0.25 * M_PI * 0.008 * 0.006), 1.0, 0.03);
+  DM split;
+  ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);  // checks one cohesive cell per crack face
+  DMDestroy(&split);
+  DMDestroy(&dm);
+  const mesh::BoxGrid heat(g, mesh::BoxGridSizes{0.5 * g.h_crack, g.h, g.grading, 1e-5, 1.5});
+  double heat_area;
+  CrackFaces(g, heat, &faces, &heat_area, &dm);
+  EXPECT_EQ(faces, 4 * expected);
+  EXPECT_NEAR(heat_area, area, 1e-15);
+  DMDestroy(&dm);
+}
+
+TEST(EllipticalCrack, DistanceIsToTheEllipticalDisc) {
+  mesh::Crack c;
+  c.x = 0.01, c.y = 0.01, c.z = 0.005, c.length = 0.008, c.width = 0.004, c.angle_deg = 30.0;
+  c.shape = mesh::CrackShape::Ellipse;
+  const double t = M_PI / 6, s[3] = {std::cos(t), std::sin(t), 0.0}, n[3] = {-std::sin(t), std::cos(t), 0.0};
+  const auto at = [&](double along, double dz, double off) {
+    return std::array<double, 3>{c.x + along * s[0] + off * n[0], c.y + along * s[1] + off * n[1], c.z + dz};
+  };
+  EXPECT_NEAR(c.distance_to(at(0.001, 0.001, 0.0007)), 0.0007, 1e-15);  // over the disc
+  EXPECT_NEAR(c.distance_to(at(0.006, 0.0, 0.0)), 0.002, 1e-12);       // beyond the tip on the strike
+  EXPECT_NEAR(c.distance_to(at(0.0, 0.005, 0.0)), 0.003, 1e-12);       // beyond the edge along z
+  for (const auto& p : {at(0.004, 0.002, 0.001), at(-0.003, -0.003, -0.002), at(0.0045, -0.0001, 0.0)}) {
+    double nearest = INFINITY;  // brute force over the boundary, then the disc's interior cannot be nearer
+    for (int k = 0; k < 200000; ++k) {
+      const double phi = 2 * M_PI * k / 200000.0;
+      const auto q = at(0.004 * std::cos(phi), 0.002 * std::sin(phi), 0.0);
+      nearest = std::min(nearest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+    }
+    EXPECT_NEAR(c.distance_to(p), nearest, 1e-9);
+  }
+  c.shape = mesh::CrackShape::Rectangle;
+  EXPECT_NEAR(c.distance_to(at(0.005, 0.003, 0.0)), std::hypot(0.001, 0.001), 1e-12);
+}
+
 TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   const auto message = [](mesh::SpecimenGeometry g) -> std::string {
     try {
@@ -139,6 +216,9 @@ TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   g = Block(60.0);
   g.cracks[0].y = 0.004;
   EXPECT_NE(message(g).find("-crack_angle"), std::string::npos) << message(g);
+  g = Block(20.0);
+  g.cracks[0].width = g.depth, g.cracks[0].shape = mesh::CrackShape::Ellipse;  // through the thickness
+  EXPECT_NE(message(g).find("-crack_shape"), std::string::npos) << message(g);
 }
 
 }  // namespace

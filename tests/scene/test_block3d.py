@@ -8,6 +8,10 @@
  - the energy budget closes (summary max_budget_error, and every row once the source
    has done a tenth of its work, below 1e-5) and the pre-closed crack dissipates;
  - probes.csv has 3 coordinates and 3 components per probe;
+ - with -crack_shape ellipse the crack is the 20 of its 6 x 4 faces whose centres lie in the
+   inscribed ellipse (counted here), one cohesive cell each, with a contact cell per split
+   Q2 node off the staircase's front (61, counted here); the budget closes, the friction
+   heat is the dissipated energy and so is the crack map's sum of W x area;
  - 2 ranks equal serial (partitioned so that the crack straddles the ranks):
    energy.csv within 1e-10 of each column's largest value, probes within 1e-10 of
    each component's amplitude, the same rows;
@@ -18,8 +22,9 @@
  - bad input is refused in one line naming the option (exit 2, nothing written): a
    crack reaching outside (a through-thickness crack, -crack_width = -specimen_depth centred,
    is accepted, but not one off-centre or reaching the x-y outline), a crack under 2 cells
-   along an extent, what 3D cannot do yet (-physics heat, thermoelastic heating), the
-   3D-only options on a 2D specimen.
+   along an extent, an elliptical crack through the thickness or an unknown -crack_shape,
+   what 3D cannot do yet (thermoelastic heating), the 3D-only options (-heat_bc_front,
+   -crack_shape) on a 2D specimen.
 
 usage: test_block3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
@@ -34,7 +39,7 @@ exe, src, mpiexec = sys.argv[1:4]
 check = Checks("block3d")
 opts = ["-options_file", os.path.join(src, "options/block3d_small.opts")]
 FACES = 6 * 4  # crack faces: 6 mm / 1 mm along the strike, 4 mm / 1 mm along z
-CELLS = 5 * 3 + (6 * 3 + 5 * 4) + FACES  # Q2: interior vertices, interior edges, faces
+CELLS = 5 * 3 + (6 * 3 + 5 * 4) + FACES  # Q2: interior vertices, interior edges, faces (staircase(6, 4) of a rectangle)
 
 
 def columns(rows, names):
@@ -51,23 +56,61 @@ def agree(label, a, b, names):
         check(worst <= 1e-10 * scale, "%s %s: 2 ranks differ by %.3g of %.3g" % (label, k, worst, scale))
 
 
-def check_fields(out, summary):
+def check_fields(out, summary, cells=CELLS, last=1):
+    """The fields at output `last` (0-based); a crack map of `cells` squares."""
     wave = open(os.path.join(out, "fields_wave.xmf")).read()
     cracks = open(os.path.join(out, "fields_cracks.xmf")).read()
     check('TopologyType="Hexahedron"' in wave and 'GeometryType="XYZ"' in wave, "fields_wave.xmf: hexahedra, XYZ")
-    check('TopologyType="Quadrilateral" NumberOfElements="%d"' % CELLS in cracks, "fields_cracks.xmf: a square a cell")
+    check('TopologyType="Quadrilateral" NumberOfElements="%d"' % cells in cracks, "fields_cracks.xmf: a square a cell")
     with h5py.File(os.path.join(out, "fields.h5"), "r") as f:
-        check(f["wave/displacement_1"].shape[1] == 3, "3 displacement components")
+        check(f["wave/displacement_%d" % last].shape[1] == 3, "3 displacement components")
         x = f["cracks/geometry"][:].reshape(-1, 4, 3)
-        W = f["cracks/dissipated_energy_1"][:].ravel()
+        W = f["cracks/dissipated_energy_%d" % last][:].ravel()
         area = 0.5 * np.linalg.norm(np.cross(x[:, 2] - x[:, 0], x[:, 3] - x[:, 1]), axis=1)
         total = float(np.dot(W, area))
     check(abs(total / summary["dissipated_energy"] - 1) < 1e-9,
           "crack map: sum W area %.6g against the dissipated energy %.6g" % (total, summary["dissipated_energy"]))
 
 
+def staircase(n1, n2):
+    """The faces of an n1 x n2 crack grid whose centres lie in the inscribed ellipse, and the Q2
+    contact cells they make (interior vertices and edges, faces), counted on the grid."""
+    inside = {(i, j) for i in range(n1) for j in range(n2)
+              if (2 * (i + 0.5) / n1 - 1) ** 2 + (2 * (j + 0.5) / n2 - 1) ** 2 <= 1}
+    vertices = sum(all((i - a, j - b) in inside for a in (0, 1) for b in (0, 1))
+                   for i in range(n1 + 1) for j in range(n2 + 1))
+    edges = sum((i, j) in inside and (i + 1, j) in inside for i in range(n1) for j in range(n2)) + \
+        sum((i, j) in inside and (i, j + 1) in inside for i in range(n1) for j in range(n2))
+    return len(inside), vertices + edges + len(inside)
+
+
+def check_ellipse(tmp):
+    """-crack_shape ellipse: the staircase's faces are split (one cohesive cell each), its
+    contact cells are the Q2 nodes off its front, and the run conserves energy."""
+    out = os.path.join(tmp, "ellipse")
+    r = subprocess.run([exe] + opts + ["-crack_shape", "ellipse", "-output_times", "2e-5", "-output_dir", out],
+                       capture_output=True, text=True)
+    check(r.returncode == 0, "elliptical crack: %s" % r.stderr[-2000:])
+    if r.returncode:
+        return
+    faces, cells = staircase(6, 4)
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    mesh = summary["mesh"]
+    check(mesh["cohesive_cells"] == faces and mesh["cracks"][0]["facets"] == faces,
+          "ellipse: cohesive cells %s, faces %s, expected %d" % (mesh["cohesive_cells"], mesh["cracks"][0]["facets"], faces))
+    check(abs(mesh["cracks"][0]["area"] - faces * 1e-6) < 1e-12, "ellipse: area %s" % mesh["cracks"][0]["area"])
+    check(summary["contact_cells"] == cells, "ellipse: contact cells %s, expected %d" % (summary["contact_cells"], cells))
+    check(summary["max_budget_error"] < 1e-5, "ellipse: budget error %s" % summary["max_budget_error"])
+    W = summary["dissipated_energy"]
+    check(W > 0 and abs(summary["heat_deposited_by"].get("friction", 0) - W) <= 1e-10 * W,
+          "ellipse: friction heat %s = dissipated %s" % (summary["heat_deposited_by"].get("friction"), W))
+    check_fields(out, summary, cells, 0)
+    print("ellipse: %d faces, %d contact cells, dissipated %.4g J" % (faces, cells, W))
+
+
 runs = {}
 with tempfile.TemporaryDirectory() as tmp:
+    check_ellipse(tmp)
     for ranks in (1, 2):
         out = os.path.join(tmp, "np%d" % ranks)
         # 2 ranks: the simple partitioner cuts the crack, and some cohesive cells lose both bulk
@@ -120,7 +163,8 @@ bad = [
     (["-crack_width", "0.01", "-crack_center", "0.01,0.01,0.0045"], "-crack_width"),  # z [-0.0005, 0.0095]
     (["-crack_width", "0.01", "-crack_length", "0.03"], "-crack_length"),  # through, but beyond left and right
     (["-crack_center", "0.01,0.01"], "-crack_center"),                  # 3 values a crack in 3D
-    (["-physics", "heat"], "-physics heat"),
+    (["-crack_width", "0.01", "-crack_center", "0.01,0.01,0.005", "-crack_shape", "ellipse"], "-crack_shape"),
+    (["-crack_shape", "circle"], "-crack_shape"),
     (["-thermoelastic", "one_way"], "-thermoelastic"),
     (["-specimen_depth", "0", "-crack_center", "0.01,0.01"], "-crack_width"),  # 2D: -crack_width is 3D only
 
@@ -137,4 +181,9 @@ with tempfile.TemporaryDirectory() as tmp:
                         "-output_dir", out], capture_output=True, text=True)
     one_line_error(check, "2D -heat_bc_front", r.returncode, r.stderr, "-heat_bc_front")
     check(not os.path.exists(out), "2D -heat_bc_front: nothing written")
+    out = os.path.join(tmp, "bad_2d_shape")
+    r = subprocess.run([exe, "-options_file", os.path.join(src, "options/paper.opts"), "-crack_shape", "ellipse",
+                        "-output_dir", out], capture_output=True, text=True)
+    one_line_error(check, "2D -crack_shape", r.returncode, r.stderr, "-crack_shape")
+    check(not os.path.exists(out), "2D -crack_shape: nothing written")
 check.finish()

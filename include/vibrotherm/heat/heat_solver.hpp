@@ -23,6 +23,7 @@
 
 #include <functional>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
@@ -50,6 +51,9 @@ struct HeatOptions {
   PetscInt degree = 1;   ///< -heat_degree 1|2
   bool lumped = true;    ///< -heat_lumped_mass: row sums (no ringing at the crack, see README)
   HeatBoundaryOptions boundary;
+  /// The coupled steps' length [s] (the coupling's heat step; 0: not known). It picks
+  /// their linear solver (ConfigureLinearSolver).
+  double coupled_step = 0.0;
 };
 /// -heat_* (material, degree, mass, edges). Collective.
 PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options);
@@ -67,6 +71,9 @@ class HeatSolver {
   /// crack of `cracks` (the heat mesh's; every rank passes the same vector, one
   /// value per crack). Collective.
   PetscErrorCode SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power_by_crack);
+  /// The same on a 3D box's heat mesh: its facets labelled `crack` (value k + 1 for crack
+  /// k) carry power_by_crack[k] [W/m²] (crack_power.cpp). Collective.
+  PetscErrorCode SetLabelledCrackPower(const std::vector<double>& power_by_crack);
   /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
   PetscErrorCode SetSourceLoad(Vec load);
   /// Fixes the probe points (x, y pairs; x, y, z triples on a 3D mesh). Collective.
@@ -121,6 +128,11 @@ class HeatSolver {
   double time() const { return time_; }
   PetscInt steps() const { return steps_; }
   PetscInt dofs() const { return global_dofs_; }
+  /// max_i K_ii / (shift M_ii): how far K + shift·M is from its mass (a step dt of
+  /// backward Euler: shift = 1/dt). Collective.
+  PetscErrorCode StiffnessToMassRatio(double shift, double* ratio) const;
+  /// Up to this ratio an iterative solve uses CG with Jacobi (ConfigureLinearSolver).
+  static constexpr double kJacobiStiffnessRatio = 10.0;
   const fe::LagrangeSpace& space() const { return space_; }
   const HeatBoundary& boundary() const { return boundary_; }
   const HeatMaterial& material() const { return material_; }
@@ -143,6 +155,8 @@ class HeatSolver {
   PetscErrorCode AssembleMassAndConductivity(bool lumped);
   PetscErrorCode AddConvectiveFilm();
   PetscErrorCode ScaleTolerance();
+  /// Q from a uniform power per unit area on each facet (this rank's, facet and crack index pairs).
+  PetscErrorCode SetFacetPower(const std::vector<std::pair<PetscInt, int>>& facets, const std::vector<double>& power);
   /// A solver of J = K + M/(w dt) (sinks as the TS's), factored once per step length dt.
   PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
 
@@ -155,8 +169,11 @@ class HeatSolver {
   Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   std::vector<fe::LocatedPoint> probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
-  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct);
+  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double shift, TS* ts);
+  /// A linear solver for K + shift·M (shift = 0: it varies): Cholesky when `direct`,
+  /// else CG with Jacobi when the mass dominates every row (StiffnessToMassRatio ≤
+  /// kJacobiStiffnessRatio), else CG with BoomerAMG (heat_linear_solver.cpp).
+  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct, double shift);
   static constexpr PetscInt kDirectSolveDofs = 50000;   ///< above: CG + AMG even for fixed steps
   static constexpr PetscInt kDirectSolveDofs3D = 5000;  ///< the same on a 3D mesh (more fill)
   bool direct_solve() const { return global_dofs_ <= (space_.dim() == 3 ? kDirectSolveDofs3D : kDirectSolveDofs); }

@@ -1,5 +1,6 @@
 // The structured hexahedral grid of a 3D box specimen with one planar rectangular
-// crack, buried or through the thickness (z extent [0, D]) (plain C++, no PETSc): the
+// crack, buried or through the thickness (z extent [0, D]), or a buried elliptical one
+// (the staircase of the faces whose centres lie in the ellipse) (plain C++, no PETSc): the
 // node positions along each axis and the smooth shear that tilts one grid plane into
 // the crack plane.
 //
@@ -47,7 +48,8 @@ class BoxGrid {
   /// The position of grid node (i, j, k) (integer indices), sheared.
   std::array<double, 3> position(const std::array<double, 3>& index) const;
   /// Whether the face with index-space centroid f (one half-integer coordinate
-  /// less than a cell) lies on the crack.
+  /// less than a cell) lies on the crack: in its rectangle, and for an elliptical
+  /// crack in the staircase of the wave grid's faces whose centres lie in the ellipse.
   bool on_crack(const std::array<double, 3>& f) const;
   /// The crack's facets and its cells along strike and z.
   int crack_cells(int along) const { return along == 0 ? crack_hi_[q_] - crack_lo_[q_] : crack_hi_[2] - crack_lo_[2]; }
@@ -70,6 +72,7 @@ class BoxGrid {
  private:
   void validate(const SpecimenGeometry& g) const;
   double blend(double xp) const;
+  bool inside_outline(const std::array<double, 3>& f) const;
   /// Moves grid nodes onto the transducer patch's bounds (box_patch.cpp).
   void align_patch(const SpecimenGeometry& g);
   /// The unsheared coordinate along axis a whose node lies at `target` on the face of
@@ -82,6 +85,8 @@ class BoxGrid {
   double slope_ = 0.0;
   std::array<double, 3> centre_{}, extent_{}, size_{}, normal_{};
   std::vector<PatchSnap> patch_snaps_;
+  CrackShape shape_ = CrackShape::Rectangle;
+  std::array<int, 2> outline_cells_{};  ///< the wave grid's crack cells along strike and z (the staircase)
 };
 
 /// The 1D nodes of [0, length] with the crack's segment [b_lo, b_hi] in `cells`

@@ -21,11 +21,20 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   PetscCall(stage.Begin("Heat setup"));
   PetscCall(solver_.Setup(specimen.heat, scene.heat));
   summary->dofs_heat = solver_.dofs();
+  if (scene.heat.coupled_step > 0.0) {
+    double ratio;
+    PetscCall(solver_.StiffnessToMassRatio(1.0 / scene.heat.coupled_step, &ratio));
+    summary->derived["heat_stiffness_ratio"] = ratio;
+    summary->derived_rules["heat_stiffness_ratio"] =
+        "max K_ii heat_dt / M_ii: up to 10 the coupled heat steps' CG takes Jacobi, not BoomerAMG (when not direct)";
+  }
   const PetscInt ncracks = static_cast<PetscInt>(specimen.cracks.size());
   if (scene.run.physics == PhysicsChoice::Heat) {
     PetscCheck(ncracks > 0 || scene.run.heat_crack_power == 0.0, comm, PETSC_ERR_USER_INPUT,
                "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
-    PetscCall(solver_.SetCrackPower(specimen.heat_cracks, std::vector<double>(ncracks, scene.run.heat_crack_power)));
+    const std::vector<double> power(ncracks, scene.run.heat_crack_power);
+    if (scene.run.dimension == 3) PetscCall(solver_.SetLabelledCrackPower(power));
+    else PetscCall(solver_.SetCrackPower(specimen.heat_cracks, power));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
     PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), specimen));

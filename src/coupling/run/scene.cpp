@@ -97,6 +97,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
   PetscCall(QuantizeForPeriodicity(comm, s));
+  s->heat.coupled_step = s->couple_dt / static_cast<double>(s->run.heat_substeps);
   // Output times after the end would never be written: say so, and drop them.
   std::vector<double> kept;
   for (double t : s->run.output_times) {

@@ -37,13 +37,10 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
     PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D box only (-specimen_depth > 0)", given);
     PetscFunctionReturn(0);
   }
-  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-crack_probe",
-                        "-crack_probe_crack", "-heat_crack_power"},
-                       &given));
+  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
              "%s is not supported in 3D yet (-specimen_depth > 0)", given);
-  const std::pair<bool, const char*> refused[] = {{s->run.physics == PhysicsChoice::Heat, "-physics heat"},
-                                                  {s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
+  const std::pair<bool, const char*> refused[] = {{s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
                                                   {s->wave.lts.on, "-wave_lts on"},
                                                   {s->wave.harmonic_start, "-wave_start harmonic"},
                                                   {s->material.damping_heat, "-material_damping_heat"}};
