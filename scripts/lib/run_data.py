@@ -9,6 +9,7 @@ import io
 import json
 import os
 import re
+import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 
@@ -65,6 +66,14 @@ class Run:
             if not os.path.exists(path):
                 raise Skip("no %s" % name)
         return paths if len(names) > 1 else paths[0]
+
+    def field_times(self, grid):
+        """Output times of one grid's temporal collection in fields_<grid>.xmf."""
+        root = ElementTree.parse(self.need("fields_%s.xmf" % grid)).getroot()
+        for collection in root.iter("Grid"):
+            if collection.get("Name") == grid and collection.get("GridType") == "Collection":
+                return [float(g.find("Time").get("Value")) for g in collection.findall("Grid")]
+        return []
 
     def stopped_at(self):
         """The last time an incomplete run recorded (energy.csv), or None."""

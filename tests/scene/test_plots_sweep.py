@@ -7,6 +7,9 @@ a failed case in its row.
   * a two-crack scene (meshes/plate_two_cracks.msh) covers both cracks under the
     mesh's names (crack_a, crack_b) and draws its temperature maps;
   * a -modes run draws modes.png and skips the rest;
+  * a 3D run (block3d_small with an elliptical crack) draws its traction loop (the centre
+    cell's strike component), its energy budget and crack_maps.png (W, friction power,
+    contact and temperature on the crack plane) and skips the 2D crack plots;
   * (issue 27) temperature_maps.png shows, below each map, the rise across the crack
     through its hottest point, zoomed to the heated band (a band of µm to mm is
     invisible at the crack's scale); an interrupted run's plots say it is incomplete
@@ -49,14 +52,14 @@ with tempfile.TemporaryDirectory() as tmp:
     short = os.path.join(tmp, "short")
     run(paper + coarse + ["-final_time", "2e-4"], short)
     plot(short, ["traction_loop", "crack_temperature", "energy_budget", "crack_spacetime"],
-         ["temperature_maps", "modes"])
+         ["temperature_maps", "modes", "crack_maps"])
 
     two = os.path.join(tmp, "two")
     run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-wave_degree",
                  "1", "-final_time", "1e-4", "-source_duration", "1e-4", "-output_times", "5e-5,1e-4",
                  "-crack_probe_crack", "2"], two)
     plot(two, ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget", "crack_spacetime"],
-         ["modes"])
+         ["modes", "crack_maps"])
     loader = importlib.machinery.SourceFileLoader("plot_script", plot_script)
     module = importlib.util.module_from_spec(importlib.util.spec_from_loader("plot_script", loader))
     loader.exec_module(module)
@@ -93,7 +96,13 @@ with tempfile.TemporaryDirectory() as tmp:
     modes = os.path.join(tmp, "modes")
     run(paper + coarse + ["-modes", "-modes_n", "4"], modes)
     plot(modes, ["modes"], ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget",
-                            "crack_spacetime"])
+                            "crack_spacetime", "crack_maps"])
+
+    box = os.path.join(tmp, "box")
+    run(["-options_file", os.path.join(src, "options", "block3d_small.opts"), "-crack_shape", "ellipse",
+         "-output_times", "2e-5"], box)
+    plot(box, ["traction_loop", "energy_budget", "crack_maps"],
+         ["crack_temperature", "temperature_maps", "crack_spacetime", "modes"])
 
     sweep = os.path.join(tmp, "sweep")
     r = subprocess.run(["/usr/bin/python3", sweep_script, "--no-build", "--output", sweep, "--set", "final_time=1e-5",

@@ -1,0 +1,109 @@
+"""crack_maps.png: a 3D run's crack surface (crack_state.csv, fields.h5), in the crack plane.
+
+    figure(run)        the figure, or raises run_data.Skip (scripts/plot's list; 2D runs
+                       have crack_spacetime.png and temperature_maps.png instead)
+
+Maps over (s1, s2), the position on the crack plane from its centre (s1 along the
+strike, s2 along t2 = -z), each contact cell at its node:
+ (a) the friction energy dissipated per unit area, W, at the last crack_state time;
+ (b) the friction power per unit area averaged over the last source period recorded;
+ (c) the time in contact over that period;
+ (d) the temperature rise on the crack plane at the last output of fields.h5 (the heat
+     node at each contact cell's position: the heat grid's crack-plane nodes include the
+     contact cells' Q2 nodes), when the run wrote one.
+numpy, h5py and matplotlib only.
+"""
+import numpy as np
+from matplotlib.tri import Triangulation
+
+from run_data import Skip
+
+
+def _triangulation(s1, s2):
+    """Delaunay triangles of the cells' nodes, without those bridging a gap of the lattice
+    (a staircase crack's notches): edges longer than 1.5 lattice spacings are masked."""
+    tri = Triangulation(s1, s2)
+    spacing = min(np.min(np.diff(np.unique(np.round(v, 12)))) for v in (s1, s2))
+    x, y = s1[tri.triangles], s2[tri.triangles]
+    longest = np.max(np.hypot(x - np.roll(x, 1, axis=1), y - np.roll(y, 1, axis=1)), axis=1)
+    tri.set_mask(longest > 1.5 * np.sqrt(2) * spacing)
+    return tri
+
+
+def _last_period(crack_state, period):
+    """Rows of the last whole source period recorded (at least the last record)."""
+    t = crack_state["t"]
+    return t >= max(t[-1] - period * (1 - 1e-9), t.min())
+
+
+def _crack_plane_rise(run, x):
+    """Temperature rise at points x (n × 3) from the last heat output, by the nearest heat node."""
+    import h5py
+
+    path = run.output("fields.h5")
+    try:
+        f = h5py.File(path, "r")
+    except OSError:
+        return None, None
+    with f:
+        names = sorted((k for k in f.get("heat", {}) if k.startswith("temperature_rise_")),
+                       key=lambda k: int(k.rsplit("_", 1)[1]))
+        if not names:
+            return None, None
+        nodes, rise = f["heat/geometry"][:], f["heat/" + names[-1]][:].ravel()
+    nearest = np.array([np.argmin(np.sum((nodes - p) ** 2, axis=1)) for p in x])
+    return rise[nearest], len(names) - 1
+
+
+def _panel(fig, ax, tri, values, title, label, cmap="magma"):
+    shading = ax.tripcolor(tri, values, shading="gouraud", cmap=cmap, vmin=0, vmax=max(np.nanmax(values), 1e-300))
+    fig.colorbar(shading, ax=ax, label=label, shrink=0.85)
+    ax.set_title(title, fontsize=10)
+    ax.set_aspect("equal")
+    ax.set_xlabel("s1 along the strike [mm]")
+    ax.set_ylabel("s2 along -z [mm]")
+
+
+def figure(run):
+    import matplotlib.pyplot as plt
+
+    if run.summary.get("dimension", 2) != 3:
+        raise Skip("a 2D run (crack_spacetime.png and temperature_maps.png draw its cracks)")
+    crack_state = run.table("crack_state.csv")
+    last = crack_state["t"] == crack_state["t"][-1]
+    s1, s2 = crack_state["s1"][last] * 1e3, crack_state["s2"][last] * 1e3
+    tri = _triangulation(s1, s2)
+    window = _last_period(crack_state, run.period)
+    keys = np.round(crack_state["s1"] * 1e9) * 1e9 + np.round(crack_state["s2"] * 1e9)
+    order = {k: n for n, k in enumerate(keys[last])}
+    power, contact, count = np.zeros(last.sum()), np.zeros(last.sum()), np.zeros(last.sum())
+    for key, p, state in zip(keys[window], crack_state["power"][window], crack_state["state"][window]):
+        n = order[key]
+        power[n] += p
+        contact[n] += state != 0
+        count[n] += 1
+    power, contact = power / np.maximum(count, 1), contact / np.maximum(count, 1)
+    x = np.column_stack([crack_state[c][last] for c in ("x", "y", "z")])
+    rise, output = _crack_plane_rise(run, x)
+    fig, axes = plt.subplots(2, 2, figsize=(13, 10))
+    t_last = crack_state["t"][-1]
+    span = t_last - crack_state["t"][window].min()
+    _panel(fig, axes[0, 0], tri, crack_state["W"][last], "(a) dissipated friction energy W at t = %.4g ms" % (t_last * 1e3),
+           "W [J/m²]")
+    _panel(fig, axes[0, 1], tri, power, "(b) friction power, mean over the last %.3g µs" % (span * 1e6),
+           "power [W/m²]")
+    _panel(fig, axes[1, 0], tri, contact, "(c) share of those records in contact", "fraction in contact",
+           cmap="Blues")
+    if rise is None:
+        axes[1, 1].set_axis_off()
+        axes[1, 1].text(0.5, 0.5, "no temperature field (give -output_times)", ha="center")
+    else:
+        try:
+            when = "t = %.4g ms" % (run.field_times("heat")[output] * 1e3)
+        except (Skip, IndexError):
+            when = "output %d" % output
+        _panel(fig, axes[1, 1], tri, rise * 1e6, "(d) temperature rise on the crack plane at %s" % when, "rise [µK]",
+               cmap="inferno")
+    fig.suptitle("Crack surface of %s: %d contact cells (crack_state.csv)" % (run.crack_name(1), last.sum()))
+    fig.tight_layout()
+    return fig
