@@ -24,6 +24,12 @@ PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double 
                              o->target_frequency, &o->target_frequency, nullptr));
   PetscCall(PetscOptionsReal("-modes_defect_radius", "Distance from the crack counted as the defect [m]", nullptr,
                              o->defect_radius, &o->defect_radius, nullptr));
+  PetscCall(PetscOptionsReal("-modes_memory_limit", "Memory the factorisation may take [GB] (0: 0.9 x available)",
+                             nullptr, o->memory_limit_gb, &o->memory_limit_gb, nullptr));
+  PetscBool force = o->force ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(PetscOptionsBool("-force", "Factor even when MUMPS's estimate exceeds the limit", nullptr, force, &force,
+                             nullptr));
+  o->force = force;
   PetscOptionsEnd();
   PetscCheck(o->n >= 1, comm, PETSC_ERR_USER_INPUT, "-modes_n must be >= 1, got %" PetscInt_FMT, o->n);
   PetscCheck(o->target_frequency > 0.0 && std::isfinite(o->target_frequency), comm, PETSC_ERR_USER_INPUT,
@@ -31,6 +37,8 @@ PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double 
              o->target_frequency);
   PetscCheck(o->defect_radius >= 0.0 && std::isfinite(o->defect_radius), comm, PETSC_ERR_USER_INPUT,
              "-modes_defect_radius must be >= 0 and finite, got %g", o->defect_radius);
+  PetscCheck(o->memory_limit_gb >= 0.0 && std::isfinite(o->memory_limit_gb), comm, PETSC_ERR_USER_INPUT,
+             "-modes_memory_limit must be >= 0 GB and finite, got %g", o->memory_limit_gb);
   PetscFunctionReturn(0);
 }
 
@@ -212,6 +220,7 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDist
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(EPSSetFromOptions(eps));
+  PetscCall(CheckFactorMemory(K_, options));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
   PetscCall(EPSSolve(eps));
   PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));

@@ -11,7 +11,9 @@ twin: paper.opts on the slab's x-y section, scripts/slab_section), so that
  - 2 ranks give the serial frequencies and participations to 1e-9;
  - modes.csv, modes.h5 (3D hexahedra) and modes.xmf are written;
  - the check discriminates: free front and back faces (plane stress, in-plane stiffness
-   E/(1 − ν²) instead of the plane-strain one) move a mode by more than 1 %.
+   E/(1 − ν²) instead of the plane-strain one) move a mode by more than 1 %;
+ - before factoring, the run prints MUMPS's own memory estimate for the factorisation and
+   refuses, in one line naming -modes_memory_limit, when it exceeds that limit.
 
 usage: test_modes_3d.py VIBROTHERM MPIEXEC SOURCE_DIR"""
 import csv, os, subprocess, sys, tempfile
@@ -20,7 +22,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, one_line_error
 
 exe, mpiexec, src = sys.argv[1:4]
 check = Checks("modes_3d")
@@ -59,6 +61,10 @@ def agree(label, a, b, tol):
 
 with tempfile.TemporaryDirectory() as tmp:
     path = lambda name: os.path.join(tmp, name)
+    r = subprocess.run([exe] + SLAB + MODES + ["-modes_memory_limit", "1e-6", "-output_dir", path("limit")],
+                       capture_output=True, text=True)
+    check("Modes: MUMPS estimates" in r.stdout, "the run prints MUMPS's memory estimate: %s" % r.stdout[-600:])
+    one_line_error(check, "-modes_memory_limit 1e-6", r.returncode, r.stderr, "-modes_memory_limit", "MUMPS")
     # The slab's grid for its 2D twin: a wave run of one output (no heat).
     grid = run(SLAB + ["-heat", "off", "-final_time", "1e-7", "-output_times", "1e-7"], path("grid"))
     if grid:

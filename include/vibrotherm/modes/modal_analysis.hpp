@@ -33,8 +33,17 @@ struct ModesOptions {
   PetscInt n = 10;                ///< -modes_n: eigenpairs wanted
   double target_frequency = 0.0;  ///< -modes_target_frequency [Hz] (default: -source_frequency)
   double defect_radius = 0.0;     ///< -modes_defect_radius [m] (default: half the longest crack)
+  double memory_limit_gb = 0.0;   ///< -modes_memory_limit [GB] for the factorisation (0: 0.9 x the memory available)
+  bool force = false;             ///< -force: factor even above that
 };
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
+
+/// MUMPS's estimate of the memory its LU factorisation of A takes [bytes] (its analysis
+/// phase, INFOG(17): in-core, summed over the ranks), before any numerical work. Collective.
+PetscErrorCode MumpsFactorMemory(Mat A, double* bytes);
+/// Prints that estimate and refuses (naming -modes_memory_limit) when it exceeds the
+/// limit, unless -force (factor_memory.cpp). Collective.
+PetscErrorCode CheckFactorMemory(Mat A, const ModesOptions& options);
 
 struct Mode {
   double frequency;      ///< [Hz]
