@@ -42,7 +42,6 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
              "%s is not supported in 3D yet (-specimen_depth > 0)", given);
   const std::pair<bool, const char*> refused[] = {{s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
                                                   {s->wave.lts.on, "-wave_lts on"},
-                                                  {s->wave.harmonic_start, "-wave_start harmonic"},
                                                   {s->material.damping_heat, "-material_damping_heat"}};
   for (const auto& [refuse, option] : refused)
     PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
