@@ -76,7 +76,13 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double sh
   // for 91 steps at 2.2e4 dofs (a 3D heat box), hence a lower threshold there.
   PC pc;
   PetscCall(KSPGetPC(ksp, &pc));
-  if (direct) {
+  const char* prefix;
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  std::string user_pc;
+  PetscCall(UserPcType(prefix, &user_pc));
+  // A preconditioner the user names is iterated to the tolerance, never applied once.
+  const bool factor = user_pc.empty() || user_pc == PCREDUNDANT || user_pc == PCCHOLESKY || user_pc == PCLU;
+  if (direct && factor) {
     PetscCall(KSPSetType(ksp, KSPPREONLY));
     PetscCall(PCSetType(pc, PCREDUNDANT));
     KSP inner;
@@ -96,11 +102,8 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double sh
   if (shift > 0.0) PetscCall(StiffnessToMassRatio(shift, &ratio));
   const bool jacobi = shift > 0.0 && ratio <= kJacobiStiffnessRatio;
   PetscCall(PCSetType(pc, jacobi ? PCJACOBI : PCHYPRE));
-  PetscCall(PetscInfo(ksp, "shift %g: stiffness-to-mass ratio %g, %s\n", shift, ratio, jacobi ? "Jacobi" : "BoomerAMG"));
-  const char* prefix;
-  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
-  std::string user_pc;
-  PetscCall(UserPcType(prefix, &user_pc));
+  PetscCall(PetscInfo(ksp, "%s: shift %g, stiffness-to-mass ratio %g: %s\n", prefix ? prefix : "", shift, ratio,
+                      jacobi ? "Jacobi" : "BoomerAMG"));
   const bool hypre = user_pc.empty() ? !jacobi : user_pc == PCHYPRE;
   if (hypre && space_.dim() == 3) PetscCall(DefaultBoomerAmg3D(prefix));
   PetscFunctionReturn(0);

@@ -56,10 +56,14 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry));
   HeatMeshSizes heat_sizes;
   PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
-  PetscCall(PetscPrintf(comm,
-                        "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
-                        "into its plane: %d x %d crack faces)\n",
-                        grid->cells(0), grid->cells(1), grid->cells(2), grid->crack_cells(0), grid->crack_cells(1)));
+  if (geometry.cracks.empty())
+    PetscCall(PetscPrintf(comm, "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (no crack)\n", grid->cells(0),
+                          grid->cells(1), grid->cells(2)));
+  else
+    PetscCall(PetscPrintf(comm,
+                          "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
+                          "into its plane: %d x %d crack faces)\n",
+                          grid->cells(0), grid->cells(1), grid->cells(2), grid->crack_cells(0), grid->crack_cells(1)));
   for (const BoxGrid::PatchSnap& snap : grid->patch_snaps())
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the patch's edge at %c = %g m stays on the grid line at %g m "
                           "(a fixed line within a third of a cell; summary.json mesh.source_area has the area)\n",
@@ -67,15 +71,16 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   DM serial;
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
-  const Crack& crack = geometry.cracks.front();
-  if (crack.shape == CrackShape::Ellipse) {
+  const bool cracked = !geometry.cracks.empty();
+  if (cracked && geometry.cracks.front().shape == CrackShape::Ellipse) {
+    const Crack& crack = geometry.cracks.front();
     const int n1 = grid->crack_cells(0), n2 = grid->crack_cells(1);
-    const double area = static_cast<double>(crack_faces) * crack.length * crack.width / (n1 * n2);
+    const double area = grid->crack_area();
     const double ellipse = 0.25 * M_PI * crack.length * crack.width;
     PetscCall(PetscPrintf(comm, "Meshing: the elliptical crack is %" PetscInt_FMT " of its %d x %d rectangle's faces: "
                           "%.4g m2, %.4f of the ellipse's area\n", crack_faces, n1, n2, area, area / ellipse));
   }
-  s->cracks = {CrackInfo{"crack1", geometry.cracks.front().length}};
+  if (cracked) s->cracks = {CrackInfo{"crack1", geometry.cracks.front().length}};
   s->source = "generated";
   // SplitCracks puts the front (edges with one crack face, their vertices) in the
   // boundary label and checks one cohesive cell per crack face.
@@ -83,9 +88,10 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   PetscCall(DMDestroy(&serial));
   std::unique_ptr<BoxGrid> heat_grid;
   PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &heat_grid, &s->heat, &s->heat_source));
-  bool exact;
-  s->crack_face_subdivisions = CrackFaceSubdivisions({grid->crack_cells(0), grid->crack_cells(1)},
-                                                     {heat_grid->crack_cells(0), heat_grid->crack_cells(1)}, &exact);
+  bool exact = true;
+  if (cracked)
+    s->crack_face_subdivisions = CrackFaceSubdivisions({grid->crack_cells(0), grid->crack_cells(1)},
+                                                       {heat_grid->crack_cells(0), heat_grid->crack_cells(1)}, &exact);
   if (!exact)
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat grid's crack faces do not nest in %d sub-squares a side "
                           "of the wave grid's: the friction heat's transfer is conservative but not exact (make "

@@ -227,6 +227,11 @@ PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscCallMPI(MPI_Allreduce(&h[0], &s->h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
   PetscCallMPI(MPI_Allreduce(&h[1], &s->h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
   PetscCall(CountOwned(dm, 0, &s->vertices));
+  if (specimen.cracks.empty()) {
+    PetscCall(SourceArea(dm, ghost, chart0, &s->source_area));
+    PetscCall(SummariseBoxHeatMesh(specimen, s));
+    PetscFunctionReturn(0);
+  }
   CrackSummary crack;
   crack.name = specimen.cracks.front().name;
   crack.requested_length = specimen.cracks.front().requested_length;

@@ -1,35 +1,46 @@
 // The memory a -modes run's shift-invert factorisation will take, from MUMPS's own
 // analysis, checked before any numerical work: a 3D stiffness fills far more than its
 // matrix (nested dissection: O(n^{4/3}) entries), and running out mid-factorisation on a
-// shared node is the worst way to learn it.
+// shared node is the worst way to learn it. The estimate is a lower bound of the run's
+// memory (not counting K, M, the Krylov basis, pivoting growth) and costs one extra
+// analysis (the ordering, on rank 0); the limit is rank 0's node's.
 #include <petscmat.h>
 
 #include <cmath>
+#include <string>
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
 #include "vibrotherm/modes/modal_analysis.hpp"
 
 namespace vibrotherm::modes {
 
-PetscErrorCode MumpsFactorMemory(Mat A, double* bytes) {
+PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes) {
   PetscFunctionBeginUser;
   Mat F;
   MatFactorInfo info;
   PetscCall(MatFactorInfoInitialize(&info));
   PetscCall(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_LU, &F));
+  PetscCall(MatSetOptionsPrefix(F, prefix));  // the user's -<prefix>mat_mumps_icntl_* (ordering, relaxation) count
   PetscCall(MatLUFactorSymbolic(F, A, nullptr, nullptr, &info));  // MUMPS's analysis: ordering, estimates
-  PetscInt megabytes;
-  PetscCall(MatMumpsGetInfog(F, 17, &megabytes));  // in-core factorisation, summed over the ranks [MB]
+  MatFactorError failed;
+  PetscCall(MatFactorGetError(F, &failed));
+  PetscInt megabytes = -1;
+  if (failed == MAT_FACTOR_NOERROR) PetscCall(MatMumpsGetInfog(F, 17, &megabytes));  // in-core, summed over ranks [MB]
   PetscCall(MatDestroy(&F));
+  PetscCheck(megabytes >= 0, PetscObjectComm((PetscObject)A), PETSC_ERR_LIB,
+             "-modes: MUMPS's analysis of the stiffness failed (error %d)", static_cast<int>(failed));
   *bytes = static_cast<double>(megabytes) * 1e6;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckFactorMemory(Mat A, const ModesOptions& options) {
+PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& options) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)A);
+  char solver[64] = MATSOLVERMUMPS;
+  PetscCall(PetscOptionsGetString(nullptr, prefix, "-pc_factor_mat_solver_type", solver, sizeof solver, nullptr));
+  if (std::string(solver) != MATSOLVERMUMPS) PetscFunctionReturn(0);  // another solver: no MUMPS estimate
   double needed;
-  PetscCall(MumpsFactorMemory(A, &needed));
+  PetscCall(MumpsFactorMemory(A, prefix, &needed));
   double limit = options.memory_limit_gb * 1e9;
   if (!(limit > 0.0)) {
     limit = mesh::AvailableMemory();

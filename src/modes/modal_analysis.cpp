@@ -220,7 +220,9 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDist
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(EPSSetFromOptions(eps));
-  PetscCall(CheckFactorMemory(K_, options));
+  const char* factor_prefix;
+  PetscCall(KSPGetOptionsPrefix(ksp, &factor_prefix));
+  PetscCall(CheckFactorMemory(K_, factor_prefix, options));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
   PetscCall(EPSSolve(eps));
   PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));

@@ -159,6 +159,7 @@ TEST(EllipticalCrack, IsTheStaircaseOfWaveFacesInTheEllipse) {
   EXPECT_EQ(faces, expected);
   EXPECT_NEAR(area, expected * (0.008 / n1) * (0.006 / n2), 1e-15);
   EXPECT_NEAR(area / (0.25 * M_PI * 0.008 * 0.006), 1.0, 0.03);
+  EXPECT_NEAR(grid.crack_area(), area, 1e-15);  // what the run prints
   DM split;
   ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);  // checks one cohesive cell per crack face
   DMDestroy(&split);

@@ -26,7 +26,7 @@ with layers graded across the crack plane) with the friction power of its contac
    the peak).
 
 usage: test_heat_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, sys, tempfile
+import csv, json, os, subprocess, sys, tempfile
 
 import h5py
 import numpy as np
@@ -135,6 +135,12 @@ with tempfile.TemporaryDirectory() as tmp:
         if serial[1].shape == parallel[1].shape:  # the face is barely warm: against the field's peak
             diff = np.abs(serial[1] - parallel[1]).max()
             check(diff <= 1e-10 * serial[2], "2 ranks: camera frames differ by %.3g (field peak %.3g)" % (diff, serial[2]))
+    out = os.path.join(tmp, "info")  # the coupled steps' solver, as PETSc's -info says it was chosen
+    r = subprocess.run([exe] + opts + ["-final_time", "2e-6", "-info", ":ksp", "-output_dir", out],
+                       capture_output=True, text=True)
+    check(r.returncode == 0 and "heat_: shift" in r.stdout and "stiffness-to-mass ratio" in r.stdout and
+          [l for l in r.stdout.splitlines() if "heat_: shift" in l][0].endswith(": Jacobi"),
+          "the coupled heat steps take CG + Jacobi: %s" % [l for l in r.stdout.splitlines() if "shift" in l][:2])
     if parallel:
         ratio = json.load(open(os.path.join(tmp, "np2", "summary.json")))["derived"].get("heat_stiffness_ratio")
         check(ratio is not None and 0 < ratio <= 10, "coupled heat steps mass-dominated: ratio %s" % ratio)

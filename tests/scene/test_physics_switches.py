@@ -3,7 +3,8 @@
 and no heat; an open crack → no contact; μ = 0 → contact but no heat TS (summary.json
 and -log_view agree); friction → the heat TS runs; after a short source the wave solver
 stops once the waves are quiet and the heat TS carries on alone to -final_time, with
-the heat deposited equal to the energy dissipated (1e-12).
+the heat deposited equal to the energy dissipated (1e-12). A 3D box without a crack runs
+its waves alone.
 
 usage: test_physics_switches.py VIBROTHERM"""
 import json, os, subprocess, sys, tempfile
@@ -34,7 +35,10 @@ with tempfile.TemporaryDirectory() as tmp:
              ("open crack", crack + ["-crack_law", "open"], ["wave"]),
              ("mu = 0", crack + ["-contact_mu", "0"], ["wave", "contact"]),
              ("friction", crack + ["-contact_mu", "1"], ["wave", "contact", "heat"]),
-             ("heat forced on", ["-heat", "on"], ["wave", "heat"])]
+             ("heat forced on", ["-heat", "on"], ["wave", "heat"]),
+             # A 3D box without a crack (issue 26): waves only.
+             ("3D box, no crack", ["-specimen_width", "0.02", "-specimen_height", "0.02", "-specimen_depth", "0.01",
+                                   "-wave_degree", "2"], ["wave"])]
     for name, extra, expected in cases:
         summary, log = run(tmp, name.replace(" ", "_"), extra)
         if not summary:

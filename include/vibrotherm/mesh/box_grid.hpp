@@ -53,6 +53,8 @@ class BoxGrid {
   bool on_crack(const std::array<double, 3>& f) const;
   /// The crack's facets and its cells along strike and z.
   int crack_cells(int along) const { return along == 0 ? crack_hi_[q_] - crack_lo_[q_] : crack_hi_[2] - crack_lo_[2]; }
+  /// The area of the crack's faces [m²] (an ellipse: its staircase).
+  double crack_area() const;
   /// The unit normal of the crack plane (p = y: (−sin θ, cos θ, 0) up to sign).
   std::array<double, 3> normal() const { return normal_; }
   /// Whether the crack of g runs through the thickness: its z extent is [0, D]
@@ -85,6 +87,8 @@ class BoxGrid {
   double slope_ = 0.0;
   std::array<double, 3> centre_{}, extent_{}, size_{}, normal_{};
   std::vector<PatchSnap> patch_snaps_;
+  bool cracked_ = true;  ///< false: a box without a crack
+  double strike_per_q_ = 1.0;  ///< length along the strike per unit of the in-plane grid axis q
   CrackShape shape_ = CrackShape::Rectangle;
   std::array<int, 2> outline_cells_{};  ///< the wave grid's crack cells along strike and z (the staircase)
 };

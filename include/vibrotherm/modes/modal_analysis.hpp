@@ -39,11 +39,13 @@ struct ModesOptions {
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
 
 /// MUMPS's estimate of the memory its LU factorisation of A takes [bytes] (its analysis
-/// phase, INFOG(17): in-core, summed over the ranks), before any numerical work. Collective.
-PetscErrorCode MumpsFactorMemory(Mat A, double* bytes);
+/// phase with the -<prefix>mat_mumps_* options, INFOG(17): in-core, summed over the
+/// ranks), before any numerical work. Collective.
+PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes);
 /// Prints that estimate and refuses (naming -modes_memory_limit) when it exceeds the
-/// limit, unless -force (factor_memory.cpp). Collective.
-PetscErrorCode CheckFactorMemory(Mat A, const ModesOptions& options);
+/// limit, unless -force; nothing when -<prefix>pc_factor_mat_solver_type is not MUMPS
+/// (factor_memory.cpp). Collective.
+PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& options);
 
 struct Mode {
   double frequency;      ///< [Hz]

@@ -21,7 +21,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   PetscCall(stage.Begin("Heat setup"));
   PetscCall(solver_.Setup(specimen.heat, scene.heat));
   summary->dofs_heat = solver_.dofs();
-  if (scene.heat.coupled_step > 0.0) {
+  if (scene.heat.coupled_step > 0.0 && scene.run.physics != PhysicsChoice::Heat) {
     double ratio;
     PetscCall(solver_.StiffnessToMassRatio(1.0 / scene.heat.coupled_step, &ratio));
     summary->derived["heat_stiffness_ratio"] = ratio;
