@@ -62,7 +62,7 @@ PetscErrorCode HeatSolver::StiffnessToMassRatio(double shift, double* ratio) con
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double shift) {
+PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double stiffness_ratio) {
   PetscFunctionBeginUser;
   // The Jacobian (K + shift M, sink rows and columns replaced by the identity)
   // is SPD. Below kDirectSolveDofs: Cholesky (nested dissection, on every rank),
@@ -98,11 +98,9 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double sh
   // A fixed step so short that the mass dominates every row (the coupled steps:
   // fractions of a source period) needs no multigrid: Jacobi's CG converges in a few
   // dozen products, each ~7× cheaper than a V-cycle (block3d, ratio below).
-  double ratio = 0.0;
-  if (shift > 0.0) PetscCall(StiffnessToMassRatio(shift, &ratio));
-  const bool jacobi = shift > 0.0 && ratio <= kJacobiStiffnessRatio;
+  const bool jacobi = stiffness_ratio >= 0.0 && stiffness_ratio <= kJacobiStiffnessRatio;
   PetscCall(PCSetType(pc, jacobi ? PCJACOBI : PCHYPRE));
-  PetscCall(PetscInfo(ksp, "%s: shift %g, stiffness-to-mass ratio %g: %s\n", prefix ? prefix : "", shift, ratio,
+  PetscCall(PetscInfo(ksp, "%s: stiffness-to-mass ratio %g: %s\n", prefix ? prefix : "", stiffness_ratio,
                       jacobi ? "Jacobi" : "BoomerAMG"));
   const bool hypre = user_pc.empty() ? !jacobi : user_pc == PCHYPRE;
   if (hypre && space_.dim() == 3) PetscCall(DefaultBoomerAmg3D(prefix));

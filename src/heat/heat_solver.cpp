@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include "vibrotherm/heat/heat_element.hpp"
 #include "vibrotherm/heat/step_ladder.hpp"
@@ -82,13 +81,13 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   // at the crack centre at 0.1 ms with one step per interval, measured), backward
   // Euler is L-stable and its balance closes exactly (Account). The step is fixed:
   // the matrix is factored once.
-  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, options.coupled_step > 0.0 ? 1.0 / options.coupled_step : 0.0,
-                     &coupled_ts_));
+  if (options.coupled_step > 0.0) PetscCall(StiffnessToMassRatio(1.0 / options.coupled_step, &coupled_stiffness_ratio_));
+  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, coupled_stiffness_ratio_, &coupled_ts_));
   ts_ = coupled_ts_;
   // The free phase's TS now too, not when the waves stop: its options (-heat_free_*)
   // are read, and a bad one refused, before any step.
   PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
-  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, 0.0, &free_ts_));
+  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, -1.0, &free_ts_));
   PetscFunctionReturn(0);
 }
 
@@ -140,7 +139,8 @@ PetscErrorCode HeatSolver::AddConvectiveFilm() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double shift, TS* ts) {
+PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double stiffness_ratio,
+                                    TS* ts) {
   PetscFunctionBeginUser;
   Mat J;  // the pattern of the assembled K (and M, assembled from the same closures)
   PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &J));
@@ -168,7 +168,7 @@ PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType
   PetscCall(TSGetSNES(*ts, &snes));
   PetscCall(SNESSetType(snes, SNESKSPONLY));  // linear: one linear solve per stage
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(ConfigureLinearSolver(ksp, direct_solve(), shift));
+  PetscCall(ConfigureLinearSolver(ksp, direct_solve(), stiffness_ratio));
   PetscCall(TSSetFromOptions(*ts));
   PetscFunctionReturn(0);
 }

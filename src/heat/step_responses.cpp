@@ -52,7 +52,9 @@ PetscErrorCode HeatSolver::ResponseSolver(double dt, double w, KSP* ksp) {
   PetscCall(AssembleJacobian(this, shift, f.J));
   PetscCall(KSPCreate(PetscObjectComm((PetscObject)dm_), &f.ksp));
   PetscCall(KSPSetOptionsPrefix(f.ksp, "heat_response_"));
-  PetscCall(ConfigureLinearSolver(f.ksp, direct_solve(), shift));
+  double ratio;
+  PetscCall(StiffnessToMassRatio(shift, &ratio));
+  PetscCall(ConfigureLinearSolver(f.ksp, direct_solve(), ratio));
   PetscCall(KSPSetOperators(f.ksp, f.J, f.J));
   PetscCall(KSPSetFromOptions(f.ksp));
   response_factors_.push_back(f);

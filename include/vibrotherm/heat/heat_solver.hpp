@@ -131,6 +131,8 @@ class HeatSolver {
   /// max_i K_ii / (shift M_ii): how far K + shift·M is from its mass (a step dt of
   /// backward Euler: shift = 1/dt). Collective.
   PetscErrorCode StiffnessToMassRatio(double shift, double* ratio) const;
+  /// That ratio for the coupled step (HeatOptions::coupled_step; < 0 when not given).
+  double coupled_stiffness_ratio() const { return coupled_stiffness_ratio_; }
   /// Up to this ratio an iterative solve uses CG with Jacobi (ConfigureLinearSolver).
   static constexpr double kJacobiStiffnessRatio = 10.0;
   const fe::LagrangeSpace& space() const { return space_; }
@@ -169,11 +171,12 @@ class HeatSolver {
   Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   std::vector<fe::LocatedPoint> probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double shift, TS* ts);
-  /// A linear solver for K + shift·M (shift = 0: it varies): Cholesky when `direct`,
-  /// else CG with Jacobi when the mass dominates every row (StiffnessToMassRatio ≤
-  /// kJacobiStiffnessRatio), else CG with BoomerAMG (heat_linear_solver.cpp).
-  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct, double shift);
+  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double stiffness_ratio, TS* ts);
+  /// A linear solver for K + shift·M of this StiffnessToMassRatio (< 0: the shift varies):
+  /// Cholesky when `direct`, else CG with Jacobi when the mass dominates every row (ratio
+  /// ≤ kJacobiStiffnessRatio), else CG with BoomerAMG (heat_linear_solver.cpp).
+  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct, double stiffness_ratio);
+  double coupled_stiffness_ratio_ = -1.0;  ///< of the coupled step (< 0: not known)
   static constexpr PetscInt kDirectSolveDofs = 50000;   ///< above: CG + AMG even for fixed steps
   static constexpr PetscInt kDirectSolveDofs3D = 5000;  ///< the same on a 3D mesh (more fill)
   bool direct_solve() const { return global_dofs_ <= (space_.dim() == 3 ? kDirectSolveDofs3D : kDirectSolveDofs); }

@@ -21,10 +21,8 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   PetscCall(stage.Begin("Heat setup"));
   PetscCall(solver_.Setup(specimen.heat, scene.heat));
   summary->dofs_heat = solver_.dofs();
-  if (scene.heat.coupled_step > 0.0 && scene.run.physics != PhysicsChoice::Heat) {
-    double ratio;
-    PetscCall(solver_.StiffnessToMassRatio(1.0 / scene.heat.coupled_step, &ratio));
-    summary->derived["heat_stiffness_ratio"] = ratio;
+  if (solver_.coupled_stiffness_ratio() >= 0.0 && scene.run.physics != PhysicsChoice::Heat) {
+    summary->derived["heat_stiffness_ratio"] = solver_.coupled_stiffness_ratio();
     summary->derived_rules["heat_stiffness_ratio"] =
         "max K_ii heat_dt / M_ii: up to 10 the coupled heat steps' CG takes Jacobi, not BoomerAMG (when not direct)";
   }
