@@ -1,4 +1,5 @@
-"""crack_maps.png: a 3D run's crack surface (crack_state.csv, fields.h5), in the crack plane.
+"""crack_maps.png: a 3D run's crack surfaces (crack_state.csv, fields.h5), each in its crack plane
+(one crack: 2 x 2 maps; several: a row of the four maps per crack).
 
     figure(run)        the figure, or raises run_data.Skip (scripts/plot's list; 2D runs
                        have crack_spacetime.png and temperature_maps.png instead)
@@ -70,12 +71,8 @@ def _panel(fig, ax, tri, values, title, label, cmap="magma"):
     ax.set_ylabel("s2 along -z [mm]")
 
 
-def figure(run):
-    import matplotlib.pyplot as plt
-
-    if run.summary.get("dimension", 2) != 3:
-        raise Skip("a 2D run (crack_spacetime.png and temperature_maps.png draw its cracks)")
-    crack_state = run.table("crack_state.csv")
+def _crack_panels(fig, axes, run, crack_state, title):
+    """The four maps of one crack (crack_state rows of that crack only) on axes[0..3]."""
     last = crack_state["t"] == crack_state["t"][-1]
     s1, s2 = crack_state["s1"][last] * 1e3, crack_state["s2"][last] * 1e3
     tri = _triangulation(s1, s2)
@@ -91,25 +88,43 @@ def figure(run):
     power, contact = power / np.maximum(count, 1), contact / np.maximum(count, 1)
     x = np.column_stack([crack_state[c][last] for c in ("x", "y", "z")])
     rise, output = _crack_plane_rise(run, x)
-    fig, axes = plt.subplots(2, 2, figsize=(13, 10))
     t_last = crack_state["t"][-1]
     span = t_last - crack_state["t"][window].min()
-    _panel(fig, axes[0, 0], tri, crack_state["W"][last], "(a) dissipated friction energy W at t = %.4g ms" % (t_last * 1e3),
-           "W [J/m²]")
-    _panel(fig, axes[0, 1], tri, power, "(b) friction power, mean over the last %.3g µs" % (span * 1e6),
+    _panel(fig, axes[0], tri, crack_state["W"][last], "%s(a) dissipated friction energy W at t = %.4g ms"
+           % (title, t_last * 1e3), "W [J/m²]")
+    _panel(fig, axes[1], tri, power, "%s(b) friction power, mean over the last %.3g µs" % (title, span * 1e6),
            "power [W/m²]")
-    _panel(fig, axes[1, 0], tri, contact, "(c) share of those records in contact", "fraction in contact",
+    _panel(fig, axes[2], tri, contact, "%s(c) share of those records in contact" % title, "fraction in contact",
            cmap="Blues")
     if rise is None:
-        axes[1, 1].set_axis_off()
-        axes[1, 1].text(0.5, 0.5, "no temperature field (give -output_times)", ha="center")
+        axes[3].set_axis_off()
+        axes[3].text(0.5, 0.5, "no temperature field (give -output_times)", ha="center")
     else:
         try:
             when = "t = %.4g ms" % (run.field_times("heat")[output] * 1e3)
         except (Skip, IndexError):
             when = "output %d" % output
-        _panel(fig, axes[1, 1], tri, rise * 1e6, "(d) temperature rise on the crack plane at %s" % when, "rise [µK]",
-               cmap="inferno")
-    fig.suptitle("Crack surface of %s: %d contact cells (crack_state.csv)" % (run.crack_name(1), last.sum()))
+        _panel(fig, axes[3], tri, rise * 1e6, "%s(d) temperature rise on the crack plane at %s" % (title, when),
+               "rise [µK]", cmap="inferno")
+    return last.sum()
+
+
+def figure(run):
+    import matplotlib.pyplot as plt
+
+    if run.summary.get("dimension", 2) != 3:
+        raise Skip("a 2D run (crack_spacetime.png and temperature_maps.png draw its cracks)")
+    crack_state = run.table("crack_state.csv")
+    cracks = np.unique(crack_state["crack"]).astype(int)
+    if len(cracks) == 1:  # 2 x 2 maps
+        fig, axes = plt.subplots(2, 2, figsize=(13, 10))
+        cells = _crack_panels(fig, axes.ravel(), run, crack_state, "")
+        fig.suptitle("Crack surface of %s: %d contact cells (crack_state.csv)" % (run.crack_name(1), cells))
+    else:  # a row of four maps per crack
+        fig, axes = plt.subplots(len(cracks), 4, figsize=(24, 5 * len(cracks)), squeeze=False)
+        for row, k in zip(axes, cracks):
+            rows = crack_state["crack"] == k
+            _crack_panels(fig, row, run, {c: v[rows] for c, v in crack_state.items()}, "%s: " % run.crack_name(k))
+        fig.suptitle("Crack surfaces of %d cracks (crack_state.csv; each map on its crack's plane)" % len(cracks))
     fig.tight_layout()
     return fig

@@ -106,8 +106,9 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   PetscCall(DMGetLocalSection(dm, &section));
   const PetscScalar* w;
   PetscCall(VecGetArrayRead(weights, &w));
-  DMLabel plus_faces;
+  DMLabel plus_faces, crack_label;
   PetscCall(DMGetLabel(dm, mesh::labels::crack_plus, &plus_faces));
+  PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
   PetscCheck(plus_faces || cohesive.empty(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "3D crack: no %s label (SplitCracks sets it)", mesh::labels::crack_plus);
   std::map<PetscInt, ContactCell> by_point;
@@ -118,6 +119,11 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
     PetscCall(DMPlexComputeCellGeometryFVM(dm, cone[0], &area, centre, normal));
     ContactCell frame{};
     FrameOf(normal, &frame);
+    PetscInt crack;  // the crack's number from 1 (box_mesher.cpp)
+    PetscCall(DMLabelGetValue(crack_label, cone[0], &crack));
+    PetscCheck(crack >= 1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D crack: a cohesive cell's face is not labelled %s",
+               mesh::labels::crack);
+    frame.crack = crack - 1;
     PetscInt side;  // the split labelled the + face on the serial mesh (mesh/plex/labels.hpp)
     PetscCall(DMLabelGetValue(plus_faces, cone[0], &side));
     const int plus = side == 1 ? 0 : 1;

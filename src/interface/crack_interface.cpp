@@ -95,7 +95,7 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
                                           const ApproachProfile& a0) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
-  if (dim_ == 3) {  // one planar crack; no parameterisation along it yet (ξ = 0.5)
+  if (dim_ == 3) {  // planar cracks; no parameterisation along them yet (ξ = 0.5)
     PetscCall(ContactCells3D(space, &cells_));
     for (ContactCell& cell : cells_) cell.xi = 0.5, cell.a0 = a0.at(cell.xi);
     PetscCall(FindCentre());
@@ -322,6 +322,17 @@ PetscErrorCode CrackInterface::Energies(double* stored, double* dissipated) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CrackInterface::DissipatedByCrack(std::vector<double>* by_crack) const {
+  PetscFunctionBeginUser;
+  PetscInt ncracks = 0;
+  for (const ContactCell& c : cells_) ncracks = std::max(ncracks, c.crack + 1);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncracks, 1, MPIU_INT, MPI_MAX, comm_));
+  by_crack->assign(static_cast<std::size_t>(ncracks), 0.0);
+  for (std::size_t i = 0; i < cells_.size(); ++i) (*by_crack)[static_cast<std::size_t>(cells_[i].crack)] += cells_[i].weight * W_[i];
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, by_crack->data(), static_cast<int>(ncracks), MPI_DOUBLE, MPI_SUM, comm_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* owned_index) const {
   PetscFunctionBeginUser;
   struct {
@@ -346,15 +357,20 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
 
 PetscErrorCode CrackInterface::FindCentre() {
   PetscFunctionBeginUser;
-  // The area-weighted mean of the cells: the centre of a rectangular crack (its
-  // lattice of nodes is symmetric), the origin of crack_state.csv's s1, s2.
-  double sums[4] = {0.0, 0.0, 0.0, 0.0};
+  PetscInt ncracks = 0;
+  for (const ContactCell& c : cells_) ncracks = std::max(ncracks, c.crack + 1);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncracks, 1, MPIU_INT, MPI_MAX, comm_));
+  // The area-weighted mean of each crack's cells: the centre of a rectangular crack
+  // (its lattice of nodes is symmetric), the origin of crack_state.csv's s1, s2.
+  std::vector<double> sums(4 * static_cast<std::size_t>(ncracks), 0.0);
   for (const ContactCell& c : cells_) {
-    sums[0] += c.weight * c.x, sums[1] += c.weight * c.y, sums[2] += c.weight * c.z;
-    sums[3] += c.weight;
+    double* s = &sums[4 * static_cast<std::size_t>(c.crack)];
+    s[0] += c.weight * c.x, s[1] += c.weight * c.y, s[2] += c.weight * c.z, s[3] += c.weight;
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 4, MPI_DOUBLE, MPI_SUM, comm_));
-  for (int d = 0; d < 3; ++d) centre_[d] = sums[3] > 0.0 ? sums[d] / sums[3] : 0.0;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, comm_));
+  centres_.assign(static_cast<std::size_t>(ncracks), {0.0, 0.0, 0.0});
+  for (std::size_t k = 0; k < centres_.size(); ++k)
+    for (int d = 0; d < 3; ++d) centres_[k][d] = sums[4 * k + 3] > 0.0 ? sums[4 * k + d] / sums[4 * k + 3] : 0.0;
   PetscFunctionReturn(0);
 }
 
@@ -373,7 +389,8 @@ PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u
     r.N = s.N, r.T = s.T[0], r.state = s.state;
     r.power = power_[i], r.W = W_[i];
     if (dim_ == 3) {  // the position on the crack plane, and the second tangential components
-      const double d[3] = {c.x - centre_[0], c.y - centre_[1], c.z - centre_[2]};
+      const std::array<double, 3>& centre = centres_[static_cast<std::size_t>(c.crack)];
+      const double d[3] = {c.x - centre[0], c.y - centre[1], c.z - centre[2]};
       r.xi = d[0] * c.s[0] + d[1] * c.s[1] + d[2] * c.s[2];
       r.eta = d[0] * c.s2[0] + d[1] * c.s2[1] + d[2] * c.s2[2];
       r.z = c.z, r.b2 = b_[i][1], r.T2 = s.T[1];

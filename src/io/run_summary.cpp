@@ -73,6 +73,7 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
   const char* energy = s.mesh.dimension == 3 ? "J" : "J/m";  // 2D: per metre of depth
   const std::pair<const char*, const char*> units[] = {
       {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", energy},
+      {"dissipated_energy_by_crack", energy},
       {"heat_deposited", energy}, {"heat_content", energy}, {"heat_boundary_loss", energy},
       {"wave_energy_left", energy}, {"work_thermal", energy},
       {"probe_max_temperature_rise", "K"}, {"output_temperature_rise", "K (t in s)"}, {"max_budget_error", "1"},
@@ -153,6 +154,9 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       json.value("wave_dt_reductions", s.wave_dt_reductions);
       json.value("wave_energy_left", s.wave_energy_left).value("work_thermal", s.work_thermal);
       json.value("dissipated_energy", s.dissipated_energy).value("max_friction_excess", s.max_friction_excess);
+      json.begin_array("dissipated_energy_by_crack");
+      for (double w : s.dissipated_energy_by_crack) json.value(nullptr, w);
+      json.end_array();
       json.begin_object("physics_time");
       for (const auto& [name, span] : s.physics_time) {
         json.begin_array(name.c_str());

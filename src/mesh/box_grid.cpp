@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,23 +51,98 @@ std::vector<double> LayeredSteps(double distance, double first, double growth, d
 /// The number of cells of size about h across `extent` (at least 1).
 int CellsAcross(double extent, double h) { return std::max(1, static_cast<int>(std::lround(extent / h))); }
 
+/// Overlapping segments merged: the ends of every segment in it (sorted) and the
+/// cells of each sub-interval between them (empty: a plane).
+struct Run {
+  std::vector<double> ends;
+  std::vector<int> cells;
+  double first_cell() const { return cells.empty() ? 0.0 : (ends[1] - ends[0]) / cells.front(); }
+  double last_cell() const { return cells.empty() ? 0.0 : (ends.back() - ends[ends.size() - 2]) / cells.back(); }
+};
+
+/// Moves segment ends within `snap` of the smallest end of their group (sorted ends
+/// each within `snap` of the next) onto it: one grid line, not a sliver cell. Ends on the
+/// box's faces (0, length: a crack through the thickness) are never a target, so a
+/// buried crack stays buried.
+void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length) {
+  std::vector<double> ends;
+  for (const AxisSegment& s : *segments)
+    for (double end : {s.lo, s.hi})
+      if (end > 0.0 && end < length) ends.push_back(end);
+  std::sort(ends.begin(), ends.end());
+  std::vector<double> target(ends.size());
+  for (std::size_t i = 0; i < ends.size(); ++i) target[i] = i > 0 && ends[i] - ends[i - 1] <= snap ? target[i - 1] : ends[i];
+  for (AxisSegment& s : *segments)
+    for (double* end : {&s.lo, &s.hi})
+      if (s.cells > 0 && *end > 0.0 && *end < length)  // planes (cells 0) are apart already
+        *end = target[std::lower_bound(ends.begin(), ends.end(), *end) - ends.begin()];
+}
+
+std::vector<Run> MergeSegments(std::vector<AxisSegment> segments) {
+  std::sort(segments.begin(), segments.end(), [](const AxisSegment& a, const AxisSegment& b) { return a.lo < b.lo; });
+  std::vector<Run> runs;
+  std::vector<std::vector<AxisSegment>> members;
+  for (const AxisSegment& s : segments) {
+    if (runs.empty() || s.lo > runs.back().ends.back()) runs.push_back({{s.lo}, {}}), members.push_back({});
+    Run& r = runs.back();
+    r.ends.push_back(s.lo), r.ends.push_back(s.hi);
+    members.back().push_back(s);
+    std::sort(r.ends.begin(), r.ends.end());
+    r.ends.erase(std::unique(r.ends.begin(), r.ends.end()), r.ends.end());
+  }
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    Run& r = runs[k];
+    for (std::size_t j = 0; j + 1 < r.ends.size(); ++j) {
+      int n = 1;  // cells no larger than any covering segment's (one segment: exactly its cells)
+      for (const AxisSegment& s : members[k])
+        if (s.cells > 0 && s.lo <= r.ends[j] && s.hi >= r.ends[j + 1])
+          n = std::max(n, static_cast<int>(std::ceil(s.cells * (r.ends[j + 1] - r.ends[j]) / (s.hi - s.lo) - 1e-6)));
+      r.cells.push_back(n);
+    }
+  }
+  return runs;
+}
+
+/// The index of the node at x (it must be one).
+int NodeAt(const std::vector<double>& nodes, double x) {
+  const auto it = std::min_element(nodes.begin(), nodes.end(),
+                                   [x](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
+  return static_cast<int>(it - nodes.begin());
+}
+
 }  // namespace
 
-std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
-                               int* lo, int* hi, double first_layer, double growth) {
-  const double start = cells > 0 ? (b_hi - b_lo) / cells : h0;
-  const auto steps = [&](double distance) {
-    return cells == 0 && first_layer > 0.0 ? LayeredSteps(distance, first_layer, growth, start, h, grading)
-                                           : GradedSteps(distance, start, h, grading);
+std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& s, double snap) {
+  if (snap > 0.0) SnapEnds(&segments, snap, length);
+  const std::vector<Run> runs = MergeSegments(std::move(segments));
+  // Steps away from a run's end whose cell is `cell` (0: a plane, which gets h_crack or layers).
+  const auto steps = [&](double distance, double cell) {
+    return cell == 0.0 && s.first_layer > 0.0 ? LayeredSteps(distance, s.first_layer, s.growth, s.h_crack, s.h, s.grading)
+                                              : GradedSteps(distance, cell > 0.0 ? cell : s.h_crack, s.h, s.grading);
   };
-  const std::vector<double> below = steps(b_lo), above = steps(length - b_hi);
   std::vector<double> nodes = {0.0};
-  for (auto it = below.rbegin(); it != below.rend(); ++it) nodes.push_back(nodes.back() + *it);
-  nodes.back() = b_lo;
-  *lo = static_cast<int>(nodes.size()) - 1;
-  for (int k = 1; k <= cells; ++k) nodes.push_back(k == cells ? b_hi : b_lo + k * start);
-  *hi = static_cast<int>(nodes.size()) - 1;
-  for (double step : above) nodes.push_back(nodes.back() + step);
+  const auto append = [&](const std::vector<double>& forward) {
+    for (double step : forward) nodes.push_back(nodes.back() + step);
+  };
+  const auto append_reversed = [&](const std::vector<double>& backward) {
+    for (auto it = backward.rbegin(); it != backward.rend(); ++it) nodes.push_back(nodes.back() + *it);
+  };
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const Run& r = runs[k];
+    if (k == 0) {
+      append_reversed(steps(r.ends.front(), r.first_cell()));
+    } else {  // from both runs, meeting half way
+      const double half = 0.5 * (r.ends.front() - runs[k - 1].ends.back());
+      append(steps(half, runs[k - 1].last_cell()));
+      nodes.back() = runs[k - 1].ends.back() + half;
+      append_reversed(steps(half, r.first_cell()));
+    }
+    nodes.back() = r.ends.front();
+    for (std::size_t j = 0; j < r.cells.size(); ++j)
+      for (int i = 1; i <= r.cells[j]; ++i)
+        nodes.push_back(i == r.cells[j] ? r.ends[j + 1] : r.ends[j] + i * ((r.ends[j + 1] - r.ends[j]) / r.cells[j]));
+  }
+  append(steps(length - runs.back().ends.back(), runs.back().last_cell()));
   nodes.back() = length;
   return nodes;
 }
@@ -74,109 +150,194 @@ std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cell
 BoxGrid::BoxGrid(const SpecimenGeometry& g) : BoxGrid(g, BoxGridSizes{g.h_crack, g.h, g.grading}) {}
 
 BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
-  validate(g);
-  cracked_ = !g.cracks.empty();
-  // Without a crack, a plane through the box's centre stands in for it: no cells on it,
-  // no shear, no layers; every axis graded from -mesh_h on (uniform).
-  Crack c;
-  if (cracked_) c = g.cracks.front();
-  else c.x = 0.5 * g.width, c.y = 0.5 * g.height, c.z = 0.5 * g.depth;
-  const double h0 = cracked_ ? sizes.h_crack : sizes.h, first_layer = cracked_ ? sizes.first_layer : 0.0;
-  const double theta = c.angle_deg * M_PI / 180.0;
-  const bool steep = std::abs(std::cos(theta)) < std::sqrt(0.5) - 1e-12;
-  p_ = steep ? 0 : 1;
-  q_ = 1 - p_;
-  slope_ = steep ? std::cos(theta) / std::sin(theta) : std::tan(theta);
+  if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
+  g.validate();  // sizes, and each crack's trace in the x-y plane
   size_ = {g.width, g.height, g.depth};
-  centre_ = {c.x, c.y, c.z};
-  extent_[q_] = c.length * std::abs(steep ? std::sin(theta) : std::cos(theta));
-  strike_per_q_ = 1.0 / std::abs(steep ? std::sin(theta) : std::cos(theta));
-  extent_[p_] = 0.0;
-  extent_[2] = c.width;
-  normal_ = {-std::sin(theta), std::cos(theta), 0.0};
-  std::array<int, 3> along{};
-  along[q_] = cracked_ ? CellsAcross(c.length, sizes.h_crack) : 0;
-  along[2] = cracked_ ? CellsAcross(c.width, sizes.h_crack) : 0;
-  shape_ = c.shape;
-  outline_cells_ = {CellsAcross(c.length, g.h_crack), CellsAcross(c.width, g.h_crack)};  // the wave grid's
-  if (cracked_ && through_thickness(g)) centre_[2] = 0.5 * g.depth, extent_[2] = g.depth;  // ends exactly on the faces
-  for (int a = 0; a < 3; ++a)
-    nodes_[a] = GradedAxis(size_[a], centre_[a] - 0.5 * extent_[a], centre_[a] + 0.5 * extent_[a], along[a],
-                           h0, sizes.h, sizes.grading, &crack_lo_[a], &crack_hi_[a], first_layer, sizes.growth);
+  const auto steep = [](const Crack& c) { return std::abs(std::cos(c.angle_deg * M_PI / 180.0)) < std::sqrt(0.5) - 1e-12; };
+  p_ = !g.cracks.empty() && steep(g.cracks.front()) ? 0 : 1;
+  q_ = 1 - p_;
+  for (const Crack& c : g.cracks)
+    if ((steep(c) ? 0 : 1) != p_)
+      reject("-crack_angle: the cracks of a 3D box must all be within 45 degrees of horizontal, or all steeper (",
+             c.angle_deg, " and ", g.cracks.front().angle_deg, " given)");
+  std::vector<int> plane_of;
+  find_planes(g, &plane_of);
+  validate(g);
+  build_axes(g, sizes, plane_of);
+  check_fold();
   align_patch(g);
 }
 
-void BoxGrid::validate(const SpecimenGeometry& g) const {
-  if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
-  if (g.cracks.size() > 1)
-    reject("-crack_center: a 3D specimen holds at most one crack for now (x,y,z of its centre), got ", g.cracks.size());
-  g.validate();  // sizes, and the crack's trace in the x-y plane
-  if (g.cracks.empty()) return;
-  const Crack& c = g.cracks.front();
-  if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width);
+void BoxGrid::find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of) {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
-  const auto e0 = c.end(0), e1 = c.end(1);
-  const bool inside_box = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
-                              std::max(e0[1], e1[1]) < g.height - tol;
-  const double z0 = c.z - 0.5 * c.width, z1 = c.z + 0.5 * c.width;
-  // z: buried, or through the thickness (exactly [0, D]: a plane-strain slab's crack).
-  const bool z_ok = (z0 > tol && z1 < g.depth - tol) || through_thickness(g);
-  if (!inside_box || !z_ok)
-    reject("-crack_center/-crack_length/-crack_width: the crack reaches the outside of the specimen (3D cracks must ",
-           "be buried in x-y and either buried in z or through the thickness, -crack_width = -specimen_depth centred ",
-           "at z = depth/2; z extent [", z0, ", ", z1, "] of [0, ", g.depth, "])");
-  if (c.shape == CrackShape::Ellipse && through_thickness(g))
-    reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack through ",
-           "the thickness is a rectangle");
-  if (CellsAcross(c.length, g.h_crack) < 2)
-    reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
-  if (c.shape == CrackShape::Ellipse && std::min(CellsAcross(c.length, g.h_crack), CellsAcross(c.width, g.h_crack)) < 4)
-    reject("-crack_shape ellipse: the ellipse needs at least 4 cells of -mesh_h_crack ", g.h_crack,
-           " m across each axis (fewer make it its rectangle), got ", CellsAcross(c.length, g.h_crack), " x ",
-           CellsAcross(c.width, g.h_crack));
-  if (CellsAcross(c.width, g.h_crack) < 2 && !through_thickness(g))  // a through crack has no front along z
-    reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m");
-  // The shear x_p' = x_p + (x_q − c_q) m β(x_p) must not fold: |x_q − c_q| |m| max|β'| ≤ 3/4.
-  const double theta = c.angle_deg * M_PI / 180.0;
-  const bool steep = std::abs(std::cos(theta)) < std::sqrt(0.5) - 1e-12;
-  const double m = std::abs(steep ? std::cos(theta) / std::sin(theta) : std::tan(theta));
-  const double cp = steep ? c.x : c.y, cq = steep ? c.y : c.x;
-  const double Lp = steep ? g.width : g.height, Lq = steep ? g.height : g.width;
-  const double reach = std::max(cq, Lq - cq) * m * 0.5 * M_PI / std::min(cp, Lp - cp);
-  if (reach > 0.75)
-    reject("-crack_angle ", c.angle_deg, ": the 3D grid cannot be sheared into this crack plane without folding (the ",
-           "crack centre lies ", std::min(cp, Lp - cp), " m from the faces normal to ", steep ? "x" : "y",
-           "): a smaller inclination, or the crack farther from those faces");
+  for (const Crack& c : g.cracks) {
+    const double theta = c.angle_deg * M_PI / 180.0;
+    const double slope = p_ == 0 ? std::cos(theta) / std::sin(theta) : std::tan(theta);
+    const double cp = p_ == 0 ? c.x : c.y, cq = p_ == 0 ? c.y : c.x;
+    int found = -1;
+    for (std::size_t i = 0; i < planes_.size() && found < 0; ++i) {
+      const Plane& pl = planes_[i];
+      if (std::abs(pl.slope - slope) <= 1e-12 && std::abs(pl.at + pl.slope * (cq - pl.q0) - cp) <= tol)
+        found = static_cast<int>(i);  // on that line
+    }
+    // Each line's x_p at the first crack's x_q: the planes' unsheared positions and their
+    // spacing are compared at one x_q (one crack: its centre).
+    const double q_ref = p_ == 0 ? g.cracks.front().y : g.cracks.front().x;
+    if (found < 0) planes_.push_back({cp + slope * (q_ref - cq), slope, q_ref}), found = static_cast<int>(planes_.size()) - 1;
+    plane_of->push_back(found);
+  }
+  if (g.cracks.empty()) planes_.push_back({0.5 * size_[p_], 0.0, 0.5 * size_[q_]});  // a stand-in through the centre
+  // Sort the planes by position, renumbering the cracks' references.
+  std::vector<int> order(planes_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return planes_[a].at < planes_[b].at; });
+  std::vector<Plane> sorted;
+  std::vector<int> renumber(planes_.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted.push_back(planes_[order[k]]), renumber[order[k]] = static_cast<int>(k);
+  planes_ = sorted;
+  for (int& p : *plane_of) p = renumber[p];
 }
 
-bool BoxGrid::through_thickness(const SpecimenGeometry& g) {
-  if (g.cracks.empty()) return false;
-  const Crack& c = g.cracks.front();
+void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, const std::vector<int>& plane_of) {
+  const bool cracked = !g.cracks.empty();
+  // Without a crack a plane through the box's centre stands in for it: no cells on it,
+  // no shear, no layers; every axis graded from -mesh_h on (uniform).
+  const BoxGridSizes s = cracked ? sizes : BoxGridSizes{sizes.h, sizes.h, sizes.grading};
+  std::array<std::vector<AxisSegment>, 3> segments;
+  for (const Plane& pl : planes_) segments[p_].push_back({pl.at, pl.at, 0});
+  for (const Crack& c : g.cracks) {
+    const double theta = c.angle_deg * M_PI / 180.0;
+    const double cosine = std::abs(p_ == 0 ? std::sin(theta) : std::cos(theta));  // of the strike to the axis q
+    const double per_q = 1.0 / cosine, cq = q_ == 0 ? c.x : c.y, extent_q = c.length * cosine;
+    segments[q_].push_back({cq - 0.5 * extent_q, cq + 0.5 * extent_q, CellsAcross(c.length, s.h_crack)});
+    const bool through = through_thickness(c, g);  // ends exactly on the faces
+    const double z0 = through ? 0.0 : c.z - 0.5 * c.width, z1 = through ? g.depth : c.z + 0.5 * c.width;
+    segments[2].push_back({z0, z1, CellsAcross(c.width, s.h_crack)});
+    cracks_.push_back({0, {}, {}, c.shape, {CellsAcross(c.length, g.h_crack), CellsAcross(c.width, g.h_crack)}, per_q});
+  }
+  if (!cracked) segments[q_].push_back({0.5 * size_[q_], 0.5 * size_[q_], 0}), segments[2].push_back({0.5 * size_[2], 0.5 * size_[2], 0});
+  // Crack ends closer than a third of the wave grid's crack cell share a grid line.
+  const double snap = g.h_crack / 3.0;
+  for (int a = 0; a < 3; ++a) nodes_[a] = AxisNodes(size_[a], segments[a], s, snap);
+  for (int a : {q_, 2}) SnapEnds(&segments[a], snap, size_[a]);  // as AxisNodes placed them
+  for (int a = 0; a < 3 && !cracked; ++a) stand_in_[a] = NodeAt(nodes_[a], segments[a].front().lo);
+  for (std::size_t k = 0; k < cracks_.size(); ++k) {
+    CrackOnGrid& c = cracks_[k];
+    c.plane = plane_of[k];
+    c.lo[p_] = c.hi[p_] = NodeAt(nodes_[p_], planes_[c.plane].at);
+    for (int a : {q_, 2}) {
+      const AxisSegment& seg = segments[a][k];
+      c.lo[a] = NodeAt(nodes_[a], seg.lo), c.hi[a] = NodeAt(nodes_[a], seg.hi);
+    }
+  }
+}
+
+void BoxGrid::validate(const SpecimenGeometry& g) const {
+  const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
+  for (std::size_t k = 0; k < g.cracks.size(); ++k) {
+    const Crack& c = g.cracks[k];
+    const auto name = [&] { return g.cracks.size() > 1 ? " (crack " + std::to_string(k + 1) + ")" : std::string(); };
+    if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width, name());
+    const auto e0 = c.end(0), e1 = c.end(1);
+    const bool inside_box = std::min({e0[0], e1[0], e0[1], e1[1]}) > tol && std::max(e0[0], e1[0]) < g.width - tol &&
+                            std::max(e0[1], e1[1]) < g.height - tol;
+    const double z0 = c.z - 0.5 * c.width, z1 = c.z + 0.5 * c.width;
+    // z: buried, or through the thickness (exactly [0, D]: a plane-strain slab's crack).
+    const bool through = through_thickness(c, g), z_ok = (z0 > tol && z1 < g.depth - tol) || through;
+    if (!inside_box || !z_ok)
+      reject("-crack_center/-crack_length/-crack_width: the crack", name(), " reaches the outside of the specimen (3D ",
+             "cracks must be buried in x-y and either buried in z or through the thickness, -crack_width = ",
+             "-specimen_depth centred at z = depth/2; z extent [", z0, ", ", z1, "] of [0, ", g.depth, "])");
+    if (c.shape == CrackShape::Ellipse && through)
+      reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack ",
+             "through the thickness is a rectangle");
+    const int along = CellsAcross(c.length, g.h_crack), across = CellsAcross(c.width, g.h_crack);
+    if (along < 2)
+      reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name());
+    if (c.shape == CrackShape::Ellipse && std::min(along, across) < 4)
+      reject("-crack_shape ellipse: the ellipse needs at least 4 cells of -mesh_h_crack ", g.h_crack,
+             " m across each axis (fewer make it its rectangle), got ", along, " x ", across, name());
+    if (across < 2 && !through)  // a through crack has no front along z
+      reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name());
+  }
+  for (std::size_t i = 1; i < planes_.size(); ++i)
+    if (planes_[i].at - planes_[i - 1].at < 2.0 * g.h_crack * (1.0 - 1e-9))
+      reject("-crack_center/-crack_angle: two crack planes lie ", planes_[i].at - planes_[i - 1].at, " m apart along ",
+             p_ == 0 ? "x" : "y", " (at ", q_ == 0 ? "x" : "y", " = ", planes_[i].q0, " m); they need at least 2 ",
+             "cells of -mesh_h_crack (", g.h_crack, " m) between them, and two cracks on one plane must lie on one line");
+  for (std::size_t i = 0; i < g.cracks.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {  // on one plane (the others are apart): their rectangles must not touch
+      const Crack &a = g.cracks[i], &b = g.cracks[j];
+      const double theta = a.angle_deg * M_PI / 180.0;
+      const double along = std::abs((a.x - b.x) * std::cos(theta) + (a.y - b.y) * std::sin(theta));
+      const double normal = std::abs(-(a.x - b.x) * std::sin(theta) + (a.y - b.y) * std::cos(theta));
+      const double gap = std::max(along - 0.5 * (a.length + b.length), std::abs(a.z - b.z) - 0.5 * (a.width + b.width));
+      if (normal < 2.0 * g.h_crack && gap < g.h_crack * (1.0 - 1e-9))
+        reject("-crack_center: cracks ", j + 1, " and ", i + 1, " overlap or come closer than one cell of ",
+               "-mesh_h_crack (", g.h_crack, " m) on their plane (gap ", gap, " m)");
+    }
+}
+
+bool BoxGrid::through_thickness(const Crack& c, const SpecimenGeometry& g) {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
   return std::abs(c.z - 0.5 * c.width) <= tol && std::abs(c.z + 0.5 * c.width - g.depth) <= tol;
 }
 
-double BoxGrid::blend(double xp) const {
-  const double d = xp < centre_[p_] ? centre_[p_] : size_[p_] - centre_[p_];
-  const double c = std::cos(0.5 * M_PI * (xp - centre_[p_]) / d);
-  return c * c;
+double BoxGrid::offset(double xp, double xq) const {
+  // Plane i's offset o_i(x_q) weighted by cos² of the way to its neighbour (or the face).
+  const auto above = std::upper_bound(planes_.begin(), planes_.end(), xp,
+                                      [](double x, const Plane& pl) { return x < pl.at; });
+  const auto weight = [&](const Plane& pl, double d) {
+    const double c = std::cos(0.5 * M_PI * (xp - pl.at) / d);
+    return (xq - pl.q0) * pl.slope * (c * c);
+  };
+  double shift = 0.0;
+  if (above != planes_.begin()) {  // the plane below x_p, toward the next one up (or the face)
+    const Plane& pl = *(above - 1);
+    shift += weight(pl, (above == planes_.end() ? size_[p_] : above->at) - pl.at);
+  }
+  if (above != planes_.end()) {  // the plane above, toward the one below (or the face at 0)
+    const Plane& pl = *above;
+    shift += weight(pl, pl.at - (above == planes_.begin() ? 0.0 : (above - 1)->at));
+  }
+  return shift;
+}
+
+void BoxGrid::check_fold() const {
+  // The shear is linear in x_q, so d x_p'/d x_p is extreme on the faces x_q = 0, L_q.
+  constexpr int kSamples = 4000;
+  for (double xq : {0.0, size_[q_]}) {
+    const double dx = size_[p_] / kSamples;
+    for (int i = 0; i < kSamples; ++i) {
+      const double x0 = i * dx, x1 = x0 + dx;
+      const double stretch = 1.0 + (offset(x1, xq) - offset(x0, xq)) / dx;
+      if (stretch < 0.25)
+        reject("-crack_angle/-crack_center: the 3D grid cannot be sheared into the crack plane", planes_.size() > 1 ?
+               "s" : "", " without folding (near ", p_ == 0 ? "x" : "y", " = ", x0, " m on the face ",
+               q_ == 0 ? "x" : "y", " = ", xq, " m): a smaller inclination, or the cracks farther from each other ",
+               "and from the faces normal to ", p_ == 0 ? "x" : "y");
+    }
+  }
 }
 
 std::array<double, 3> BoxGrid::position(const std::array<double, 3>& index) const {
   std::array<double, 3> x;
   for (int a = 0; a < 3; ++a) x[a] = nodes_[a][static_cast<std::size_t>(std::lround(index[a]))];
-  x[p_] += (x[q_] - centre_[q_]) * slope_ * blend(x[p_]);
+  x[p_] += offset(x[p_], x[q_]);
   return x;
 }
 
-bool BoxGrid::on_crack(const std::array<double, 3>& f) const {
-  if (!cracked_) return false;
-  const auto inside = [&](int a) { return f[a] > crack_lo_[a] && f[a] < crack_hi_[a]; };
-  return std::abs(f[p_] - crack_lo_[p_]) < 1e-9 && inside(q_) && inside(2) && inside_outline(f);
+int BoxGrid::crack_at(const std::array<double, 3>& f) const {
+  for (std::size_t k = 0; k < cracks_.size(); ++k) {
+    const CrackOnGrid& c = cracks_[k];
+    const auto inside = [&](int a) { return f[a] > c.lo[a] && f[a] < c.hi[a]; };
+    if (std::abs(f[p_] - c.lo[p_]) < 1e-9 && inside(q_) && inside(2) && inside_outline(c, f)) return static_cast<int>(k);
+  }
+  return -1;
 }
 
-bool BoxGrid::inside_outline(const std::array<double, 3>& f) const {
-  if (shape_ == CrackShape::Rectangle) return true;
+bool BoxGrid::inside_outline(const CrackOnGrid& c, const std::array<double, 3>& f) const {
+  if (c.shape == CrackShape::Rectangle) return true;
   // The crack's rectangle cut into the wave grid's uniform crack cells: the face is
   // kept when the cell holding its centre (by position, so that the wave grid and the
   // finer heat grid nested in it agree) has its centre in the ellipse.
@@ -186,23 +347,51 @@ bool BoxGrid::inside_outline(const std::array<double, 3>& f) const {
     const int a = axes[k];
     const std::size_t i = static_cast<std::size_t>(std::floor(f[a]));
     const double x = 0.5 * (nodes_[a][i] + nodes_[a][std::min(i + 1, nodes_[a].size() - 1)]);
-    const double lo = nodes_[a][crack_lo_[a]], hi = nodes_[a][crack_hi_[a]];
-    const double cell = std::floor((x - lo) / (hi - lo) * outline_cells_[k]);
-    const double centre = (cell + 0.5) / outline_cells_[k];
+    const double lo = nodes_[a][c.lo[a]], hi = nodes_[a][c.hi[a]];
+    const double cell = std::floor((x - lo) / (hi - lo) * c.outline_cells[k]);
+    const double centre = (cell + 0.5) / c.outline_cells[k];
     r2 += (2.0 * centre - 1.0) * (2.0 * centre - 1.0);
   }
   return r2 <= 1.0;
 }
 
-double BoxGrid::crack_area() const {
-  if (!cracked_) return 0.0;
-  double area = 0.0;
-  for (int i = crack_lo_[q_]; i < crack_hi_[q_]; ++i)
-    for (int j = crack_lo_[2]; j < crack_hi_[2]; ++j) {
+std::vector<double> BoxGrid::crack_nodes(int crack, int along) const {
+  const CrackOnGrid& c = cracks_.at(crack);
+  const int a = along == 0 ? q_ : 2;
+  return {nodes_[a].begin() + c.lo[a], nodes_[a].begin() + c.hi[a] + 1};
+}
+
+int BoxGrid::crack_cells(int along, int crack) const {
+  const CrackOnGrid& c = cracks_.at(crack);
+  const int a = along == 0 ? q_ : 2;
+  return c.hi[a] - c.lo[a];
+}
+
+void BoxGrid::for_each_face(int crack, const std::function<void(double)>& visit) const {
+  const CrackOnGrid& c = cracks_.at(crack);
+  for (int i = c.lo[q_]; i < c.hi[q_]; ++i)
+    for (int j = c.lo[2]; j < c.hi[2]; ++j) {
       std::array<double, 3> f{};
-      f[p_] = crack_lo_[p_], f[q_] = i + 0.5, f[2] = j + 0.5;
-      if (on_crack(f)) area += (nodes_[q_][i + 1] - nodes_[q_][i]) * strike_per_q_ * (nodes_[2][j + 1] - nodes_[2][j]);
+      f[p_] = c.lo[p_], f[q_] = i + 0.5, f[2] = j + 0.5;
+      if (crack_at(f) == crack) visit((nodes_[q_][i + 1] - nodes_[q_][i]) * c.strike_per_q * (nodes_[2][j + 1] - nodes_[2][j]));
     }
+}
+
+double BoxGrid::crack_area(int crack) const {
+  double area = 0.0;
+  for_each_face(crack, [&](double face) { area += face; });
+  return area;
+}
+
+int BoxGrid::crack_faces(int crack) const {
+  int faces = 0;
+  for_each_face(crack, [&](double) { ++faces; });
+  return faces;
+}
+
+double BoxGrid::crack_area() const {
+  double area = 0.0;
+  for (int k = 0; k < crack_count(); ++k) area += crack_area(k);
   return area;
 }
 

@@ -18,7 +18,7 @@ int FaceSide(const PetscReal* c, const BoxGrid& grid) {
   return at(c[2], grid.cells(2)) ? 4 : 5;
 }
 
-/// Labels the outer faces (kind, side) and the crack's faces (crack = 1, crack_face ids in point order).
+/// Labels the outer faces (kind, side) and the cracks' faces (crack = its number from 1, crack_face ids in point order).
 PetscErrorCode LabelFaces(DM dm, const SpecimenGeometry& g, const BoxGrid& grid, PetscInt* crack_faces) {
   PetscFunctionBeginUser;
   for (const char* name : {labels::crack, labels::crack_face, labels::crack_tip, labels::side, labels::sink})
@@ -36,8 +36,9 @@ PetscErrorCode LabelFaces(DM dm, const SpecimenGeometry& g, const BoxGrid& grid,
     PetscReal area, c[3], n[3];
     PetscCall(DMPlexGetSupportSize(dm, f, &cells));
     PetscCall(DMPlexComputeCellGeometryFVM(dm, f, &area, c, n));
-    if (cells == 2 && grid.on_crack({c[0], c[1], c[2]})) {
-      PetscCall(DMLabelSetValue(crack, f, 1));
+    const int on = cells == 2 ? grid.crack_at({c[0], c[1], c[2]}) : -1;
+    if (on >= 0) {
+      PetscCall(DMLabelSetValue(crack, f, on + 1));
       PetscCall(DMLabelSetValue(ids, f, (*crack_faces)++));
     } else if (cells == 1) {
       const int s = FaceSide(c, grid);

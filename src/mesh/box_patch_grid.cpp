@@ -47,13 +47,14 @@ double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double tar
 }
 
 double BoxGrid::unsheared(int a, int n, double at, double target) const {
-  if (a != p_ || slope_ == 0.0) return target;  // the shear moves x_p only
-  if (n != q_) return NAN;  // front, back: the shear moves x_p by x_q − c_q, which varies across the face
-  // On a face x_q = at the shear is x_p + (at − c_q) m β(x_p), increasing (it does not fold): bisect.
+  const bool sheared = std::any_of(planes_.begin(), planes_.end(), [](const Plane& pl) { return pl.slope != 0.0; });
+  if (a != p_ || !sheared) return target;  // the shear moves x_p only
+  if (n != q_) return NAN;  // front, back: the shear moves x_p by an amount that varies across the face
+  // On a face x_q = at the shear is x_p + offset(x_p, at), increasing (it does not fold): bisect.
   double lo = 0.0, hi = size_[p_];
   for (int i = 0; i < 80; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (mid + (at - centre_[q_]) * slope_ * blend(mid) < target ? lo : hi) = mid;
+    (mid + offset(mid, at) < target ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -66,15 +67,17 @@ void BoxGrid::align_patch(const SpecimenGeometry& g) {
   const auto axes = face_axes(side);
   for (int k = 0; k < 2; ++k) {
     const int a = axes[k];
-    std::vector<int> fixed = {0, crack_lo_[a], crack_hi_[a], cells(a)};
+    // Fixed: the faces and every crack's ends (their indices follow inserted nodes).
+    std::vector<int> fixed = {0, cells(a)};
+    for (const CrackOnGrid& c : cracks_) fixed.push_back(c.lo[a]), fixed.push_back(c.hi[a]);
+    if (cracks_.empty()) fixed.push_back(stand_in_[a]);  // the centre plane standing in for a crack
     for (double bound : g.patch.bounds(k)) {
       const double raw = unsheared(a, n, far ? size_[n] : 0.0, bound);
       if (!std::isfinite(raw)) continue;
       const double line = AlignNode(&nodes_[a], &fixed, raw, 1e-9 * size_[a]);
       if (std::abs(line - raw) > 1e-9 * size_[a]) patch_snaps_.push_back({a, raw, line});
     }
-    crack_lo_[a] = fixed[1];
-    crack_hi_[a] = fixed[2];
+    for (std::size_t j = 0; j < cracks_.size(); ++j) cracks_[j].lo[a] = fixed[2 + 2 * j], cracks_[j].hi[a] = fixed[3 + 2 * j];
   }
 }
 

@@ -24,10 +24,38 @@ PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry, BoxHeatGridSizes(geometry, sizes)));
   PetscCall(PetscPrintf(comm, "Meshing: the heat box of %d x %d x %d hexahedra (%s)\n", grid->cells(0),
                         grid->cells(1), grid->cells(2),
-                        sizes.graded ? "layers graded across the crack plane" : "the wave grid, unsplit"));
+                        !sizes.graded ? "the wave grid, unsplit" : geometry.cracks.size() > 1 ?
+                        "layers graded across the crack planes" : "layers graded across the crack plane"));
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, heat, &crack_faces));
   *heat_source = sizes.graded ? "graded" : "wave";
+  PetscFunctionReturn(0);
+}
+
+/// Each crack's faces, and how far an elliptical one's staircase is from its ellipse.
+PetscErrorCode PrintCracks(MPI_Comm comm, const SpecimenGeometry& geometry, const BoxGrid& grid, PetscInt faces) {
+  PetscFunctionBeginUser;
+  PetscInt counted = 0;
+  for (int k = 0; k < grid.crack_count(); ++k) {
+    const Crack& crack = geometry.cracks[k];
+    const int n1 = grid.crack_cells(0, k), n2 = grid.crack_cells(1, k);
+    const double area = grid.crack_area(k);
+    const PetscInt mine = grid.crack_faces(k);
+    counted += mine;
+    if (crack.shape == CrackShape::Ellipse)
+      PetscCall(PetscPrintf(comm, "Meshing: crack %d: the elliptical crack is %" PetscInt_FMT " of its %d x %d "
+                            "rectangle's faces: %.4g m2, %.4f of the ellipse's area\n", k + 1, mine, n1, n2, area,
+                            area / (0.25 * M_PI * crack.length * crack.width)));
+    else if (std::abs(area / (crack.length * crack.width) - 1.0) > 1e-9)  // an end moved onto another crack's line
+      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2 (%+.3g %% of length x width: an end "
+                            "shares a nearby crack's grid line)\n", k + 1, n1, n2, area,
+                            100.0 * (area / (crack.length * crack.width) - 1.0)));
+    else
+      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2\n", k + 1, n1, n2, area));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &faces, 1, MPIU_INT, MPI_MAX, comm));  // the serial mesh is on rank 0
+  PetscCheck(counted == faces, comm, PETSC_ERR_PLIB, "3D box: %" PetscInt_FMT " crack faces labelled, the grid has %"
+             PetscInt_FMT, faces, counted);
   PetscFunctionReturn(0);
 }
 
@@ -41,6 +69,27 @@ int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array
   const int subdivisions = nest * ((kLeast + nest - 1) / nest);
   *exact = subdivisions <= kMost;
   return std::min(subdivisions, kMost);
+}
+
+int CrackFaceSubdivisions(const BoxGrid& wave, const BoxGrid& heat, bool* exact) {
+  constexpr int kLeast = 4, kMost = 16;
+  const auto nests = [&](int m) {  // every heat line on a crack at a multiple of 1/m of its wave cell
+    for (int k = 0; k < wave.crack_count(); ++k)
+      for (int along = 0; along < 2; ++along) {
+        const std::vector<double> w = wave.crack_nodes(k, along), h = heat.crack_nodes(k, along);
+        for (double x : h) {
+          const std::size_t i = std::min<std::size_t>(
+              std::max<std::ptrdiff_t>(std::upper_bound(w.begin(), w.end(), x) - w.begin(), 1) - 1, w.size() - 2);
+          const double at = (x - w[i]) / (w[i + 1] - w[i]) * m;
+          if (std::abs(at - std::round(at)) > 1e-6) return false;
+        }
+      }
+    return true;
+  };
+  for (int m = kLeast; m <= kMost; ++m)
+    if (nests(m)) return *exact = true, m;
+  *exact = false;
+  return kMost;
 }
 
 BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSizes& sizes) {
@@ -60,10 +109,9 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
     PetscCall(PetscPrintf(comm, "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (no crack)\n", grid->cells(0),
                           grid->cells(1), grid->cells(2)));
   else
-    PetscCall(PetscPrintf(comm,
-                          "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack, sheared "
-                          "into its plane: %d x %d crack faces)\n",
-                          grid->cells(0), grid->cells(1), grid->cells(2), grid->crack_cells(0), grid->crack_cells(1)));
+    PetscCall(PetscPrintf(comm, "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (graded to the crack%s, sheared "
+                          "into %s)\n", grid->cells(0), grid->cells(1), grid->cells(2),
+                          grid->crack_count() > 1 ? "s" : "", grid->crack_count() > 1 ? "their planes" : "its plane"));
   for (const BoxGrid::PatchSnap& snap : grid->patch_snaps())
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the patch's edge at %c = %g m stays on the grid line at %g m "
                           "(a fixed line within a third of a cell; summary.json mesh.source_area has the area)\n",
@@ -71,16 +119,9 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   DM serial;
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
-  const bool cracked = !geometry.cracks.empty();
-  if (cracked && geometry.cracks.front().shape == CrackShape::Ellipse) {
-    const Crack& crack = geometry.cracks.front();
-    const int n1 = grid->crack_cells(0), n2 = grid->crack_cells(1);
-    const double area = grid->crack_area();
-    const double ellipse = 0.25 * M_PI * crack.length * crack.width;
-    PetscCall(PetscPrintf(comm, "Meshing: the elliptical crack is %" PetscInt_FMT " of its %d x %d rectangle's faces: "
-                          "%.4g m2, %.4f of the ellipse's area\n", crack_faces, n1, n2, area, area / ellipse));
-  }
-  if (cracked) s->cracks = {CrackInfo{"crack1", geometry.cracks.front().length}};
+  PetscCall(PrintCracks(comm, geometry, *grid, crack_faces));
+  for (std::size_t k = 0; k < geometry.cracks.size(); ++k)
+    s->cracks.push_back(CrackInfo{"crack" + std::to_string(k + 1), geometry.cracks[k].length});
   s->source = "generated";
   // SplitCracks puts the front (edges with one crack face, their vertices) in the
   // boundary label and checks one cohesive cell per crack face.
@@ -89,9 +130,7 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   std::unique_ptr<BoxGrid> heat_grid;
   PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &heat_grid, &s->heat, &s->heat_source));
   bool exact = true;
-  if (cracked)
-    s->crack_face_subdivisions = CrackFaceSubdivisions({grid->crack_cells(0), grid->crack_cells(1)},
-                                                       {heat_grid->crack_cells(0), heat_grid->crack_cells(1)}, &exact);
+  if (grid->crack_count() > 0) s->crack_face_subdivisions = CrackFaceSubdivisions(*grid, *heat_grid, &exact);
   if (!exact)
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat grid's crack faces do not nest in %d sub-squares a side "
                           "of the wave grid's: the friction heat's transfer is conservative but not exact (make "

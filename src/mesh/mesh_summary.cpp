@@ -198,7 +198,7 @@ PetscErrorCode SourceArea(DM dm, const std::vector<bool>& ghost, PetscInt chart0
   PetscFunctionReturn(0);
 }
 
-/// The 3D box: bulk and cohesive cells, edge range, the crack's faces, area, split and front vertices.
+/// The 3D box: bulk and cohesive cells, edge range, each crack's faces, area, split and front vertices.
 PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscFunctionBeginUser;
   DM dm = specimen.wave;
@@ -208,38 +208,46 @@ PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
   PetscInt chart0, cStart, cEnd, bulk = 0;
   PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  CrackSummary local;
+  DMLabel crack_label;
+  PetscCall(DMGetLabel(dm, labels::crack, &crack_label));
+  std::vector<CrackSummary> local(specimen.cracks.size());
   std::set<PetscInt> seen;
+  PetscInt cohesive_cells = 0;
   for (PetscInt c = cStart; c < cEnd; ++c) {
     bool cohesive;
     PetscCall(IsCohesiveCell(dm, c, &cohesive));
     bulk += !cohesive;
-    local.facets += cohesive;
-    if (cohesive) PetscCall(CohesiveCell3D(dm, c, ghost, chart0, &seen, &local));
+    if (!cohesive) continue;
+    const PetscInt* cone;
+    PetscInt id;
+    PetscCall(DMPlexGetCone(dm, c, &cone));
+    PetscCall(DMLabelGetValue(crack_label, cone[0], &id));
+    PetscCheck(id >= 1 && id <= static_cast<PetscInt>(local.size()), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "cohesive cell %" PetscInt_FMT " has no crack label", c);
+    ++cohesive_cells, ++local[id - 1].facets;
+    PetscCall(CohesiveCell3D(dm, c, ghost, chart0, &seen, &local[id - 1]));
   }
   double h[2];
   PetscCall(EdgeRange(dm, &h[0], &h[1]));
   s->dimension = 3, s->cell_type = "hex", s->heat_source = specimen.heat_source;
   PetscCallMPI(MPI_Allreduce(&bulk, &s->cells, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(&local.facets, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&cohesive_cells, &s->cohesive_cells, 1, MPIU_INT, MPI_SUM, comm));
   s->cells_per_rank.assign(s->ranks, 0);
   PetscCallMPI(MPI_Allgather(&bulk, 1, MPIU_INT, s->cells_per_rank.data(), 1, MPIU_INT, comm));
   PetscCallMPI(MPI_Allreduce(&h[0], &s->h_min, 1, MPI_DOUBLE, MPI_MIN, comm));
   PetscCallMPI(MPI_Allreduce(&h[1], &s->h_max, 1, MPI_DOUBLE, MPI_MAX, comm));
   PetscCall(CountOwned(dm, 0, &s->vertices));
-  if (specimen.cracks.empty()) {
-    PetscCall(SourceArea(dm, ghost, chart0, &s->source_area));
-    PetscCall(SummariseBoxHeatMesh(specimen, s));
-    PetscFunctionReturn(0);
+  s->cracks.clear();
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    CrackSummary crack;
+    crack.name = specimen.cracks[k].name;
+    crack.requested_length = specimen.cracks[k].requested_length;
+    PetscCallMPI(MPI_Allreduce(&local[k].facets, &crack.facets, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&local[k].node_pairs, &crack.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&local[k].tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(&local[k].area, &crack.area, 1, MPI_DOUBLE, MPI_SUM, comm));
+    s->cracks.push_back(crack);
   }
-  CrackSummary crack;
-  crack.name = specimen.cracks.front().name;
-  crack.requested_length = specimen.cracks.front().requested_length;
-  PetscCallMPI(MPI_Allreduce(&local.facets, &crack.facets, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(&local.node_pairs, &crack.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(&local.tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(&local.area, &crack.area, 1, MPI_DOUBLE, MPI_SUM, comm));
-  s->cracks = {crack};
   PetscCall(SourceArea(dm, ghost, chart0, &s->source_area));
   PetscCall(SummariseBoxHeatMesh(specimen, s));
   PetscFunctionReturn(0);

@@ -182,7 +182,7 @@ void SpecimenGeometry::validate() const {
       msg << "-crack_center: crack " << id << " lies along an outer edge";
       reject(msg.str());
     }
-    for (std::size_t j = 0; j < i; ++j) {
+    for (std::size_t j = 0; j < i && depth <= 0.0; ++j) {  // a 3D box checks its cracks' rectangles (box_grid)
       if (crack_distance(c, cracks[j]) < 0.5 * h_crack) {
         msg << "-crack_center: cracks " << j + 1 << " and " << id << " cross or come closer than half an element ("
             << 0.5 * h_crack << " m)";

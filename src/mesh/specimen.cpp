@@ -3,12 +3,14 @@
 #include "vibrotherm/mesh/memory_estimate.hpp"
 
 #include "vibrotherm/mesh/box_specimen.hpp"
+#include "vibrotherm/mesh/mesh_file_3d.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/distribute.hpp"
 #include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
 #include "vibrotherm/mesh/plex/metis_partitioner.hpp"
 #include "vibrotherm/mesh/plex_builder.hpp"
+#include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/root_task.hpp"
 
 namespace vibrotherm::mesh {
@@ -44,8 +46,9 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
   PetscFunctionBeginUser;
   PetscBool refine_given = PETSC_FALSE;
   PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves: source, absorbing, free, roller, "
-                               "fixed, sink, crack*); default: generate from -specimen_* and -crack_*",
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, "
+                               "absorbing, free, roller, fixed, sink, crack*); default: generate from -specimen_* "
+                               "and -crack_*",
                                nullptr, m->file, m->file, sizeof(m->file), &m->from_file));
   PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
                                "physical curve names; default: the unsplit -mesh_file mesh)",
@@ -202,6 +205,13 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(ReadMeshSource(comm, &source));
   SpecimenGeometry geometry;
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  int file_dimension = 0;
+  if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
+  if (file_dimension == 3) {
+    PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", s));
+    PetscCall(PetscLogStagePop());
+    PetscFunctionReturn(0);
+  }
   if (geometry.depth > 0.0) {
     PetscCall(CreateBoxSpecimen(comm, geometry, exchange_length, s));
     PetscCall(PetscLogStagePop());
@@ -301,7 +311,8 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
   static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
                                       "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
                                       "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
-                                      "-edge_front", "-edge_back"};
+                                      "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape",
+                                      "-source_patch_edge", "-source_patch_center", "-source_patch_width"};
   std::string given;
   for (const char* name : names) {
     PetscBool set;

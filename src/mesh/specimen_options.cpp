@@ -112,7 +112,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
   PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
-                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x,y,z of the one crack)",
+                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x1,y1,z1,x2,y2,z2,...)",
                             &centers, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length",
                             "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
@@ -150,13 +150,16 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
              "-crack_length: %" PetscInt_FMT " values for %" PetscInt_FMT " cracks", nlengths, ncracks);
   PetscCheck(nangles <= 1 || nangles == ncracks, comm, PETSC_ERR_USER_INPUT,
              "-crack_angle: %" PetscInt_FMT " values for %" PetscInt_FMT " cracks", nangles, ncracks);
+  PetscCheck(widths.size() <= 1 || static_cast<PetscInt>(widths.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
+             "-crack_width: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", widths.size(),
+             ncracks);
   g->cracks.clear();
   for (PetscInt i = 0; i < ncracks; ++i) {
     Crack c;
     c.x = centers[dim * i];
     c.y = centers[dim * i + 1];
     if (dim == 3) c.z = centers[dim * i + 2];
-    if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : std::min<std::size_t>(i, widths.size() - 1)];
+    if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : static_cast<std::size_t>(i)];
     c.length = lengths[nlengths == 1 ? 0 : i];
     c.angle_deg = nangles == 0 ? 0.0 : angles[nangles == 1 ? 0 : i];
     c.shape = shape;

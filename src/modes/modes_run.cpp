@@ -9,7 +9,8 @@ namespace vibrotherm::modes {
 namespace {
 
 /// The distance to the specimen's cracks (empty without one) and the longest crack's
-/// length: the 2D cracks as gathered lines, a 3D box's as the rectangles of its options.
+/// length: the 2D cracks as gathered lines, a 3D box's as the rectangles of its options (a
+/// 3D mesh file: none).
 PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, CrackDistance* distance,
                                double* longest) {
   PetscFunctionBeginUser;
@@ -27,6 +28,9 @@ PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, Cr
       };
     PetscFunctionReturn(0);
   }
+  PetscBool from_file;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh_file", &from_file));
+  if (from_file) PetscFunctionReturn(0);  // a 3D mesh file's cracks are surfaces of its own: no distance yet
   mesh::SpecimenGeometry geometry;
   PetscCall(mesh::ReadSpecimenGeometry(comm, &geometry));
   const std::vector<mesh::Crack> rectangles = geometry.cracks;

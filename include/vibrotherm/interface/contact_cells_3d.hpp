@@ -19,7 +19,8 @@
 
 namespace vibrotherm::interface {
 
-/// This rank's contact cells (plus, minus, n, s = t1, s2 = t2, weight, x, y, z; crack 0). Collective.
+/// This rank's contact cells (plus, minus, n, s = t1, s2 = t2, weight, x, y, z, crack from the
+/// crack label's value − 1). Collective.
 PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<ContactCell>* cells);
 
 }  // namespace vibrotherm::interface

@@ -61,6 +61,8 @@ class CrackInterface final : public wave::WaveInterface {
   PetscErrorCode MarkDofs(Vec marker) override;
   PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) override;
   PetscErrorCode Energies(double* stored, double* dissipated) override;
+  /// The friction energy dissipated on each crack so far, Σ weight · W over its cells [J/m; 3D: J]. Collective.
+  PetscErrorCode DissipatedByCrack(std::vector<double>* by_crack) const;
   /// (w/2)(k_n n nᵀ + k_t s sᵀ) on each cell's ± dof pairs, the law's tangent stiffnesses at the cell's a.
   PetscErrorCode TangentStiffness(std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
                                   std::vector<double>* values) const override;
@@ -114,7 +116,7 @@ class CrackInterface final : public wave::WaveInterface {
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int dim_ = 2;
-  std::array<double, 3> centre_{};  ///< 3D: the crack's centre (FindCentre)
+  std::vector<std::array<double, 3>> centres_;  ///< 3D: each crack's centre (FindCentre)
   PetscErrorCode FindCentre();
   std::vector<ContactCell> cells_;
   PetscInt global_cells_ = 0;

@@ -63,6 +63,7 @@ struct RunSummary {
   double max_budget_error = 0.0;
   long long wave_dt_reductions = 0;  ///< times contact stiffening forced a smaller wave step
   double dissipated_energy = 0.0;     ///< [J/m]
+  std::vector<double> dissipated_energy_by_crack;  ///< each crack's share [J/m] (3D: J)
   double wave_energy_left = 0.0;      ///< mechanical energy when the waves stopped [J/m]
   double work_thermal = 0.0;          ///< work of the two-way thermal stress on the waves when they stopped [J/m]
   double max_friction_excess = -1.0;  ///< max (|T| − μN)/(μN) over cells and steps (≤ 0 when Coulomb held)

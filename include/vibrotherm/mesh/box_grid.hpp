@@ -1,23 +1,27 @@
-// The structured hexahedral grid of a 3D box specimen with one planar rectangular
-// crack, buried or through the thickness (z extent [0, D]), or a buried elliptical one
-// (the staircase of the faces whose centres lie in the ellipse) (plain C++, no PETSc): the
-// node positions along each axis and the smooth shear that tilts one grid plane into
-// the crack plane.
+// The structured hexahedral grid of a 3D box specimen with one or more planar cracks,
+// rectangular (buried, or through the thickness: z extent [0, D]) or elliptical
+// (buried: the staircase of the faces whose centres lie in the ellipse) (plain C++,
+// no PETSc): the node positions along each axis and the smooth shear that tilts grid
+// planes into the crack planes.
 //
-// The crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
-// -crack_angle), width Wc along z, normal in the x–y plane. A grid plane through
-// the centre, normal to the axis p (y when |θ| ≤ 45°, else x), is sheared along p:
-//   x_p' = x_p + (x_q − c_q) · m · β(x_p),   q the other in-plane axis,
-// m = tan θ (p = y) or cot θ (p = x), β = cos²(π/2 · (x_p − c_p)/d) with d the
-// distance from c_p to the box face on that side (β = 1 on the plane, 0 on the two
-// faces normal to p: the box stays a box, and every outer face stays in its plane).
-// The sheared plane is exactly the crack plane; the crack is its rectangle
-// |x_q − c_q| ≤ L|cos θ|/2 (p = y; L|sin θ|/2 for p = x), |z − c_z| ≤ Wc/2, whose
-// edges are grid lines. Sizes: -mesh_h_crack on the crack and across its plane,
-// growing by -mesh_grading per metre of distance up to -mesh_h.
+// A crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
+// -crack_angle), width Wc along z, normal in the x–y plane. Every crack of a box has
+// its normal nearest the same axis p (y when |θ| ≤ 45°, else x; q is the other
+// in-plane axis). Cracks on one line x_p = c_p + m (x_q − c_q) (m = tan θ for p = y,
+// cot θ for p = x) share a grid plane normal to p at P = the first one's c_p; the
+// planes P_1 < … < P_n are sheared along p:
+//   x_p' = x_p + Σ_i o_i(x_q) β_i(x_p),   o_i = m_i (x_q − c_q,i),
+// β_i = cos²(π/2 · (x_p − P_i)/d) between P_i and its neighbour plane (or the box face)
+// at distance d on that side, 0 beyond (a partition: β_i = 1 on plane i, 0 on the
+// others and on the two faces normal to p: the box stays a box). Each sheared plane is
+// exactly its crack line; a crack is the rectangle |x_q − c_q| ≤ L|cos θ|/2 (p = y;
+// L|sin θ|/2 for p = x), |z − c_z| ≤ Wc/2 on it, whose edges are grid lines. Sizes:
+// -mesh_h_crack on the cracks and across their planes, growing by -mesh_grading per
+// metre of distance up to -mesh_h (between two cracks, from both up to half way).
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "vibrotherm/mesh/scene_geometry.hpp"
@@ -32,14 +36,23 @@ struct BoxGridSizes {
   double first_layer = 0.0, growth = 1.0;
 };
 
+/// A stretch of one axis that is meshed uniformly: [lo, hi] in `cells` cells, or a
+/// crack plane (cells = 0, lo = hi) with cells of the crack's size (or layers) on
+/// both sides.
+struct AxisSegment {
+  double lo, hi;
+  int cells;
+};
+
 class BoxGrid {
  public:
-  /// Checks the 3D specimen (throws std::invalid_argument naming the option: one
-  /// crack, buried in x-y, buried or through the thickness in z, resolved by 2
-  /// cells along each extent it has a front across, a shear that does not fold the
-  /// mesh) and builds the node positions along each axis.
+  /// Checks the 3D specimen (throws std::invalid_argument naming the option: each
+  /// crack buried in x-y, buried or through the thickness in z, resolved by 2 cells
+  /// along each extent it has a front across; the cracks apart from each other, their
+  /// normals nearest one axis; a shear that does not fold the mesh) and builds the
+  /// node positions along each axis.
   explicit BoxGrid(const SpecimenGeometry& geometry);
-  /// The same crack and box with other sizes (the heat grid).
+  /// The same cracks and box with other sizes (the heat grid).
   BoxGrid(const SpecimenGeometry& geometry, const BoxGridSizes& sizes);
 
   /// Cells along axis a.
@@ -47,19 +60,24 @@ class BoxGrid {
   long total_cells() const { return long(cells(0)) * cells(1) * cells(2); }
   /// The position of grid node (i, j, k) (integer indices), sheared.
   std::array<double, 3> position(const std::array<double, 3>& index) const;
-  /// Whether the face with index-space centroid f (one half-integer coordinate
-  /// less than a cell) lies on the crack: in its rectangle, and for an elliptical
-  /// crack in the staircase of the wave grid's faces whose centres lie in the ellipse.
-  bool on_crack(const std::array<double, 3>& f) const;
-  /// The crack's facets and its cells along strike and z.
-  int crack_cells(int along) const { return along == 0 ? crack_hi_[q_] - crack_lo_[q_] : crack_hi_[2] - crack_lo_[2]; }
-  /// The area of the crack's faces [m²] (an ellipse: its staircase).
+  /// The crack (0-based) that the face with index-space centroid f (one
+  /// half-integer coordinate less than a cell) lies on, −1 for none: in the crack's
+  /// rectangle, and for an elliptical crack in the staircase of the wave grid's faces
+  /// whose centres lie in the ellipse.
+  int crack_at(const std::array<double, 3>& f) const;
+  int crack_count() const { return static_cast<int>(cracks_.size()); }
+  /// Crack k's grid lines (unsheared) along its strike's grid axis q (along = 0) or z (1).
+  std::vector<double> crack_nodes(int crack, int along) const;
+  /// Crack k's cells along its strike (along = 0) and along z (1).
+  int crack_cells(int along, int crack = 0) const;
+  /// The area of crack k's faces [m²] (an ellipse: its staircase), and of all.
+  double crack_area(int crack) const;
   double crack_area() const;
-  /// The unit normal of the crack plane (p = y: (−sin θ, cos θ, 0) up to sign).
-  std::array<double, 3> normal() const { return normal_; }
-  /// Whether the crack of g runs through the thickness: its z extent is [0, D]
+  /// The number of crack k's faces.
+  int crack_faces(int crack) const;
+  /// Whether crack c of g runs through the thickness: its z extent is [0, D]
   /// (-crack_width = -specimen_depth, centred), a plane-strain slab's crack.
-  static bool through_thickness(const SpecimenGeometry& g);
+  static bool through_thickness(const Crack& c, const SpecimenGeometry& g);
   /// Smallest and largest grid spacing before the shear [m].
   double h_min() const;
   double h_max() const;
@@ -72,9 +90,31 @@ class BoxGrid {
   const std::vector<PatchSnap>& patch_snaps() const { return patch_snaps_; }
 
  private:
+  /// A grid plane sheared into a crack line x_p = at + slope (x_q − q0).
+  struct Plane {
+    double at, slope, q0;
+  };
+  /// A crack on the grid: its plane, its node index range along each axis (p: its
+  /// plane twice), its outline.
+  struct CrackOnGrid {
+    int plane;
+    std::array<int, 3> lo, hi;
+    CrackShape shape;
+    std::array<int, 2> outline_cells;  ///< the wave grid's cells along strike and z (the staircase)
+    double strike_per_q;               ///< length along the strike per unit of the grid axis q
+  };
   void validate(const SpecimenGeometry& g) const;
-  double blend(double xp) const;
-  bool inside_outline(const std::array<double, 3>& f) const;
+  /// Groups the cracks into planes (this->planes_), each crack's plane in *plane_of.
+  void find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of);
+  /// The nodes of each axis and every crack's node ranges.
+  void build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, const std::vector<int>& plane_of);
+  /// The shear's displacement along p at unsheared (x_p, x_q).
+  double offset(double xp, double xq) const;
+  /// Throws when the shear folds the grid (d x_p'/d x_p < 1/4 somewhere).
+  void check_fold() const;
+  /// Calls visit(area) for each face of crack k.
+  void for_each_face(int crack, const std::function<void(double)>& visit) const;
+  bool inside_outline(const CrackOnGrid& c, const std::array<double, 3>& f) const;
   /// Moves grid nodes onto the transducer patch's bounds (box_patch.cpp).
   void align_patch(const SpecimenGeometry& g);
   /// The unsheared coordinate along axis a whose node lies at `target` on the face of
@@ -82,30 +122,29 @@ class BoxGrid {
   double unsheared(int a, int n, double at, double target) const;
 
   std::array<std::vector<double>, 3> nodes_;
-  std::array<int, 3> crack_lo_{}, crack_hi_{};  ///< node indices of the crack's ends (p: its plane twice)
+  std::vector<Plane> planes_;  ///< sorted by `at`
+  std::vector<CrackOnGrid> cracks_;
   int p_ = 1, q_ = 0;
-  double slope_ = 0.0;
-  std::array<double, 3> centre_{}, extent_{}, size_{}, normal_{};
+  std::array<double, 3> size_{};
   std::vector<PatchSnap> patch_snaps_;
-  bool cracked_ = true;  ///< false: a box without a crack
-  double strike_per_q_ = 1.0;  ///< length along the strike per unit of the in-plane grid axis q
-  CrackShape shape_ = CrackShape::Rectangle;
-  std::array<int, 2> outline_cells_{};  ///< the wave grid's crack cells along strike and z (the staircase)
+  std::array<int, 3> stand_in_{};  ///< no crack: the node of the centre plane on each axis
 };
 
-/// The 1D nodes of [0, length] with the crack's segment [b_lo, b_hi] in `cells`
-/// uniform cells (cells = 0: b_lo = b_hi, a plane whose neighbours get h0), and
-/// outside a spacing that starts at the segment's and grows by `grading` per metre
-/// of distance up to h. *lo, *hi: the node indices of b_lo and b_hi. A plane
-/// (cells = 0) with first_layer > 0 gets geometric layers from first_layer by
-/// `growth` up to h0 on each side before that.
 /// Makes `target` a node of the sorted `nodes`: an existing node within tol (a node in
 /// `fixed`: within a third of the cell), else the nearest node not in `fixed` moved there
 /// (the nodes between its fixed neighbours stretched linearly), else a new node. Updates
 /// the indices in `fixed`, adds the target's, returns its position.
 double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol);
 
-std::vector<double> GradedAxis(double length, double b_lo, double b_hi, int cells, double h0, double h, double grading,
-                               int* lo, int* hi, double first_layer = 0.0, double growth = 1.0);
+/// The 1D nodes of [0, length]: each segment's [lo, hi] in its cells (overlapping
+/// segments share a run whose sub-intervals between their ends get cells no larger than
+/// any covering segment's; a plane, cells = 0, gets sizes.h_crack or the layers next to
+/// it), and outside them a spacing that starts at the nearest run's cell and grows by
+/// sizes.grading per metre of distance up to sizes.h (between two runs, from both, meeting
+/// half way). sizes.first_layer > 0: geometric layers from first_layer by sizes.growth up
+/// to sizes.h_crack on each side of a plane.
+/// Segment ends within `snap` of a smaller one are moved onto it first (no sliver cells).
+std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& sizes,
+                              double snap = 0.0);
 
 }  // namespace vibrotherm::mesh

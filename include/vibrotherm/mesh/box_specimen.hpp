@@ -23,6 +23,10 @@ BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSi
 /// polynomial on each (exact); at least 4 (a Q2 wave face), at most 16 (exact false:
 /// then accurate, not exact).
 int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array<int, 2>& heat_cells, bool* exact);
+/// The same from the two grids' lines on every crack (cracks whose extents overlap along
+/// an axis have uneven cells): the least m in [4, 16] for which every heat line lies at a
+/// multiple of 1/m of its wave cell (exact), else 16 (exact false).
+int CrackFaceSubdivisions(const BoxGrid& wave, const BoxGrid& heat, bool* exact);
 
 /// geometry: checked by ReadSpecimenGeometry (depth > 0); exchange_length: as
 /// SpecimenCreate's (the heat mesh's default first layer). Collective.

@@ -80,7 +80,7 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
 
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
-  PetscCall(ReadSceneDimension(&s->run.dimension));
+  PetscCall(ReadSceneDimension(comm, &s->run.dimension));
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));

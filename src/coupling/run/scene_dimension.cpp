@@ -1,5 +1,7 @@
 #include "vibrotherm/coupling/run/scene_dimension.hpp"
 
+#include "vibrotherm/mesh/mesh_file_3d.hpp"
+
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -21,11 +23,17 @@ PetscErrorCode FirstGiven(std::initializer_list<const char*> names, const char**
 
 }  // namespace
 
-PetscErrorCode ReadSceneDimension(int* dimension) {
+PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension) {
   PetscFunctionBeginUser;
   PetscReal depth = 0.0;
+  char file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool from_file = PETSC_FALSE;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-specimen_depth", &depth, nullptr));
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mesh_file", file, sizeof(file), &from_file));
   *dimension = depth > 0.0 ? 3 : 2;
+  int in_file = 0;
+  if (from_file && file[0]) PetscCall(mesh::MeshFileDimension(comm, file, &in_file));
+  if (in_file) *dimension = in_file == 3 ? 3 : 2;  // the file decides
   PetscFunctionReturn(0);
 }
 
@@ -34,18 +42,18 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   const char* given = nullptr;
   if (s->run.dimension != 3) {
     PetscCall(FirstGiven({"-heat_bc_front", "-heat_bc_back", "-camera_face"}, &given));
-    PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D box only (-specimen_depth > 0)", given);
+    PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D specimen only (-specimen_depth > 0, or a 3D "
+               "-mesh_file)", given);
     PetscFunctionReturn(0);
   }
-  PetscCall(FirstGiven({"-mesh_file", "-heat_mesh_file", "-crack_probe", "-crack_probe_crack"}, &given));
-  PetscCheck(!given, comm, PETSC_ERR_USER_INPUT,
-             "%s is not supported in 3D yet (-specimen_depth > 0)", given);
+  PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
+  PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
   const std::pair<bool, const char*> refused[] = {{s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
                                                   {s->wave.lts.on, "-wave_lts on"},
                                                   {s->material.damping_heat, "-material_damping_heat"}};
   for (const auto& [refuse, option] : refused)
     PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
-               "%s is not supported in 3D yet (-specimen_depth > 0)", option);
+               "%s is not supported in 3D yet", option);
   char type[64] = "velocityverlet", cell[16] = "quad";
   PetscInt refine = 0;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));

@@ -165,6 +165,7 @@ PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, comm));
     summary->stages["contact"] = seconds;  // part of wave_steps
     PetscCall(crack_->Energies(&stored, &summary->dissipated_energy));
+    PetscCall(crack_->DissipatedByCrack(&summary->dissipated_energy_by_crack));
     PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
   }
   summary->wave_dt_reductions = solver_->dt_reductions();
