@@ -20,16 +20,21 @@
 namespace vibrotherm::mesh {
 namespace {
 
-/// A 3D file's physical surfaces: tag → name, checked (hexahedra only, known names).
-std::map<PetscInt, std::string> SurfaceNames(const std::string& path, const std::string& option) {
-  const std::string where = option + " " + path;
+/// Opens path in the gmsh session; `where` names the option and file in the errors.
+void OpenFile(const std::string& path, const std::string& where) {
   if (!std::ifstream(path)) throw std::invalid_argument(where + ": cannot open the file");
-  gmsh_support::GmshSession session;
   try {
     gmsh::open(path);
   } catch (...) {
     throw std::invalid_argument(where + ": gmsh cannot read it");
   }
+}
+
+/// A 3D file's physical surfaces: tag → name, checked (hexahedra only, known names).
+std::map<PetscInt, std::string> SurfaceNames(const std::string& path, const std::string& option) {
+  const std::string where = option + " " + path;
+  gmsh_support::GmshSession session;
+  OpenFile(path, where);
   if (gmsh::model::getDimension() != 3) throw std::invalid_argument(where + ": not a 3D mesh");
   std::vector<int> types;
   gmsh::model::mesh::getElementTypes(types, 3);
@@ -152,14 +157,8 @@ PetscErrorCode MeshFileDimension(MPI_Comm comm, const std::string& path, int* di
   PetscFunctionBeginUser;
   *dimension = 0;
   PetscCall(RunOnRoot(comm, [&] {  // gmsh loads the whole mesh: once, on rank 0
-    const std::string where = "-mesh_file " + path;
-    if (!std::ifstream(path)) throw std::invalid_argument(where + ": cannot open the file");
     gmsh_support::GmshSession session;
-    try {
-      gmsh::open(path);
-    } catch (...) {
-      throw std::invalid_argument(where + ": gmsh cannot read it");
-    }
+    OpenFile(path, "-mesh_file " + path);
     *dimension = gmsh::model::getDimension();
   }));
   PetscCallMPI(MPI_Bcast(dimension, 1, MPI_INT, 0, comm));

@@ -10,6 +10,7 @@
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
+#include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
 
 namespace vibrotherm::modes {
@@ -222,7 +223,8 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDist
   PetscCall(EPSSetFromOptions(eps));
   const char* factor_prefix;
   PetscCall(KSPGetOptionsPrefix(ksp, &factor_prefix));
-  PetscCall(CheckFactorMemory(K_, factor_prefix, options));
+  PetscCall(wave::CheckFactorMemory(K_, factor_prefix,
+                                    {"Modes", "-modes_memory_limit", options.memory_limit_gb, options.force}));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
   PetscCall(EPSSolve(eps));
   PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));

@@ -16,6 +16,7 @@
 // work at t = 0, which keeps the energy budget closed.
 #include <cmath>
 
+#include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::wave {
@@ -133,6 +134,11 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(KSPSetFromOptions(ksp));
+  PetscBool force = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-force", &force, nullptr));  // declared with the mesh options
+  PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
+                              {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
+                               force == PETSC_TRUE}));
   PetscCall(KSPSolve(ksp, rhs, U));
   // u(0) = Im U, v(0) = ω Re U.
   Vec u, v;

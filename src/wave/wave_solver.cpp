@@ -42,6 +42,9 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
                               "linearized waves to the running source: a resonant specimen's build-up skipped)",
                               {"rest", "harmonic"}, &start));
   o->harmonic_start = start == Start::kHarmonic;
+  PetscCall(PetscOptionsReal("-wave_harmonic_memory_limit",
+                             "Memory the harmonic start's MUMPS factorisation may take [GB] (0: 0.9 x available)",
+                             nullptr, o->harmonic_memory_limit_gb, &o->harmonic_memory_limit_gb, nullptr));
   PetscCall(PetscOptionsInt("-wave_lts_max_levels", "Most levels of local time stepping (rate 2 each)", nullptr,
                             o->lts.max_levels, &o->lts.max_levels, nullptr));
   PetscCall(PetscOptionsReal("-wave_lts_cfl", "Each LTS level's step as a fraction of its own stability limit", nullptr,
@@ -49,6 +52,9 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   PetscCall(PetscOptionsReal("-wave_lts_wiggle", "LTS cluster boundaries: the finest step times this factor in (0.5, 1]",
                              nullptr, o->lts.wiggle, &o->lts.wiggle, nullptr));
   PetscOptionsEnd();
+  PetscCheck(o->harmonic_memory_limit_gb >= 0.0 && std::isfinite(o->harmonic_memory_limit_gb), comm,
+             PETSC_ERR_USER_INPUT, "-wave_harmonic_memory_limit must be >= 0 GB and finite, got %g",
+             o->harmonic_memory_limit_gb);
   PetscCheck(o->lts.max_levels >= 1 && o->lts.max_levels <= 12, comm, PETSC_ERR_USER_INPUT,
              "-wave_lts_max_levels must be in [1, 12], got %" PetscInt_FMT, o->lts.max_levels);
   PetscCheck(o->lts.cfl > 0.0 && o->lts.cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_lts_cfl must be in (0, 1], got %g",

@@ -12,15 +12,16 @@ exp(-alpha t / 2), by 8e-5 in 60 periods) driven by a traction at 100 kHz:
     over the periods compared (a free body keeps the rigid offset its switch-on left);
   - the energy budget closes (the initial energy is booked as the source's work);
   - (issue 26) the same in 3D: a free 20 x 20 x 10 mm box driven on its top face, with an
-    open (traction-free) buried crack, the same checks and tolerances.
+    open (traction-free) buried crack, the same checks and tolerances; the run prints MUMPS's
+    estimate of its factorisation's memory and refuses one above -wave_harmonic_memory_limit.
 
 usage: test_harmonic_start.py VIBROTHERM"""
-import json, os, sys, tempfile
+import json, os, re, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, one_line_error, run_scene
 
 exe = sys.argv[1]
 check = Checks("harmonic start")
@@ -73,7 +74,21 @@ def compare(tmp, name, args):
         check(s["max_budget_error"] < 1e-5, "%s, harmonic start: budget error %g" % (name, s["max_budget_error"]))
 
 
+def memory_guard(tmp):
+    """The 3D harmonic start prints MUMPS's estimate of its factorisation and refuses, naming
+    -wave_harmonic_memory_limit, one above that limit (nothing factored, nothing written)."""
+    out = os.path.join(tmp, "limit")
+    r = subprocess.run([exe] + scene + BOX + ["-wave_start", "harmonic", "-final_time", repr(P),
+                                              "-wave_harmonic_memory_limit", "1e-6", "-output_dir", out],
+                       capture_output=True, text=True)
+    estimate = re.search(r"Harmonic start: MUMPS estimates (\S+) GB", r.stdout)
+    check(estimate is not None and float(estimate.group(1)) > 0, "the estimate is printed: %s" % r.stdout[-600:])
+    one_line_error(check, "-wave_harmonic_memory_limit 1e-6", r.returncode, r.stderr, "-wave_harmonic_memory_limit",
+                   "MUMPS")
+
+
 with tempfile.TemporaryDirectory() as tmp:
     compare(tmp, "2D", scene)
     compare(tmp, "3D", scene + BOX)
+    memory_guard(tmp)
 check.finish()

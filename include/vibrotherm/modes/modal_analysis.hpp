@@ -38,15 +38,6 @@ struct ModesOptions {
 };
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
 
-/// MUMPS's estimate of the memory its LU factorisation of A takes [bytes] (its analysis
-/// phase with the -<prefix>mat_mumps_* options, INFOG(17): in-core, summed over the
-/// ranks), before any numerical work. Collective.
-PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes);
-/// Prints that estimate and refuses (naming -modes_memory_limit) when it exceeds the
-/// limit, unless -force; nothing when -<prefix>pc_factor_mat_solver_type is not MUMPS
-/// (factor_memory.cpp). Collective.
-PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& options);
-
 struct Mode {
   double frequency;      ///< [Hz]
   double participation;  ///< strain energy near the cracks / total (nan without a crack, or for a rigid motion)

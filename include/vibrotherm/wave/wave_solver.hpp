@@ -50,6 +50,9 @@ struct WaveOptions {
   /// -wave_start harmonic: start from the steady response of the linearized waves to the running
   /// source (harmonic_start.cpp) instead of rest; the source's switch-on is then skipped.
   bool harmonic_start = false;
+  /// -wave_harmonic_memory_limit [GB]: what the harmonic start's MUMPS factorisation may take
+  /// (0: 0.9 x the memory available; -force: factor even above it).
+  double harmonic_memory_limit_gb = 0.0;
   /// Every step divides this (0: any step): the heat step of a periodic source (-periodic on),
   /// so that source periods end on wave steps (set by the scene, not an option).
   double step_quantum = 0.0;

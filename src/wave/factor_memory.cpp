@@ -1,18 +1,15 @@
-// The memory a -modes run's shift-invert factorisation will take, from MUMPS's own
-// analysis, checked before any numerical work: a 3D stiffness fills far more than its
-// matrix (nested dissection: O(n^{4/3}) entries), and running out mid-factorisation on a
-// shared node is the worst way to learn it. The estimate is a lower bound of the run's
-// memory (not counting K, M, the Krylov basis, pivoting growth) and costs one extra
-// analysis (the ordering, on rank 0); the limit is rank 0's node's.
+// MUMPS's memory estimate, checked (factor_memory.hpp). The estimate is a lower bound of
+// the run's memory (not counting the matrices, a Krylov basis, pivoting growth) and
+// costs one extra analysis (the ordering); the limit is rank 0's node's.
 #include <petscmat.h>
 
 #include <cmath>
 #include <string>
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
-#include "vibrotherm/modes/modal_analysis.hpp"
+#include "vibrotherm/wave/factor_memory.hpp"
 
-namespace vibrotherm::modes {
+namespace vibrotherm::wave {
 
 PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes) {
   PetscFunctionBeginUser;
@@ -28,12 +25,12 @@ PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes) {
   if (failed == MAT_FACTOR_NOERROR) PetscCall(MatMumpsGetInfog(F, 17, &megabytes));  // in-core, summed over ranks [MB]
   PetscCall(MatDestroy(&F));
   PetscCheck(megabytes >= 0, PetscObjectComm((PetscObject)A), PETSC_ERR_LIB,
-             "-modes: MUMPS's analysis of the stiffness failed (error %d)", static_cast<int>(failed));
+             "MUMPS's analysis (%s) failed (error %d)", prefix, static_cast<int>(failed));
   *bytes = static_cast<double>(megabytes) * 1e6;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& options) {
+PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLimit& options) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)A);
   char solver[64] = MATSOLVERMUMPS;
@@ -41,7 +38,7 @@ PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& 
   if (std::string(solver) != MATSOLVERMUMPS) PetscFunctionReturn(0);  // another solver: no MUMPS estimate
   double needed;
   PetscCall(MumpsFactorMemory(A, prefix, &needed));
-  double limit = options.memory_limit_gb * 1e9;
+  double limit = options.limit_gb * 1e9;
   if (!(limit > 0.0)) {
     limit = mesh::AvailableMemory();
     PetscCallMPI(MPI_Bcast(&limit, 1, MPI_DOUBLE, 0, comm));
@@ -49,14 +46,13 @@ PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const ModesOptions& 
   }
   PetscInt dofs;
   PetscCall(MatGetSize(A, &dofs, nullptr));
-  PetscCall(PetscPrintf(comm, "Modes: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT
-                        " dofs (limit %.3g GB)\n", needed / 1e9, dofs, limit / 1e9));
+  PetscCall(PetscPrintf(comm, "%s: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT
+                        " dofs (limit %.3g GB)\n", options.who, needed / 1e9, dofs, limit / 1e9));
   PetscCheck(options.force || !(limit > 0.0) || needed <= limit, comm, PETSC_ERR_USER_INPUT,
-             "-modes: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT " dofs, more than the "
-             "%.3g GB allowed (-modes_memory_limit, default 0.9 x the memory available): coarsen -mesh_h, or "
-             "give -force",
-             needed / 1e9, dofs, limit / 1e9);
+             "%s: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT " dofs, more than the "
+             "%.3g GB allowed (%s, default 0.9 x the memory available): coarsen -mesh_h, or give -force",
+             options.who, needed / 1e9, dofs, limit / 1e9, options.option);
   PetscFunctionReturn(0);
 }
 
-}  // namespace vibrotherm::modes
+}  // namespace vibrotherm::wave
