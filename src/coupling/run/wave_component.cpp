@@ -1,7 +1,9 @@
 #include "vibrotherm/coupling/run/wave_component.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -77,6 +79,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
   PetscCall(solver_->Setup(specimen.wave, scene.material, scene.excitation, scene.wave));
   std::unique_ptr<contact::CrackLaw> law;
   VibrothermCallCpp(comm, law = contact::create_crack_law(scene.contact));
+  summary->dissipated_energy_by_crack.assign(specimen.cracks.size(), 0.0);  // a crack without contact cells: 0
   if (!specimen.cracks.empty() && law->has_contact()) {
     crack_ = std::make_unique<interface::CrackInterface>();
     PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->mass(), std::move(law), scene.a0));
@@ -165,7 +168,10 @@ PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, comm));
     summary->stages["contact"] = seconds;  // part of wave_steps
     PetscCall(crack_->Energies(&stored, &summary->dissipated_energy));
-    PetscCall(crack_->DissipatedByCrack(&summary->dissipated_energy_by_crack));
+    std::vector<double> by_crack;
+    PetscCall(crack_->DissipatedByCrack(&by_crack));
+    by_crack.resize(std::max(by_crack.size(), summary->dissipated_energy_by_crack.size()), 0.0);
+    summary->dissipated_energy_by_crack = by_crack;
     PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
   }
   summary->wave_dt_reductions = solver_->dt_reductions();
