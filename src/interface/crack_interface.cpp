@@ -324,9 +324,8 @@ PetscErrorCode CrackInterface::Energies(double* stored, double* dissipated) {
 
 PetscErrorCode CrackInterface::DissipatedByCrack(std::vector<double>* by_crack) const {
   PetscFunctionBeginUser;
-  PetscInt ncracks = 0;
-  for (const ContactCell& c : cells_) ncracks = std::max(ncracks, c.crack + 1);
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncracks, 1, MPIU_INT, MPI_MAX, comm_));
+  PetscInt ncracks;
+  PetscCall(CrackCount(&ncracks));
   by_crack->assign(static_cast<std::size_t>(ncracks), 0.0);
   for (std::size_t i = 0; i < cells_.size(); ++i) (*by_crack)[static_cast<std::size_t>(cells_[i].crack)] += cells_[i].weight * W_[i];
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, by_crack->data(), static_cast<int>(ncracks), MPI_DOUBLE, MPI_SUM, comm_));
@@ -355,11 +354,18 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CrackInterface::CrackCount(PetscInt* ncracks) const {
+  PetscFunctionBeginUser;
+  *ncracks = 0;  // the highest crack index holding a cell on any rank, + 1
+  for (const ContactCell& c : cells_) *ncracks = std::max(*ncracks, c.crack + 1);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, ncracks, 1, MPIU_INT, MPI_MAX, comm_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CrackInterface::FindCentre() {
   PetscFunctionBeginUser;
-  PetscInt ncracks = 0;
-  for (const ContactCell& c : cells_) ncracks = std::max(ncracks, c.crack + 1);
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncracks, 1, MPIU_INT, MPI_MAX, comm_));
+  PetscInt ncracks;
+  PetscCall(CrackCount(&ncracks));
   // The area-weighted mean of each crack's cells: the centre of a rectangular crack
   // (its lattice of nodes is symmetric), the origin of crack_state.csv's s1, s2.
   std::vector<double> sums(4 * static_cast<std::size_t>(ncracks), 0.0);

@@ -60,24 +60,6 @@ struct Run {
   double last_cell() const { return cells.empty() ? 0.0 : (ends.back() - ends[ends.size() - 2]) / cells.back(); }
 };
 
-/// Moves segment ends within `snap` of the smallest end of their group (sorted ends
-/// each within `snap` of the next) onto it: one grid line, not a sliver cell. Ends on the
-/// box's faces (0, length: a crack through the thickness) are never a target, so a
-/// buried crack stays buried.
-void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length) {
-  std::vector<double> ends;
-  for (const AxisSegment& s : *segments)
-    for (double end : {s.lo, s.hi})
-      if (end > 0.0 && end < length) ends.push_back(end);
-  std::sort(ends.begin(), ends.end());
-  std::vector<double> target(ends.size());
-  for (std::size_t i = 0; i < ends.size(); ++i) target[i] = i > 0 && ends[i] - ends[i - 1] <= snap ? target[i - 1] : ends[i];
-  for (AxisSegment& s : *segments)
-    for (double* end : {&s.lo, &s.hi})
-      if (s.cells > 0 && *end > 0.0 && *end < length)  // planes (cells 0) are apart already
-        *end = target[std::lower_bound(ends.begin(), ends.end(), *end) - ends.begin()];
-}
-
 std::vector<Run> MergeSegments(std::vector<AxisSegment> segments) {
   std::sort(segments.begin(), segments.end(), [](const AxisSegment& a, const AxisSegment& b) { return a.lo < b.lo; });
   std::vector<Run> runs;
@@ -112,8 +94,21 @@ int NodeAt(const std::vector<double>& nodes, double x) {
 
 }  // namespace
 
-std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& s, double snap) {
-  if (snap > 0.0) SnapEnds(&segments, snap, length);
+void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length) {
+  std::vector<double> ends;
+  for (const AxisSegment& s : *segments)
+    for (double end : {s.lo, s.hi})
+      if (end > 0.0 && end < length) ends.push_back(end);
+  std::sort(ends.begin(), ends.end());
+  std::vector<double> target(ends.size());
+  for (std::size_t i = 0; i < ends.size(); ++i) target[i] = i > 0 && ends[i] - ends[i - 1] <= snap ? target[i - 1] : ends[i];
+  for (AxisSegment& s : *segments)
+    for (double* end : {&s.lo, &s.hi})
+      if (s.cells > 0 && *end > 0.0 && *end < length)  // planes (cells 0) are apart already
+        *end = target[std::lower_bound(ends.begin(), ends.end(), *end) - ends.begin()];
+}
+
+std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& s) {
   const std::vector<Run> runs = MergeSegments(std::move(segments));
   // Steps away from a run's end whose cell is `cell` (0: a plane, which gets h_crack or layers).
   const auto steps = [&](double distance, double cell) {
@@ -217,9 +212,8 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   }
   if (!cracked) segments[q_].push_back({0.5 * size_[q_], 0.5 * size_[q_], 0}), segments[2].push_back({0.5 * size_[2], 0.5 * size_[2], 0});
   // Crack ends closer than a third of the wave grid's crack cell share a grid line.
-  const double snap = g.h_crack / 3.0;
-  for (int a = 0; a < 3; ++a) nodes_[a] = AxisNodes(size_[a], segments[a], s, snap);
-  for (int a : {q_, 2}) SnapEnds(&segments[a], snap, size_[a]);  // as AxisNodes placed them
+  for (int a : {q_, 2}) SnapEnds(&segments[a], g.h_crack / 3.0, size_[a]);
+  for (int a = 0; a < 3; ++a) nodes_[a] = AxisNodes(size_[a], segments[a], s);
   for (int a = 0; a < 3 && !cracked; ++a) stand_in_[a] = NodeAt(nodes_[a], segments[a].front().lo);
   for (std::size_t k = 0; k < cracks_.size(); ++k) {
     CrackOnGrid& c = cracks_[k];

@@ -289,13 +289,16 @@ TEST(SeveralCracks, SnapChainsAndFacesStay) {
   // Ends 0.3 mm apart in a chain (a, a + 0.3, a + 0.6 with snap h/3 = 0.333 mm): the chain
   // joins its smallest end, no cell thinner than the snap distance is left.
   const mesh::BoxGridSizes sizes{0.001, 0.002, 0.5};
-  const std::vector<double> x = mesh::AxisNodes(0.02, {{0.005, 0.011, 6}, {0.0053, 0.0113, 6}, {0.0056, 0.0116, 6}},
-                                                sizes, 0.001 / 3.0);
+  std::vector<mesh::AxisSegment> chain = {{0.005, 0.011, 6}, {0.0053, 0.0113, 6}, {0.0056, 0.0116, 6}};
+  mesh::SnapEnds(&chain, 0.001 / 3.0, 0.02);
+  const std::vector<double> x = mesh::AxisNodes(0.02, chain, sizes);
   double thinnest = INFINITY;
   for (std::size_t i = 1; i < x.size(); ++i) thinnest = std::min(thinnest, x[i] - x[i - 1]);
   EXPECT_GT(thinnest, 0.001 / 3.0);
   // An end 0.2 mm from the face stays there (snapping it would make the crack reach the face).
-  const std::vector<double> z = mesh::AxisNodes(0.01, {{0.0, 0.01, 10}, {0.0002, 0.004, 4}}, sizes, 0.001 / 3.0);
+  std::vector<mesh::AxisSegment> near_face = {{0.0, 0.01, 10}, {0.0002, 0.004, 4}};
+  mesh::SnapEnds(&near_face, 0.001 / 3.0, 0.01);
+  const std::vector<double> z = mesh::AxisNodes(0.01, near_face, sizes);
   EXPECT_NE(std::find_if(z.begin(), z.end(), [](double v) { return std::abs(v - 0.0002) < 1e-12; }), z.end());
 }
 

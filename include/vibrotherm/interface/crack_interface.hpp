@@ -118,6 +118,8 @@ class CrackInterface final : public wave::WaveInterface {
   int dim_ = 2;
   std::vector<std::array<double, 3>> centres_;  ///< 3D: each crack's centre (FindCentre)
   PetscErrorCode FindCentre();
+  /// The cracks with contact cells: the highest crack index on any rank + 1. Collective.
+  PetscErrorCode CrackCount(PetscInt* ncracks) const;
   std::vector<ContactCell> cells_;
   PetscInt global_cells_ = 0;
   std::unique_ptr<contact::CrackLaw> law_;

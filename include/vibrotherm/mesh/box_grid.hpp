@@ -143,8 +143,12 @@ double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double tar
 /// sizes.grading per metre of distance up to sizes.h (between two runs, from both, meeting
 /// half way). sizes.first_layer > 0: geometric layers from first_layer by sizes.growth up
 /// to sizes.h_crack on each side of a plane.
-/// Segment ends within `snap` of a smaller one are moved onto it first (no sliver cells).
-std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& sizes,
-                              double snap = 0.0);
+std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& sizes);
+
+/// Moves segment ends within `snap` of the smallest end of their group (sorted ends each
+/// within `snap` of the next) onto it: one grid line, not a sliver cell. Ends on the faces
+/// (0, length: a crack through the thickness) are never a target, so a buried crack stays
+/// buried. Planes (cells 0) are left alone.
+void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length);
 
 }  // namespace vibrotherm::mesh
