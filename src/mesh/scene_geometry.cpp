@@ -87,16 +87,25 @@ double DistanceToEllipse(double a, double b, double s, double t) {
 
 }  // namespace
 
+Crack::Axes Crack::axes() const {
+  const double t = angle_deg * M_PI / 180.0, d = tilt_deg * M_PI / 180.0;
+  const std::array<double, 3> n0 = {-std::sin(t), std::cos(t), 0.0};
+  return {{std::cos(t), std::sin(t), 0.0},
+          {-std::sin(d) * n0[0], -std::sin(d) * n0[1], std::cos(d)},
+          {std::cos(d) * n0[0], std::cos(d) * n0[1], std::sin(d)}};
+}
+
 double Crack::distance_to(const std::array<double, 3>& p) const {
-  const double t = angle_deg * M_PI / 180.0;
-  const double dx = p[0] - x, dy = p[1] - y, dz = p[2] - z;
-  const double along = dx * std::cos(t) + dy * std::sin(t), normal = -dx * std::sin(t) + dy * std::cos(t);
+  const Axes a = axes();
+  const std::array<double, 3> r = {p[0] - x, p[1] - y, p[2] - z};
+  const auto dot = [&r](const std::array<double, 3>& u) { return r[0] * u[0] + r[1] * u[1] + r[2] * u[2]; };
+  const double along = dot(a.strike), up = dot(a.up_dip), normal = dot(a.normal);
   double in_plane;
   if (shape == CrackShape::Ellipse) {
-    in_plane = DistanceToEllipse(0.5 * length, 0.5 * width, along, dz);
+    in_plane = DistanceToEllipse(0.5 * length, 0.5 * width, along, up);
   } else {
     const double beyond_length = std::max(std::abs(along) - 0.5 * length, 0.0);
-    const double beyond_width = std::max(std::abs(dz) - 0.5 * width, 0.0);
+    const double beyond_width = std::max(std::abs(up) - 0.5 * width, 0.0);
     in_plane = std::hypot(beyond_length, beyond_width);
   }
   return std::hypot(in_plane, normal);

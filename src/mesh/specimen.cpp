@@ -311,7 +311,7 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
   static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
                                       "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
                                       "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
-                                      "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape",
+                                      "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape", "-crack_tilt",
                                       "-source_patch_edge", "-source_patch_center", "-source_patch_width"};
   std::string given;
   for (const char* name : names) {

@@ -76,25 +76,28 @@ PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeo
   PetscFunctionReturn(0);
 }
 
-/// -specimen_depth, -crack_width, -edge_front, -edge_back. *three_d: the first of
+/// -specimen_depth, -crack_width, -edge_front, -edge_back, -crack_shape, -crack_tilt. *three_d: the first of
 /// the 3D-only ones given (nullptr: none).
 PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g, std::vector<double>* widths,
-                              CrackShape* shape, const char** three_d) {
+                              std::vector<double>* tilts, std::vector<PetscInt>* shapes, const char** three_d) {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box; 0 a 2D "
                              "plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
-  PetscBool given[4] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width", "3D: crack extent along z [m]", widths, &given[0]));
+  PetscBool given[5] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width",
+                            "3D: crack extent along z, or along its up-dip when tilted [m] (one value applies to all)",
+                            widths, &given[0]));
   PetscCall(ReadEdgeKind(PetscOptionsObject, "front", &g->depth_edges[0], &given[1]));
   PetscCall(ReadEdgeKind(PetscOptionsObject, "back", &g->depth_edges[1], &given[2]));
-  PetscInt choice = static_cast<PetscInt>(*shape);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-crack_shape",
-                          "3D: the crack's outline, the length x width rectangle or the ellipse inscribed in it",
-                          {"rectangle", "ellipse"}, &choice, &given[3]));
-  *shape = static_cast<CrackShape>(choice);
-  const char* names[4] = {"-crack_width", "-edge_front", "-edge_back", "-crack_shape"};
+  PetscCall(OptionsChoiceList(PetscOptionsObject, "-crack_shape",
+                              "3D: the cracks' outlines, the length x width rectangle or the ellipse inscribed in it",
+                              {"rectangle", "ellipse"}, shapes, &given[3]));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_tilt",
+                            "3D: crack planes turned about their strikes [deg] (0: containing z; > 0: the normal "
+                            "toward +z; one value applies to all)", tilts, &given[4]));
+  const char* names[5] = {"-crack_width", "-edge_front", "-edge_back", "-crack_shape", "-crack_tilt"};
   *three_d = nullptr;
-  for (int k = 3; k >= 0; --k)
+  for (int k = 4; k >= 0; --k)
     if (given[k]) *three_d = names[k];
   PetscFunctionReturn(0);
 }
@@ -103,8 +106,8 @@ PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeom
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
-  std::vector<double> centers, lengths, angles, widths;
-  CrackShape shape = CrackShape::Rectangle;
+  std::vector<double> centers, lengths, angles, widths, tilts;
+  std::vector<PetscInt> shapes;
   const char* three_d_given = nullptr;
   PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
   PetscInt cell = g->quads ? 0 : 1;
@@ -127,7 +130,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
-  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &shape, &three_d_given));
+  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &tilts, &shapes, &three_d_given));
   PetscCall(ReadSourcePatch(PetscOptionsObject, g));  // after the depth: the patch's axes
   PetscOptionsEnd();
   g->quads = cell == 0;
@@ -153,6 +156,11 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCheck(widths.size() <= 1 || static_cast<PetscInt>(widths.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
              "-crack_width: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", widths.size(),
              ncracks);
+  PetscCheck(tilts.size() <= 1 || static_cast<PetscInt>(tilts.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
+             "-crack_tilt: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", tilts.size(), ncracks);
+  PetscCheck(shapes.size() <= 1 || static_cast<PetscInt>(shapes.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
+             "-crack_shape: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", shapes.size(),
+             ncracks);
   g->cracks.clear();
   for (PetscInt i = 0; i < ncracks; ++i) {
     Crack c;
@@ -160,9 +168,10 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
     c.y = centers[dim * i + 1];
     if (dim == 3) c.z = centers[dim * i + 2];
     if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : static_cast<std::size_t>(i)];
+    if (!tilts.empty()) c.tilt_deg = tilts[tilts.size() == 1 ? 0 : static_cast<std::size_t>(i)];
     c.length = lengths[nlengths == 1 ? 0 : i];
     c.angle_deg = nangles == 0 ? 0.0 : angles[nangles == 1 ? 0 : i];
-    c.shape = shape;
+    if (!shapes.empty()) c.shape = static_cast<CrackShape>(shapes[shapes.size() == 1 ? 0 : static_cast<std::size_t>(i)]);
     g->cracks.push_back(c);
   }
   if (dim == 3) VibrothermCallCpp(comm, (void)BoxGrid(*g));

@@ -18,11 +18,19 @@
 // faces (-crack_length and -crack_width over -mesh_h_crack) in its plane, cracks on one
 // line or one plane at other depths sharing a grid plane, one cohesive cell per face
 // after the split; crack ends closer than a third of a cell share a grid line.
+// A tilted crack (-crack_tilt δ: the plane turned about its strike, issue 26's "any
+// orientation"): with θ = 0 its faces are exactly the L × W rectangle on the tilted plane
+// (area, area centroid = its centre, every face on the plane whose normal is computed
+// here from θ and δ); turned as well (θ = 30°, δ = 20°) it is the staircase of the faces
+// whose centroids lie in its rectangle (decided here from each face's 3D centroid and the
+// crack's axes computed independently), the heat grid's halves tile the same staircase, and
+// one cohesive cell is added per face.
 // Bad geometry is refused naming the option.
 #include <gtest/gtest.h>
 #include <petscdmplex.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -207,7 +215,15 @@ TEST(EllipticalCrack, DistanceIsToTheEllipticalDisc) {
 struct LabelledCrack {
   PetscInt faces = 0;
   double area = 0.0, off_plane = 0.0;
+  std::array<double, 3> centroid{};  ///< Σ area × face centroid
 };
+
+/// The crack plane's unit normal from θ and δ (written out here, not Crack::axes): the
+/// in-plane normal (−sin θ, cos θ, 0) turned about the strike toward +z by δ.
+std::array<double, 3> Normal(const mesh::Crack& c) {
+  const double t = c.angle_deg * M_PI / 180.0, d = c.tilt_deg * M_PI / 180.0;
+  return {-std::sin(t) * std::cos(d), std::cos(t) * std::cos(d), std::sin(d)};
+}
 std::vector<LabelledCrack> LabelledCracks(DM dm, const mesh::SpecimenGeometry& g) {
   std::vector<LabelledCrack> out(g.cracks.size());
   DMLabel crack;
@@ -221,10 +237,11 @@ std::vector<LabelledCrack> LabelledCracks(DM dm, const mesh::SpecimenGeometry& g
     if (k < 1) continue;
     DMPlexComputeCellGeometryFVM(dm, f, &a, c, nullptr);
     const mesh::Crack& cr = g.cracks.at(static_cast<std::size_t>(k - 1));
-    const double t = cr.angle_deg * M_PI / 180.0;
+    const auto n = Normal(cr);
     LabelledCrack& l = out[static_cast<std::size_t>(k - 1)];
     ++l.faces, l.area += a;
-    l.off_plane = std::max(l.off_plane, std::abs(-(c[0] - cr.x) * std::sin(t) + (c[1] - cr.y) * std::cos(t)));
+    for (int d = 0; d < 3; ++d) l.centroid[d] += a * c[d];
+    l.off_plane = std::max(l.off_plane, std::abs((c[0] - cr.x) * n[0] + (c[1] - cr.y) * n[1] + (c[2] - cr.z) * n[2]));
   }
   return out;
 }
@@ -271,6 +288,26 @@ TEST(SeveralCracks, EachOnItsPlaneWithItsOwnLabelAndSplit) {
   EXPECT_EQ(cohesive, total);
   DMDestroy(&split);
   DMDestroy(&dm);
+}
+
+TEST(SeveralCracks, EachHasItsOwnShape) {
+  // An ellipse and a rectangle on parallel planes (-crack_shape ellipse,rectangle): the
+  // first is its staircase (counted as in EllipticalCrack), the second its whole rectangle.
+  mesh::SpecimenGeometry g = Block(0.0);
+  mesh::Crack ellipse = g.cracks[0], rectangle = g.cracks[0];
+  ellipse.y = 0.007, ellipse.shape = mesh::CrackShape::Ellipse;
+  rectangle.y = 0.013;
+  g.cracks = {ellipse, rectangle};
+  const mesh::BoxGrid grid(g);
+  int expected = 0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double u = 2.0 * (i + 0.5) / 6 - 1.0, v = 2.0 * (j + 0.5) / 4 - 1.0;
+      expected += u * u + v * v <= 1.0;
+    }
+  EXPECT_EQ(grid.crack_faces(0), expected);
+  EXPECT_EQ(grid.crack_faces(1), 6 * 4);
+  EXPECT_NEAR(grid.crack_area(1), 0.006 * 0.004, 1e-15);
 }
 
 TEST(SeveralCracks, NearbyEndsShareAGridLineInsteadOfASliver) {
@@ -320,6 +357,83 @@ TEST(SeveralCracks, FaceSubdivisionsFollowUnevenCells) {
   EXPECT_TRUE(exact);
 }
 
+TEST(TiltedCrack, UnturnedIsTheExactRectangleOnItsPlane) {
+  for (double tilt : {25.0, -25.0}) {
+    mesh::SpecimenGeometry g = Block(0.0);
+    g.cracks[0].tilt_deg = tilt;
+    const mesh::BoxGrid grid(g);
+    DM dm;
+    PetscInt total;
+    ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, grid, &dm, &total), 0);
+    const LabelledCrack l = LabelledCracks(dm, g)[0];
+    EXPECT_EQ(l.faces, 6 * 4) << tilt;  // 6 mm x 4 mm in cells of 1 mm along the strike and the up-dip
+    EXPECT_NEAR(l.area, 0.006 * 0.004, 1e-12 * 0.006 * 0.004) << tilt;
+    EXPECT_LT(l.off_plane, 1e-12) << tilt;
+    const mesh::Crack& c = g.cracks[0];
+    const double centre[3] = {c.x, c.y, c.z};
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(l.centroid[d] / l.area, centre[d], 1e-12) << tilt << " axis " << d;
+    DM split;
+    ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);  // one cohesive cell per crack face
+    DMDestroy(&split);
+    DMDestroy(&dm);
+  }
+}
+
+/// The faces of dm on crack c's plane whose centroids lie in its L × W rectangle, counted
+/// from their 3D centroids and the crack's strike and up-dip written out here; and whether
+/// every such face, and no other, carries the crack label.
+void StaircaseOf(DM dm, const mesh::Crack& c, PetscInt* faces, bool* labels_agree) {
+  const double t = c.angle_deg * M_PI / 180.0, d = c.tilt_deg * M_PI / 180.0;
+  const double s[3] = {std::cos(t), std::sin(t), 0.0};
+  const double w[3] = {std::sin(d) * std::sin(t), -std::sin(d) * std::cos(t), std::cos(d)};
+  const auto n = Normal(c);
+  DMLabel crack;
+  DMGetLabel(dm, mesh::labels::crack, &crack);
+  PetscInt fStart, fEnd;
+  mesh::FacetRange(dm, &fStart, &fEnd);
+  *faces = 0, *labels_agree = true;
+  for (PetscInt f = fStart; f < fEnd; ++f) {
+    PetscReal a, x[3];
+    PetscInt k;
+    DMPlexComputeCellGeometryFVM(dm, f, &a, x, nullptr);
+    DMLabelGetValue(crack, f, &k);
+    const double r[3] = {x[0] - c.x, x[1] - c.y, x[2] - c.z};
+    const auto dot = [&r](const auto& u) { return r[0] * u[0] + r[1] * u[1] + r[2] * u[2]; };
+    const bool in = std::abs(dot(n)) < 1e-9 && std::abs(dot(s)) <= 0.5 * c.length && std::abs(dot(w)) <= 0.5 * c.width;
+    *faces += in;
+    if (in != (k == 1)) *labels_agree = false;
+  }
+}
+
+TEST(TiltedCrack, TurnedIsTheStaircaseOfItsRectangle) {
+  mesh::SpecimenGeometry g = Block(30.0);
+  g.width = 0.04, g.height = 0.04, g.depth = 0.02, g.h_crack = 0.0005;
+  g.cracks[0].x = 0.02, g.cracks[0].y = 0.02, g.cracks[0].z = 0.01;
+  g.cracks[0].length = 0.008, g.cracks[0].width = 0.006, g.cracks[0].tilt_deg = 20.0;
+  const mesh::BoxGrid grid(g);
+  DM dm;
+  PetscInt total, expected;
+  bool agree;
+  ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, grid, &dm, &total), 0);
+  StaircaseOf(dm, g.cracks[0], &expected, &agree);
+  EXPECT_TRUE(agree) << "labelled faces differ from those in the rectangle";
+  EXPECT_EQ(total, expected);
+  EXPECT_LT(total, grid.crack_cells(0) * grid.crack_cells(1));  // a staircase, not the bounding rectangle
+  const LabelledCrack l = LabelledCracks(dm, g)[0];
+  EXPECT_LT(l.off_plane, 1e-12);
+  EXPECT_NEAR(l.area / (0.008 * 0.006), 1.0, 0.03);
+  EXPECT_NEAR(grid.crack_area(), l.area, 1e-15);
+  DM split;
+  ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);
+  DMDestroy(&split);
+  DMDestroy(&dm);
+  const mesh::BoxGrid heat(g, mesh::BoxGridSizes{0.5 * g.h_crack, g.h, g.grading, 1e-5, 1.5});
+  ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, heat, &dm, &total), 0);
+  EXPECT_EQ(total, 4 * expected);  // the heat grid's halves tile the wave staircase
+  EXPECT_NEAR(LabelledCracks(dm, g)[0].area, l.area, 1e-15);
+  DMDestroy(&dm);
+}
+
 TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   const auto message = [](mesh::SpecimenGeometry g) -> std::string {
     try {
@@ -339,7 +453,7 @@ TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   g.cracks.push_back(g.cracks[0]);
   EXPECT_NE(message(g).find("cracks 1 and 2 overlap"), std::string::npos) << message(g);
   g = Block(60.0);
-  g.cracks[0].y = 0.004;
+  g.cracks[0].x = 0.004;  // sheared along x, 4 mm from the face x = 0
   EXPECT_NE(message(g).find("-crack_angle"), std::string::npos) << message(g);
   g = Block(0.0);
   g.cracks.push_back(g.cracks[0]);
@@ -354,6 +468,14 @@ TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   g = Block(20.0);
   g.cracks[0].width = g.depth, g.cracks[0].shape = mesh::CrackShape::Ellipse;  // through the thickness
   EXPECT_NE(message(g).find("-crack_shape"), std::string::npos) << message(g);
+  g = Block(0.0);
+  g.cracks[0].tilt_deg = 50.0;
+  EXPECT_NE(message(g).find("-crack_tilt must lie in"), std::string::npos) << message(g);
+  g.cracks[0].tilt_deg = 45.0, g.cracks[0].y = 0.001;  // untilted it is buried; tilted it leaves through y = 0
+  EXPECT_NE(message(g).find("-crack_tilt: the crack reaches the outside"), std::string::npos) << message(g);
+  g = Block(0.0);
+  g.cracks[0].tilt_deg = 40.0, g.cracks[0].y = 0.004;  // sheared along y by 3 mm, 4 mm from the face y = 0
+  EXPECT_NE(message(g).find("without folding"), std::string::npos) << message(g);
 }
 
 }  // namespace

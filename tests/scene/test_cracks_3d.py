@@ -15,7 +15,9 @@ top and the bottom faces: the scene is symmetric under y -> 20 mm - y, so
  - the energy budget closes (< 1e-5), the friction heat equals the dissipated energy;
  - moving the upper crack by half a cell breaks the symmetry by more than 1 %: the check
    discriminates.
-Bad input: two cracks overlapping on one plane are refused in one line naming -crack_center.
+Bad input: two cracks overlapping on one plane are refused in one line naming -crack_center; a
+-crack_shape list of the wrong length (one shape a crack: -crack_shape ellipse,rectangle) names
+-crack_shape.
 
 usage: test_cracks_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
@@ -94,4 +96,6 @@ with tempfile.TemporaryDirectory() as tmp:
         print("shifted: dissipated %s (%.3g apart)" % (W, W[0] / W[1] - 1))
     refused(check, exe, base, ["-crack_center", "0.01,0.007,0.005,0.013,0.007,0.005", "-crack_angle", "0"],
             os.path.join(tmp, "overlap"), "-crack_center", "overlap")
+    refused(check, exe, base, ["-crack_center", SYMMETRIC, "-crack_shape", "ellipse,rectangle,ellipse"],
+            os.path.join(tmp, "shapes"), "-crack_shape", "3 values for 2 cracks")
 check.finish()

@@ -5,23 +5,29 @@
 // planes into the crack planes.
 //
 // A crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
-// -crack_angle), width Wc along z, normal in the x–y plane. Every crack of a box has
-// its normal nearest the same axis p (y when |θ| ≤ 45°, else x; q is the other
-// in-plane axis). Cracks on one line x_p = c_p + m (x_q − c_q) (m = tan θ for p = y,
-// cot θ for p = x) share a grid plane normal to p at P = the first one's c_p; the
-// planes P_1 < … < P_n are sheared along p:
-//   x_p' = x_p + Σ_i o_i(x_q) β_i(x_p),   o_i = m_i (x_q − c_q,i),
+// -crack_angle), width Wc along its up-dip w (z when -crack_tilt δ is 0; Crack::axes).
+// Every crack of a box has its normal nearest the same axis p (y when |θ| ≤ 45°, else x;
+// q is the other in-plane axis). Cracks on one plane x_p = c_p + m (x_q − c_q) + m_z (z −
+// c_z) (m = −n_q/n_p, m_z = −n_z/n_p) share a grid plane normal to p at P = its x_p at the
+// first crack's (x_q, z); the planes P_1 < … < P_n are sheared along p:
+//   x_p' = x_p + Σ_i o_i(x_q, z) β_i(x_p),   o_i = m_i (x̄_q − q0_i) + m_z,i (z̄ − z0_i),
+// x̄_q, z̄ clamped to the plane's cracks' bounding boxes and 2 cells of -mesh_h_crack around
+// them (beyond, the grid plane runs parallel to the axes: far less shear, so steeper cracks
+// fit in a box without folding it),
 // β_i = cos²(π/2 · (x_p − P_i)/d) between P_i and its neighbour plane (or the box face)
 // at distance d on that side, 0 beyond (a partition: β_i = 1 on plane i, 0 on the
 // others and on the two faces normal to p: the box stays a box). Each sheared plane is
-// exactly its crack line; a crack is the rectangle |x_q − c_q| ≤ L|cos θ|/2 (p = y;
-// L|sin θ|/2 for p = x), |z − c_z| ≤ Wc/2 on it, whose edges are grid lines. Sizes:
-// -mesh_h_crack on the cracks and across their planes, growing by -mesh_grading per
-// metre of distance up to -mesh_h (between two cracks, from both up to half way).
+// exactly its crack plane. Untilted (or with θ = 0) a crack is the rectangle |x_q − c_q|
+// ≤ L|s_q|/2, |z − c_z| ≤ Wc|w_z|/2 on it, whose edges are grid lines; tilted with θ ≠ 0
+// its outline is a parallelogram in (x_q, z), so like an ellipse it is the staircase of
+// the faces of its bounding rectangle whose centres lie in it. Sizes: -mesh_h_crack on the
+// cracks and across their planes, growing by -mesh_grading per metre of distance up to
+// -mesh_h (between two cracks, from both up to half way).
 #pragma once
 
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "vibrotherm/mesh/scene_geometry.hpp"
@@ -62,20 +68,20 @@ class BoxGrid {
   std::array<double, 3> position(const std::array<double, 3>& index) const;
   /// The crack (0-based) that the face with index-space centroid f (one
   /// half-integer coordinate less than a cell) lies on, −1 for none: in the crack's
-  /// rectangle, and for an elliptical crack in the staircase of the wave grid's faces
-  /// whose centres lie in the ellipse.
+  /// bounding rectangle, and for an elliptical or tilted-and-turned crack in the staircase
+  /// of the wave grid's faces whose centres lie in its outline.
   int crack_at(const std::array<double, 3>& f) const;
   int crack_count() const { return static_cast<int>(cracks_.size()); }
   /// Crack k's grid lines (unsheared) along its strike's grid axis q (along = 0) or z (1).
   std::vector<double> crack_nodes(int crack, int along) const;
   /// Crack k's cells along its strike (along = 0) and along z (1).
   int crack_cells(int along, int crack = 0) const;
-  /// The area of crack k's faces [m²] (an ellipse: its staircase), and of all.
+  /// The area of crack k's faces [m²] (a staircase: its faces'), and of all.
   double crack_area(int crack) const;
   double crack_area() const;
   /// The number of crack k's faces.
   int crack_faces(int crack) const;
-  /// Whether crack c of g runs through the thickness: its z extent is [0, D]
+  /// Whether crack c of g runs through the thickness: untilted, its z extent is [0, D]
   /// (-crack_width = -specimen_depth, centred), a plane-strain slab's crack.
   static bool through_thickness(const Crack& c, const SpecimenGeometry& g);
   /// Smallest and largest grid spacing before the shear [m].
@@ -90,9 +96,12 @@ class BoxGrid {
   const std::vector<PatchSnap>& patch_snaps() const { return patch_snaps_; }
 
  private:
-  /// A grid plane sheared into a crack line x_p = at + slope (x_q − q0).
+  /// A grid plane sheared into a crack plane x_p = at + slope (x_q − q0) + slope_z (z − z0)
+  /// over [lo, hi] in (x_q, z) (its cracks and 2 cells around them); beyond, x_q and z are
+  /// clamped to [lo, hi] (the plane continues parallel to the axes).
   struct Plane {
-    double at, slope, q0;
+    double at, slope, q0, slope_z, z0;
+    std::array<double, 2> lo, hi;
   };
   /// A crack on the grid: its plane, its node index range along each axis (p: its
   /// plane twice), its outline.
@@ -100,16 +109,22 @@ class BoxGrid {
     int plane;
     std::array<int, 3> lo, hi;
     CrackShape shape;
-    std::array<int, 2> outline_cells;  ///< the wave grid's cells along strike and z (the staircase)
-    double strike_per_q;               ///< length along the strike per unit of the grid axis q
+    std::array<int, 2> outline_cells;  ///< the wave grid's cells along q and z (the staircase)
+    double area_per_qz;                ///< crack area per unit of x_q·z (1/|n_p|)
+    /// Its outline's coordinates (along the strike, up-dip; ±1 on its edges) from the bounding
+    /// rectangle's (u, v) ∈ [−1, 1]²: (stretch u + skew v, v); skew = 0: (u, v) exactly.
+    double stretch, skew;
+    bool staircase() const { return shape != CrackShape::Rectangle || skew != 0.0; }
   };
   void validate(const SpecimenGeometry& g) const;
+  /// One crack's checks (`name`: " (crack k)" with several, else empty).
+  void validate_crack(const SpecimenGeometry& g, const Crack& c, const std::string& name) const;
   /// Groups the cracks into planes (this->planes_), each crack's plane in *plane_of.
   void find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of);
   /// The nodes of each axis and every crack's node ranges.
   void build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, const std::vector<int>& plane_of);
-  /// The shear's displacement along p at unsheared (x_p, x_q).
-  double offset(double xp, double xq) const;
+  /// The shear's displacement along p at unsheared (x_p, x_q, z).
+  double offset(double xp, double xq, double z) const;
   /// Throws when the shear folds the grid (d x_p'/d x_p < 1/4 somewhere).
   void check_fold() const;
   /// Calls visit(area) for each face of crack k.

@@ -33,18 +33,26 @@ std::array<int, 2> face_axes(Side side);
 int face_normal_axis(Side side);
 
 /// A 3D crack's outline on its plane: the rectangle L × W, or the ellipse inscribed in it
-/// (semi-axes L/2 along the strike, W/2 along z; -crack_shape).
+/// (semi-axes L/2 along the strike, W/2 along the up-dip, z untilted; -crack_shape).
 enum class CrackShape { Rectangle, Ellipse };
 
 struct Crack {
   double x = 0.0, y = 0.0;  ///< centre [m]
   double length = 0.0;      ///< [m]
   double angle_deg = 0.0;   ///< to the horizontal, counter-clockwise
-  double z = 0.0, width = 0.0;  ///< 3D: centre's z and extent along z [m]
+  double z = 0.0, width = 0.0;  ///< 3D: centre's z and extent along its up-dip w [m] (along z untilted)
+  double tilt_deg = 0.0;        ///< 3D: -crack_tilt, the plane turned about its strike [°]
   CrackShape shape = CrackShape::Rectangle;  ///< 3D: -crack_shape
+  /// 3D: the unit strike s = (cos θ, sin θ, 0), up-dip w = cos δ ẑ − sin δ n₀ and normal
+  /// n = cos δ n₀ + sin δ ẑ, n₀ = (−sin θ, cos θ, 0) (δ the tilt: 0 keeps z in the plane,
+  /// w = ẑ; δ > 0 turns n toward +z). The crack: centre ± (L/2) s ± (W/2) w.
+  struct Axes {
+    std::array<double, 3> strike, up_dip, normal;
+  };
+  Axes axes() const;
   /// End points: centre ∓ (L/2)(cos θ, sin θ); tangent s from end 0 to end 1.
   std::array<double, 2> end(int which) const;
-  /// 3D: distance from p to the crack's rectangle (centre ± (L/2)(cos θ, sin θ, 0) ± (W/2) ẑ)
+  /// 3D: distance from p to the crack's rectangle (centre ± (L/2) s ± (W/2) w, axes())
   /// or to its ellipse (the elliptical disc inscribed in that rectangle).
   double distance_to(const std::array<double, 3>& p) const;
 };

@@ -29,4 +29,30 @@ PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* o
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
+                                 const std::vector<std::string>& names, std::vector<PetscInt>* indices,
+                                 PetscBool* set) {
+  PetscFunctionBeginUser;
+  char value[1024] = "";
+  PetscBool given = PETSC_FALSE;
+  const std::string text = std::string(help) + " (" + JoinChoices(names) + ", one value or a comma-separated list)";
+  PetscCall(PetscOptionsString(option, text.c_str(), nullptr, value, value, sizeof(value), &given));
+  if (set) *set = given;
+  if (!given) PetscFunctionReturn(0);
+  indices->clear();
+  std::string rest = value;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = rest.find(',', start);
+    const std::string item = rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto it = std::find(names.begin(), names.end(), item);
+    if (it == names.end())
+      SETERRQ(PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option,
+              item.c_str(), JoinChoices(names).c_str());
+    indices->push_back(static_cast<PetscInt>(it - names.begin()));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm

@@ -15,6 +15,12 @@ namespace vibrotherm {
 PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
                              const std::vector<std::string>& names, PetscInt* index, PetscBool* set);
 
+/// A comma-separated list of `names` (one value or one per item): *indices is left alone
+/// unless given; an unknown item is a one-line user error naming the option.
+PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
+                                 const std::vector<std::string>& names, std::vector<PetscInt>* indices,
+                                 PetscBool* set);
+
 /// OptionsChoice for an enum whose values are the indices of `names`.
 template <class Enum>
 PetscErrorCode OptionsChoiceEnum(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
