@@ -31,13 +31,16 @@ Frame<3> FrameFromNormal(const Vec3& normal, const Vec3& reference) {
 
 Vec3 OrientedCrackNormal(const Vec3& normal) {
   const Vec3 n = Normalized(normal);
-  const bool flip = std::abs(n[1]) > 1e-12 ? n[1] < 0.0 : n[0] > 0.0;
+  const bool flip = std::abs(n[1]) > 1e-12 ? n[1] < 0.0 : std::abs(n[0]) > 1e-12 ? n[0] > 0.0 : n[2] < 0.0;
   return flip ? Scale(-1.0, n) : n;
 }
 
 Frame<3> CrackFrame(const Vec3& normal) {
   const Vec3 n = OrientedCrackNormal(normal);
-  return FrameFromNormal(n, {n[1], -n[0], 0.0});  // the strike: already in the plane
+  // The strike (n_y, −n_x, 0): already in the plane; a crack parallel to z = const has none,
+  // its t1 is x.
+  const bool flat = std::hypot(n[0], n[1]) < 1e-12;
+  return FrameFromNormal(n, flat ? Vec3{1.0, 0.0, 0.0} : Vec3{n[1], -n[0], 0.0});
 }
 
 }  // namespace vibrotherm::geometry

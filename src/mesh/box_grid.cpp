@@ -91,6 +91,33 @@ double HalfExtent(const Crack& c, int a) {
   return 0.5 * c.length * std::abs(axes.strike[a]) + 0.5 * c.width * std::abs(axes.up_dip[a]);
 }
 
+/// The axis crack c's normal is nearest: y, else x, else z (a tie goes to the earlier).
+int NormalAxis(const Crack& c) {
+  const auto n = c.axes().normal;
+  int p = 1;
+  if (std::abs(n[0]) > std::abs(n[1]) + 2e-12) p = 0;
+  if (std::abs(n[2]) > std::abs(n[p]) + 2e-12) p = 2;
+  return p;
+}
+
+constexpr const char* kAxisName[3] = {"x", "y", "z"};
+
+/// Crack c's outline coordinates from its bounding box's normalised (u, v) along the
+/// in-plane axes `in`: (u, v) = (Δ_0/H_0, Δ_1/H_1) with H the box's half extents, and
+/// Δ = α s + β w solved for the strike and up-dip coordinates α, β.
+CrackOutlineMap OutlineOf(const Crack& c, const std::array<int, 2>& in) {
+  const Crack::Axes axes = c.axes();
+  const double s0 = axes.strike[in[0]], s1 = axes.strike[in[1]], w0 = axes.up_dip[in[0]], w1 = axes.up_dip[in[1]];
+  CrackOutlineMap map;
+  constexpr double kAligned = 1e-12;
+  if (std::abs(w0) < kAligned && std::abs(s1) < kAligned) map.aligned_as = 1;
+  else if (std::abs(s0) < kAligned && std::abs(w1) < kAligned) map.aligned_as = 2;
+  const double h0 = HalfExtent(c, in[0]), h1 = HalfExtent(c, in[1]), det = s0 * w1 - w0 * s1;
+  const double a = 0.5 * c.length * det, b = 0.5 * c.width * det;
+  map.m = {w1 * h0 / a, -w0 * h1 / a, -s1 * h0 / b, s0 * h1 / b};
+  return map;
+}
+
 /// The index of the node at x (it must be one).
 int NodeAt(const std::vector<double>& nodes, double x) {
   const auto it = std::min_element(nodes.begin(), nodes.end(),
@@ -154,16 +181,15 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
   if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
   g.validate();  // sizes, and each crack's trace in the x-y plane
   size_ = {g.width, g.height, g.depth};
-  const auto steep = [](const Crack& c) { return std::abs(std::cos(c.angle_deg * M_PI / 180.0)) < std::sqrt(0.5) - 1e-12; };
-  p_ = !g.cracks.empty() && steep(g.cracks.front()) ? 0 : 1;
-  q_ = 1 - p_;
   for (const Crack& c : g.cracks)
-    if (!(std::abs(c.tilt_deg) <= 45.0))
-      reject("-crack_tilt must lie in [-45, 45] degrees (the crack's normal nearest the x-y plane), got ", c.tilt_deg);
+    if (!(std::abs(c.tilt_deg) <= 90.0)) reject("-crack_tilt must lie in [-90, 90] degrees, got ", c.tilt_deg);
+  p_ = g.cracks.empty() ? 1 : NormalAxis(g.cracks.front());
+  in_ = p_ == 0 ? std::array<int, 2>{1, 2} : p_ == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
   for (const Crack& c : g.cracks)
-    if ((steep(c) ? 0 : 1) != p_)
-      reject("-crack_angle: the cracks of a 3D box must all be within 45 degrees of horizontal, or all steeper (",
-             c.angle_deg, " and ", g.cracks.front().angle_deg, " given)");
+    if (NormalAxis(c) != p_)
+      reject("-crack_angle/-crack_tilt: the cracks of a 3D box must all have their normals nearest one axis (a ",
+             "crack at ", c.angle_deg, " degrees tilted by ", c.tilt_deg, " is nearest ", kAxisName[NormalAxis(c)],
+             ", the first crack's ", kAxisName[p_], ")");
   std::vector<int> plane_of;
   find_planes(g, &plane_of);
   validate(g);
@@ -174,37 +200,40 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
 
 void BoxGrid::find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of) {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
+  const auto coordinate = [](const Crack& c, int a) { return a == 0 ? c.x : a == 1 ? c.y : c.z; };
+  const auto rise = [](const std::array<double, 2>& m, const std::array<double, 2>& from,
+                       const std::array<double, 2>& to) { return m[0] * (to[0] - from[0]) + m[1] * (to[1] - from[1]); };
+  // Each plane's x_p at the first crack's in-plane coordinates: the planes' unsheared
+  // positions and their spacing are compared there (one crack: its centre).
+  const std::array<double, 2> ref = {g.cracks.empty() ? 0.0 : coordinate(g.cracks.front(), in_[0]),
+                                     g.cracks.empty() ? 0.0 : coordinate(g.cracks.front(), in_[1])};
   for (const Crack& c : g.cracks) {
     const auto n = c.axes().normal;
-    const double slope = -n[q_] / n[p_], slope_z = -n[2] / n[p_];
-    const double cp = p_ == 0 ? c.x : c.y, cq = p_ == 0 ? c.y : c.x;
+    const std::array<double, 2> slope = {-n[in_[0]] / n[p_], -n[in_[1]] / n[p_]};
+    const std::array<double, 2> centre = {coordinate(c, in_[0]), coordinate(c, in_[1])};
+    const double cp = coordinate(c, p_);
     int found = -1;
     for (std::size_t i = 0; i < planes_.size() && found < 0; ++i) {
       const Plane& pl = planes_[i];
-      if (std::abs(pl.slope - slope) <= 1e-12 && std::abs(pl.slope_z - slope_z) <= 1e-12 &&
-          std::abs(pl.at + pl.slope * (cq - pl.q0) + pl.slope_z * (c.z - pl.z0) - cp) <= tol)
+      if (std::abs(pl.slope[0] - slope[0]) <= 1e-12 && std::abs(pl.slope[1] - slope[1]) <= 1e-12 &&
+          std::abs(pl.at + rise(pl.slope, pl.ref, centre) - cp) <= tol)
         found = static_cast<int>(i);  // on that plane
     }
-    // Each plane's x_p at the first crack's (x_q, z): the planes' unsheared positions and
-    // their spacing are compared there (one crack: its centre).
-    const Crack& first = g.cracks.front();
-    const double q_ref = p_ == 0 ? first.y : first.x;
     if (found < 0) {
-      planes_.push_back({cp + slope * (q_ref - cq) + slope_z * (first.z - c.z), slope, q_ref, slope_z, first.z,
-                         {INFINITY, INFINITY}, {-INFINITY, -INFINITY}});
+      planes_.push_back({cp + rise(slope, centre, ref), slope, ref, {INFINITY, INFINITY}, {-INFINITY, -INFINITY}});
       found = static_cast<int>(planes_.size()) - 1;
     }
     // The plane is the crack plane over its cracks' bounding boxes and 2 cells beyond.
     Plane& pl = planes_[found];
-    const double margin = 2.0 * g.h_crack, centre[2] = {cq, c.z};
     for (int k = 0; k < 2; ++k) {
-      const double half = HalfExtent(c, k == 0 ? q_ : 2) + margin;
+      const double half = HalfExtent(c, in_[k]) + 2.0 * g.h_crack;
       pl.lo[k] = std::min(pl.lo[k], centre[k] - half), pl.hi[k] = std::max(pl.hi[k], centre[k] + half);
     }
     plane_of->push_back(found);
   }
   if (g.cracks.empty())  // a stand-in through the centre
-    planes_.push_back({0.5 * size_[p_], 0.0, 0.5 * size_[q_], 0.0, 0.5 * size_[2], {0.0, 0.0}, {size_[q_], size_[2]}});
+    planes_.push_back({0.5 * size_[p_], {0.0, 0.0}, {0.5 * size_[in_[0]], 0.5 * size_[in_[1]]}, {0.0, 0.0},
+                       {size_[in_[0]], size_[in_[1]]}});
   // Sort the planes by position, renumbering the cracks' references.
   std::vector<int> order(planes_.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
@@ -228,28 +257,29 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   const int per_wave_cell = std::max(1, static_cast<int>(std::lround(g.h_crack / s.h_crack)));
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
-    const double sq = axes.strike[q_], wq = axes.up_dip[q_];  // the strike's and up-dip's parts along q
-    const double half_q = HalfExtent(c, q_), cq = q_ == 0 ? c.x : c.y;
-    const double along_strike = 2.0 * half_q / std::abs(sq);  // the bounding rectangle's extent along the strike
-    segments[q_].push_back({cq - half_q, cq + half_q, per_wave_cell * CellsAcross(along_strike, g.h_crack)});
-    const bool through = through_thickness(c, g);  // ends exactly on the faces
-    const double half_z = HalfExtent(c, 2);
-    const double z0 = through ? 0.0 : c.z - half_z, z1 = through ? g.depth : c.z + half_z;
-    segments[2].push_back({z0, z1, per_wave_cell * CellsAcross(c.width, g.h_crack)});
-    const double stretch = half_q / (0.5 * c.length * sq), skew = -c.width * wq / (c.length * sq);
-    cracks_.push_back({0, {}, {}, c.shape, {CellsAcross(along_strike, g.h_crack), CellsAcross(c.width, g.h_crack)},
-                       1.0 / std::abs(axes.normal[p_]), stretch, skew});
+    std::array<int, 2> outline{};
+    for (int k = 0; k < 2; ++k) {
+      const int a = in_[k];
+      const double half = HalfExtent(c, a), centre = a == 0 ? c.x : a == 1 ? c.y : c.z;
+      // Cells of -mesh_h_crack measured along the crack (by the larger of the strike's and
+      // the up-dip's parts along this axis): the length's and the width's counts when aligned.
+      outline[k] = CellsAcross(2.0 * half / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
+      const bool through = a == 2 && through_thickness(c, g);  // ends exactly on the faces
+      segments[a].push_back({through ? 0.0 : centre - half, through ? g.depth : centre + half, per_wave_cell * outline[k]});
+    }
+    cracks_.push_back({0, {}, {}, c.shape, outline, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_)});
   }
-  if (!cracked) segments[q_].push_back({0.5 * size_[q_], 0.5 * size_[q_], 0}), segments[2].push_back({0.5 * size_[2], 0.5 * size_[2], 0});
+  if (!cracked)
+    for (int a : in_) segments[a].push_back({0.5 * size_[a], 0.5 * size_[a], 0});
   // Crack ends closer than a third of the wave grid's crack cell share a grid line.
-  for (int a : {q_, 2}) SnapEnds(&segments[a], g.h_crack / 3.0, size_[a]);
+  for (int a : in_) SnapEnds(&segments[a], g.h_crack / 3.0, size_[a]);
   for (int a = 0; a < 3; ++a) nodes_[a] = AxisNodes(size_[a], segments[a], s);
   for (int a = 0; a < 3 && !cracked; ++a) stand_in_[a] = NodeAt(nodes_[a], segments[a].front().lo);
   for (std::size_t k = 0; k < cracks_.size(); ++k) {
     CrackOnGrid& c = cracks_[k];
     c.plane = plane_of[k];
     c.lo[p_] = c.hi[p_] = NodeAt(nodes_[p_], planes_[c.plane].at);
-    for (int a : {q_, 2}) {
+    for (int a : in_) {
       const AxisSegment& seg = segments[a][k];
       c.lo[a] = NodeAt(nodes_[a], seg.lo), c.hi[a] = NodeAt(nodes_[a], seg.hi);
     }
@@ -283,7 +313,7 @@ void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const st
   const int along = CellsAcross(c.length, g.h_crack), across = CellsAcross(c.width, g.h_crack);
   if (along < 2)
     reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name);
-  const bool staircase = c.shape == CrackShape::Ellipse || axes.up_dip[q_] != 0.0;
+  const bool staircase = c.shape == CrackShape::Ellipse || !OutlineOf(c, in_).aligned();
   if (staircase && std::min(along, across) < 4)
     reject(c.shape == CrackShape::Ellipse ? "-crack_shape ellipse: the ellipse" : "-crack_tilt with -crack_angle: the "
            "staircase of a tilted, turned crack", " needs at least 4 cells of -mesh_h_crack ", g.h_crack,
@@ -298,7 +328,7 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
   for (std::size_t i = 1; i < planes_.size(); ++i)
     if (planes_[i].at - planes_[i - 1].at < 2.0 * g.h_crack * (1.0 - 1e-9))
       reject("-crack_center/-crack_angle: two crack planes lie ", planes_[i].at - planes_[i - 1].at, " m apart along ",
-             p_ == 0 ? "x" : "y", " (at ", q_ == 0 ? "x" : "y", " = ", planes_[i].q0, " m); they need at least 2 ",
+             kAxisName[p_], " (at ", kAxisName[in_[0]], " = ", planes_[i].ref[0], " m); they need at least 2 ",
              "cells of -mesh_h_crack (", g.h_crack, " m) between them, and two cracks on one plane must lie on one line");
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
     for (std::size_t j = 0; j < i; ++j) {  // on one plane (the others are apart): their rectangles must not touch
@@ -319,14 +349,14 @@ bool BoxGrid::through_thickness(const Crack& c, const SpecimenGeometry& g) {
   return c.tilt_deg == 0.0 && std::abs(c.z - 0.5 * c.width) <= tol && std::abs(c.z + 0.5 * c.width - g.depth) <= tol;
 }
 
-double BoxGrid::offset(double xp, double xq, double z) const {
+double BoxGrid::offset(double xp, double x0, double x1) const {
   // Plane i's offset o_i(x_q) weighted by cos² of the way to its neighbour (or the face).
   const auto above = std::upper_bound(planes_.begin(), planes_.end(), xp,
                                       [](double x, const Plane& pl) { return x < pl.at; });
   const auto weight = [&](const Plane& pl, double d) {
     const double c = std::cos(0.5 * M_PI * (xp - pl.at) / d);
-    const double q = std::clamp(xq, pl.lo[0], pl.hi[0]), zc = std::clamp(z, pl.lo[1], pl.hi[1]);
-    return ((q - pl.q0) * pl.slope + (zc - pl.z0) * pl.slope_z) * (c * c);
+    const double y0 = std::clamp(x0, pl.lo[0], pl.hi[0]), y1 = std::clamp(x1, pl.lo[1], pl.hi[1]);
+    return ((y0 - pl.ref[0]) * pl.slope[0] + (y1 - pl.ref[1]) * pl.slope[1]) * (c * c);
   };
   double shift = 0.0;
   if (above != planes_.begin()) {  // the plane below x_p, toward the next one up (or the face)
@@ -341,32 +371,33 @@ double BoxGrid::offset(double xp, double xq, double z) const {
 }
 
 void BoxGrid::check_fold() const {
-  // The shear is piecewise linear in x_q and z (linear between the planes' clamps), so
-  // d x_p'/d x_p is extreme on the lines along p through the faces and the clamps.
-  std::vector<double> qs = {0.0, size_[q_]}, zs = {0.0, size_[2]};
-  for (const Plane& pl : planes_)
-    qs.insert(qs.end(), {pl.lo[0], pl.hi[0]}), zs.insert(zs.end(), {pl.lo[1], pl.hi[1]});
+  // The shear is piecewise linear in the in-plane coordinates (linear between the planes'
+  // clamps), so d x_p'/d x_p is extreme on the lines along p through the faces and the clamps.
+  std::array<std::vector<double>, 2> lines;
+  for (int k = 0; k < 2; ++k) {
+    lines[k] = {0.0, size_[in_[k]]};
+    for (const Plane& pl : planes_)
+      for (double x : {pl.lo[k], pl.hi[k]})
+        if (x > 0.0 && x < size_[in_[k]]) lines[k].push_back(x);
+  }
   constexpr int kSamples = 4000;
-  for (double xq : qs)
-    for (double z : zs) {
-      if (xq < 0.0 || xq > size_[q_] || z < 0.0 || z > size_[2]) continue;
-      const double dx = size_[p_] / kSamples;
+  const double dx = size_[p_] / kSamples;
+  for (double x0 : lines[0])
+    for (double x1 : lines[1])
       for (int i = 0; i < kSamples; ++i) {
-        const double x0 = i * dx, x1 = x0 + dx;
-        const double stretch = 1.0 + (offset(x1, xq, z) - offset(x0, xq, z)) / dx;
-        if (stretch < 0.25)
+        const double a = i * dx, b = a + dx;
+        if (1.0 + (offset(b, x0, x1) - offset(a, x0, x1)) / dx < 0.25)
           reject("-crack_angle/-crack_tilt/-crack_center: the 3D grid cannot be sheared into the crack plane",
-                 planes_.size() > 1 ? "s" : "", " without folding (near ", p_ == 0 ? "x" : "y", " = ", x0,
-                 " m on the line ", q_ == 0 ? "x" : "y", " = ", xq, " m, z = ", z, " m): a smaller inclination, or ",
-                 "the cracks farther from each other and from the faces normal to ", p_ == 0 ? "x" : "y");
+                 planes_.size() > 1 ? "s" : "", " without folding (near ", kAxisName[p_], " = ", a, " m on the line ",
+                 kAxisName[in_[0]], " = ", x0, " m, ", kAxisName[in_[1]], " = ", x1, " m): a smaller inclination, ",
+                 "or the cracks farther from each other and from the faces normal to ", kAxisName[p_]);
       }
-    }
 }
 
 std::array<double, 3> BoxGrid::position(const std::array<double, 3>& index) const {
   std::array<double, 3> x;
   for (int a = 0; a < 3; ++a) x[a] = nodes_[a][static_cast<std::size_t>(std::lround(index[a]))];
-  x[p_] += offset(x[p_], x[q_], x[2]);
+  x[p_] += offset(x[p_], x[in_[0]], x[in_[1]]);
   return x;
 }
 
@@ -374,7 +405,8 @@ int BoxGrid::crack_at(const std::array<double, 3>& f) const {
   for (std::size_t k = 0; k < cracks_.size(); ++k) {
     const CrackOnGrid& c = cracks_[k];
     const auto inside = [&](int a) { return f[a] > c.lo[a] && f[a] < c.hi[a]; };
-    if (std::abs(f[p_] - c.lo[p_]) < 1e-9 && inside(q_) && inside(2) && inside_outline(c, f)) return static_cast<int>(k);
+    if (std::abs(f[p_] - c.lo[p_]) < 1e-9 && inside(in_[0]) && inside(in_[1]) && inside_outline(c, f))
+      return static_cast<int>(k);
   }
   return -1;
 }
@@ -384,41 +416,40 @@ bool BoxGrid::inside_outline(const CrackOnGrid& c, const std::array<double, 3>& 
   // The crack's bounding rectangle cut into the wave grid's uniform crack cells: the face
   // is kept when the cell holding its centre (by position, so that the wave grid and the
   // finer heat grid nested in it agree) has its centre in the outline.
-  const int axes[2] = {q_, 2};
-  double uv[2];
+  std::array<double, 2> uv;
   for (int k = 0; k < 2; ++k) {
-    const int a = axes[k];
+    const int a = in_[k];
     const std::size_t i = static_cast<std::size_t>(std::floor(f[a]));
     const double x = 0.5 * (nodes_[a][i] + nodes_[a][std::min(i + 1, nodes_[a].size() - 1)]);
     const double lo = nodes_[a][c.lo[a]], hi = nodes_[a][c.hi[a]];
     const double cell = std::floor((x - lo) / (hi - lo) * c.outline_cells[k]);
     uv[k] = 2.0 * (cell + 0.5) / c.outline_cells[k] - 1.0;
   }
-  // Along the strike and the up-dip, ±1 on the outline's edges.
-  const double s = c.skew == 0.0 ? uv[0] : c.stretch * uv[0] + c.skew * uv[1], w = uv[1];
+  const auto [s, w] = c.outline.along_crack(uv);  // along the strike and the up-dip, ±1 on the edges
   if (c.shape == CrackShape::Ellipse) return s * s + w * w <= 1.0;
   return std::abs(s) <= 1.0 && std::abs(w) <= 1.0;
 }
 
 std::vector<double> BoxGrid::crack_nodes(int crack, int along) const {
   const CrackOnGrid& c = cracks_.at(crack);
-  const int a = along == 0 ? q_ : 2;
+  const int a = in_[along];
   return {nodes_[a].begin() + c.lo[a], nodes_[a].begin() + c.hi[a] + 1};
 }
 
 int BoxGrid::crack_cells(int along, int crack) const {
   const CrackOnGrid& c = cracks_.at(crack);
-  const int a = along == 0 ? q_ : 2;
+  const int a = in_[along];
   return c.hi[a] - c.lo[a];
 }
 
 void BoxGrid::for_each_face(int crack, const std::function<void(double)>& visit) const {
   const CrackOnGrid& c = cracks_.at(crack);
-  for (int i = c.lo[q_]; i < c.hi[q_]; ++i)
-    for (int j = c.lo[2]; j < c.hi[2]; ++j) {
+  const int a0 = in_[0], a1 = in_[1];
+  for (int i = c.lo[a0]; i < c.hi[a0]; ++i)
+    for (int j = c.lo[a1]; j < c.hi[a1]; ++j) {
       std::array<double, 3> f{};
-      f[p_] = c.lo[p_], f[q_] = i + 0.5, f[2] = j + 0.5;
-      if (crack_at(f) == crack) visit((nodes_[q_][i + 1] - nodes_[q_][i]) * c.area_per_qz * (nodes_[2][j + 1] - nodes_[2][j]));
+      f[p_] = c.lo[p_], f[a0] = i + 0.5, f[a1] = j + 0.5;
+      if (crack_at(f) == crack) visit((nodes_[a0][i + 1] - nodes_[a0][i]) * c.area_per_cell * (nodes_[a1][j + 1] - nodes_[a1][j]));
     }
 }
 

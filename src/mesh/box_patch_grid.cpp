@@ -47,17 +47,20 @@ double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double tar
 }
 
 double BoxGrid::unsheared(int a, int n, double at, double target) const {
-  const bool sheared = std::any_of(planes_.begin(), planes_.end(), [](const Plane& pl) { return pl.slope != 0.0 || pl.slope_z != 0.0; });
-  const bool tilted = std::any_of(planes_.begin(), planes_.end(), [](const Plane& pl) { return pl.slope_z != 0.0; });
+  const bool sheared = std::any_of(planes_.begin(), planes_.end(), [](const Plane& pl) { return pl.slope != std::array<double, 2>{}; });
   if (a != p_ || !sheared) return target;  // the shear moves x_p only
-  // Front, back (and with a tilted crack every face along p): the shear moves x_p by an
-  // amount that varies across the face.
-  if (n != q_ || tilted) return NAN;
-  // On a face x_q = at the shear is x_p + offset(x_p, at), increasing (it does not fold): bisect.
+  // On a face normal to in-plane axis n the shear varies across the face with the other
+  // in-plane axis unless no plane slopes along it (then the lines bend: NaN).
+  const int k = n == in_[0] ? 0 : 1, other = 1 - k;
+  if (std::any_of(planes_.begin(), planes_.end(), [other](const Plane& pl) { return pl.slope[other] != 0.0; }))
+    return NAN;
+  // There the shear is x_p + offset(x_p, ...), increasing (it does not fold): bisect.
+  std::array<double, 2> in_plane{};
+  in_plane[k] = at;
   double lo = 0.0, hi = size_[p_];
   for (int i = 0; i < 80; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (mid + offset(mid, at, 0.0) < target ? lo : hi) = mid;
+    (mid + offset(mid, in_plane[0], in_plane[1]) < target ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

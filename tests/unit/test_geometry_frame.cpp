@@ -112,5 +112,30 @@ TEST(GeometryFrame3, CrackNormalFollowsThe2DConvention) {
   }
 }
 
+// A tilted crack (-crack_tilt δ): n = cos δ (−sin θ, cos θ, 0) + sin δ ẑ keeps t1 = the strike
+// (horizontal) and t2 = n × t1 in the plane; a crack parallel to z = const (δ = ±90°) gets
+// n = +z whichever side its face normal came from, and t1 = x.
+TEST(GeometryFrame3, TiltedAndFlatCracksKeepAStrike) {
+  for (double tilt : {-60.0, 20.0, 89.0}) {
+    const double t = 30.0 * M_PI / 180.0, d = tilt * M_PI / 180.0;
+    const Vec3 s{std::cos(t), std::sin(t), 0.0};
+    const Vec3 n{-std::sin(t) * std::cos(d), std::cos(t) * std::cos(d), std::sin(d)};
+    for (double sign : {1.0, -1.0}) {
+      const Frame<3> f = CrackFrame(Scale(sign, n));
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(f.normal[k], n[k], 1e-15) << tilt;
+        EXPECT_NEAR(f.tangent[0][k], s[k], 1e-15) << tilt;
+      }
+      ExpectOrthonormal3(f);
+    }
+  }
+  for (double sign : {1.0, -1.0}) {
+    const Frame<3> f = CrackFrame({0.0, 0.0, sign});
+    EXPECT_EQ(f.normal, (Vec3{0.0, 0.0, 1.0}));
+    EXPECT_EQ(f.tangent[0], (Vec3{1.0, 0.0, 0.0}));
+    ExpectOrthonormal3(f);
+  }
+}
+
 }  // namespace
 }  // namespace vibrotherm::geometry

@@ -31,10 +31,11 @@ Frame<3> FrameFromNormal(const Vec3& normal, const Vec3& reference = {0.0, 0.0, 
 
 /// A 3D crack's unit normal oriented by the 2D convention extended: n_y > 0, or
 /// n_x < 0 when n ⊥ y (for a crack plane containing z: its strike turned by +90°
-/// about z).
+/// about z), or n_z > 0 when n is ±z.
 Vec3 OrientedCrackNormal(const Vec3& normal);
-/// The frame of a crack plane containing z (the 3D box crack): the oriented normal,
-/// t1 its strike (n turned by −90° about z, the 2D tangent), t2 = n × t1 = −z.
+/// The frame of a 3D crack plane: the oriented normal, t1 its strike (horizontal: n turned
+/// by −90° about z and projected, the 2D tangent; x for a plane z = const), t2 = n × t1
+/// (−z for a plane containing z).
 Frame<3> CrackFrame(const Vec3& normal);
 
 /// |r̂ · n| above which a reference direction counts as normal to the plane.

@@ -6,21 +6,23 @@
 //
 // A crack: centre c, length L along its strike s = (cos θ, sin θ, 0) (θ =
 // -crack_angle), width Wc along its up-dip w (z when -crack_tilt δ is 0; Crack::axes).
-// Every crack of a box has its normal nearest the same axis p (y when |θ| ≤ 45°, else x;
-// q is the other in-plane axis). Cracks on one plane x_p = c_p + m (x_q − c_q) + m_z (z −
-// c_z) (m = −n_q/n_p, m_z = −n_z/n_p) share a grid plane normal to p at P = its x_p at the
-// first crack's (x_q, z); the planes P_1 < … < P_n are sheared along p:
-//   x_p' = x_p + Σ_i o_i(x_q, z) β_i(x_p),   o_i = m_i (x̄_q − q0_i) + m_z,i (z̄ − z0_i),
-// x̄_q, z̄ clamped to the plane's cracks' bounding boxes and 2 cells of -mesh_h_crack around
+// Every crack of a box has its normal nearest the same axis p (y, x or z, ties in that
+// order; (a, b) the two other axes, in order: (x, z) for p = y, (y, z) for x, (x, y) for z).
+// Cracks on one plane x_p = c_p + m_a (x_a − c_a) + m_b (x_b − c_b) (m = −n_a/n_p,
+// −n_b/n_p) share a grid plane normal to p at P = its x_p at the first crack's (x_a, x_b);
+// the planes P_1 < … < P_n are sheared along p:
+//   x_p' = x_p + Σ_i o_i(x_a, x_b) β_i(x_p),   o_i = m_a,i (x̄_a − ref_a) + m_b,i (x̄_b − ref_b),
+// x̄ clamped to the plane's cracks' bounding boxes and 2 cells of -mesh_h_crack around
 // them (beyond, the grid plane runs parallel to the axes: far less shear, so steeper cracks
 // fit in a box without folding it),
 // β_i = cos²(π/2 · (x_p − P_i)/d) between P_i and its neighbour plane (or the box face)
 // at distance d on that side, 0 beyond (a partition: β_i = 1 on plane i, 0 on the
 // others and on the two faces normal to p: the box stays a box). Each sheared plane is
-// exactly its crack plane. Untilted (or with θ = 0) a crack is the rectangle |x_q − c_q|
-// ≤ L|s_q|/2, |z − c_z| ≤ Wc|w_z|/2 on it, whose edges are grid lines; tilted with θ ≠ 0
-// its outline is a parallelogram in (x_q, z), so like an ellipse it is the staircase of
-// the faces of its bounding rectangle whose centres lie in it. Sizes: -mesh_h_crack on the
+// exactly its crack plane. When s and w lie along a and b (either way round) a crack is
+// its bounding rectangle there, (L/2)|s_a| + (W/2)|w_a| by (L/2)|s_b| + (W/2)|w_b|, whose
+// edges are grid lines; otherwise (turned and tilted) its outline is a parallelogram in
+// (x_a, x_b), so like an ellipse it is the staircase of the faces of its bounding
+// rectangle whose centres lie in it. Sizes: -mesh_h_crack on the
 // cracks and across their planes, growing by -mesh_grading per metre of distance up to
 // -mesh_h (between two cracks, from both up to half way).
 #pragma once
@@ -50,6 +52,20 @@ struct AxisSegment {
   int cells;
 };
 
+/// A crack's outline coordinates (along its strike and its up-dip, ±1 on its edges) from
+/// its bounding rectangle's normalised in-plane coordinates (u, v) ∈ [−1, 1]² (u along the
+/// grid's first in-plane axis).
+struct CrackOutlineMap {
+  std::array<double, 4> m{};  ///< (m0 u + m1 v, m2 u + m3 v)
+  int aligned_as = 0;         ///< 1: the strike along u, exactly (u, v); 2: along v, (v, u); 0: m
+  bool aligned() const { return aligned_as != 0; }
+  std::array<double, 2> along_crack(const std::array<double, 2>& uv) const {
+    if (aligned_as == 1) return uv;
+    if (aligned_as == 2) return {uv[1], uv[0]};
+    return {m[0] * uv[0] + m[1] * uv[1], m[2] * uv[0] + m[3] * uv[1]};
+  }
+};
+
 class BoxGrid {
  public:
   /// Checks the 3D specimen (throws std::invalid_argument naming the option: each
@@ -72,9 +88,10 @@ class BoxGrid {
   /// of the wave grid's faces whose centres lie in its outline.
   int crack_at(const std::array<double, 3>& f) const;
   int crack_count() const { return static_cast<int>(cracks_.size()); }
-  /// Crack k's grid lines (unsheared) along its strike's grid axis q (along = 0) or z (1).
+  /// Crack k's grid lines (unsheared) along the grid planes' first in-plane axis (along = 0:
+  /// x, or y for planes normal to x) or second (1: z, or y for planes normal to z).
   std::vector<double> crack_nodes(int crack, int along) const;
-  /// Crack k's cells along its strike (along = 0) and along z (1).
+  /// Crack k's cells along the in-plane axes (along = 0, 1 as in crack_nodes).
   int crack_cells(int along, int crack = 0) const;
   /// The area of crack k's faces [m²] (a staircase: its faces'), and of all.
   double crack_area(int crack) const;
@@ -96,12 +113,12 @@ class BoxGrid {
   const std::vector<PatchSnap>& patch_snaps() const { return patch_snaps_; }
 
  private:
-  /// A grid plane sheared into a crack plane x_p = at + slope (x_q − q0) + slope_z (z − z0)
-  /// over [lo, hi] in (x_q, z) (its cracks and 2 cells around them); beyond, x_q and z are
-  /// clamped to [lo, hi] (the plane continues parallel to the axes).
+  /// A grid plane sheared into a crack plane x_p = at + Σ_k slope_k (x_k − ref_k) (k the two
+  /// in-plane axes) over [lo, hi] (its cracks and 2 cells around them); beyond, x_k is
+  /// clamped to [lo_k, hi_k] (the plane continues parallel to the axes).
   struct Plane {
-    double at, slope, q0, slope_z, z0;
-    std::array<double, 2> lo, hi;
+    double at;
+    std::array<double, 2> slope, ref, lo, hi;
   };
   /// A crack on the grid: its plane, its node index range along each axis (p: its
   /// plane twice), its outline.
@@ -109,12 +126,10 @@ class BoxGrid {
     int plane;
     std::array<int, 3> lo, hi;
     CrackShape shape;
-    std::array<int, 2> outline_cells;  ///< the wave grid's cells along q and z (the staircase)
-    double area_per_qz;                ///< crack area per unit of x_q·z (1/|n_p|)
-    /// Its outline's coordinates (along the strike, up-dip; ±1 on its edges) from the bounding
-    /// rectangle's (u, v) ∈ [−1, 1]²: (stretch u + skew v, v); skew = 0: (u, v) exactly.
-    double stretch, skew;
-    bool staircase() const { return shape != CrackShape::Rectangle || skew != 0.0; }
+    std::array<int, 2> outline_cells;  ///< the wave grid's cells along the in-plane axes (the staircase)
+    double area_per_cell;              ///< crack area per unit of in-plane cell area (1/|n_p|)
+    CrackOutlineMap outline;
+    bool staircase() const { return shape != CrackShape::Rectangle || !outline.aligned(); }
   };
   void validate(const SpecimenGeometry& g) const;
   /// One crack's checks (`name`: " (crack k)" with several, else empty).
@@ -123,8 +138,8 @@ class BoxGrid {
   void find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of);
   /// The nodes of each axis and every crack's node ranges.
   void build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, const std::vector<int>& plane_of);
-  /// The shear's displacement along p at unsheared (x_p, x_q, z).
-  double offset(double xp, double xq, double z) const;
+  /// The shear's displacement along p at unsheared x_p and in-plane coordinates (x0, x1).
+  double offset(double xp, double x0, double x1) const;
   /// Throws when the shear folds the grid (d x_p'/d x_p < 1/4 somewhere).
   void check_fold() const;
   /// Calls visit(area) for each face of crack k.
@@ -139,7 +154,8 @@ class BoxGrid {
   std::array<std::vector<double>, 3> nodes_;
   std::vector<Plane> planes_;  ///< sorted by `at`
   std::vector<CrackOnGrid> cracks_;
-  int p_ = 1, q_ = 0;
+  int p_ = 1;                    ///< the axis normal to the grid planes
+  std::array<int, 2> in_{0, 2};  ///< the two in-plane axes, in order
   std::array<double, 3> size_{};
   std::vector<PatchSnap> patch_snaps_;
   std::array<int, 3> stand_in_{};  ///< no crack: the node of the centre plane on each axis
