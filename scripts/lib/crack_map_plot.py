@@ -5,7 +5,9 @@
                        have crack_spacetime.png and temperature_maps.png instead)
 
 Maps over (s1, s2), the position on the crack plane from its centre (s1 along the
-strike, s2 along t2 = -z), each contact cell at its node:
+strike, s2 along t2 = n x t1: -z for a crack containing z, the down-dip of a tilted one, its
+direction fitted from the cells' positions and named on the axis), each contact cell at its
+node:
  (a) the friction energy dissipated per unit area, W, at the last crack_state time;
  (b) the friction power per unit area averaged over the last source period recorded;
  (c) the time in contact over that period;
@@ -22,9 +24,13 @@ from run_data import Skip
 
 def _triangulation(s1, s2):
     """Delaunay triangles of the cells' nodes, without those bridging a gap of the lattice
-    (a staircase crack's notches): edges longer than 1.5 diagonals of the lattice are masked."""
+    (a staircase crack's notches): edges longer than 1.5 diagonals of the lattice are masked.
+    The lattice spacing is the largest distance from a node to its nearest neighbour (the
+    lattice's lines need not run along s1 and s2: a tilted, turned crack)."""
     tri = Triangulation(s1, s2)
-    spacing = min(np.min(np.diff(np.unique(np.round(v, 12)))) for v in (s1, s2))
+    d2 = (s1[:, None] - s1[None, :]) ** 2 + (s2[:, None] - s2[None, :]) ** 2
+    np.fill_diagonal(d2, np.inf)
+    spacing = np.sqrt(np.max(np.min(d2, axis=1)))
     x, y = s1[tri.triangles], s2[tri.triangles]
     longest = np.max(np.hypot(x - np.roll(x, 1, axis=1), y - np.roll(y, 1, axis=1)), axis=1)
     tri.set_mask(longest > 1.5 * np.sqrt(2) * spacing)
@@ -62,13 +68,25 @@ def _crack_plane_rise(run, x):
     return rise[nearest], len(names) - 1
 
 
-def _panel(fig, ax, tri, values, title, label, cmap="magma"):
+def _t2_name(x, s1, s2):
+    """The direction of s2 in space, fitted from the cells' positions x = centre + s1 t1 + s2 t2:
+    '-z' and the like along an axis, else its components."""
+    basis = np.column_stack([np.ones_like(s1), s1, s2])
+    t2 = np.linalg.lstsq(basis, x, rcond=None)[0][2]
+    t2 = t2 / np.linalg.norm(t2)
+    axis = int(np.argmax(np.abs(t2)))
+    if abs(abs(t2[axis]) - 1) < 1e-6:
+        return ("-" if t2[axis] < 0 else "+") + "xyz"[axis]
+    return "(%.2f, %.2f, %.2f)" % tuple(t2)
+
+
+def _panel(fig, ax, tri, values, title, label, t2, cmap="magma"):
     shading = ax.tripcolor(tri, values, shading="gouraud", cmap=cmap, vmin=0, vmax=max(np.nanmax(values), 1e-300))
     fig.colorbar(shading, ax=ax, label=label, shrink=0.85)
     ax.set_title(title, fontsize=10)
     ax.set_aspect("equal")
     ax.set_xlabel("s1 along the strike [mm]")
-    ax.set_ylabel("s2 along -z [mm]")
+    ax.set_ylabel("s2 along %s [mm]" % t2)
 
 
 def _crack_panels(fig, axes, run, crack_state, title):
@@ -87,15 +105,16 @@ def _crack_panels(fig, axes, run, crack_state, title):
         count[n] += 1
     power, contact = power / np.maximum(count, 1), contact / np.maximum(count, 1)
     x = np.column_stack([crack_state[c][last] for c in ("x", "y", "z")])
+    t2 = _t2_name(x, crack_state["s1"][last], crack_state["s2"][last])
     rise, output = _crack_plane_rise(run, x)
     t_last = crack_state["t"][-1]
     span = t_last - crack_state["t"][window].min()
     _panel(fig, axes[0], tri, crack_state["W"][last], "%s(a) dissipated friction energy W at t = %.4g ms"
-           % (title, t_last * 1e3), "W [J/m²]")
+           % (title, t_last * 1e3), "W [J/m²]", t2)
     _panel(fig, axes[1], tri, power, "%s(b) friction power, mean over the last %.3g µs" % (title, span * 1e6),
-           "power [W/m²]")
+           "power [W/m²]", t2)
     _panel(fig, axes[2], tri, contact, "%s(c) share of those records in contact" % title, "fraction in contact",
-           cmap="Blues")
+           t2, cmap="Blues")
     if rise is None:
         axes[3].set_axis_off()
         axes[3].text(0.5, 0.5, "no temperature field (give -output_times)", ha="center")
@@ -105,7 +124,7 @@ def _crack_panels(fig, axes, run, crack_state, title):
         except (Skip, IndexError):
             when = "output %d" % output
         _panel(fig, axes[3], tri, rise * 1e6, "%s(d) temperature rise on the crack plane at %s" % (title, when),
-               "rise [µK]", cmap="inferno")
+               "rise [µK]", t2, cmap="inferno")
     return last.sum()
 
 
