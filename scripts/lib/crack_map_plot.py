@@ -4,10 +4,10 @@
     figure(run)        the figure, or raises run_data.Skip (scripts/plot's list; 2D runs
                        have crack_spacetime.png and temperature_maps.png instead)
 
-Maps over (s1, s2), the position on the crack plane from its centre (s1 along the
-strike, s2 along t2 = n x t1: -z for a crack containing z, the down-dip of a tilted one, its
-direction fitted from the cells' positions and named on the axis), each contact cell at its
-node:
+Maps over (s1, s2), the position on the crack plane from its centre (s1 along t1, the
+strike, or x for a crack parallel to z = const; s2 along t2 = n x t1: -z for a crack
+containing z, the down-dip of a tilted one; both directions fitted from the cells' positions
+and named on the axes), each contact cell at its node:
  (a) the friction energy dissipated per unit area, W, at the last crack_state time;
  (b) the friction power per unit area averaged over the last source period recorded;
  (c) the time in contact over that period;
@@ -25,12 +25,15 @@ from run_data import Skip
 def _triangulation(s1, s2):
     """Delaunay triangles of the cells' nodes, without those bridging a gap of the lattice
     (a staircase crack's notches): edges longer than 1.5 diagonals of the lattice are masked.
-    The lattice spacing is the largest distance from a node to its nearest neighbour (the
+    The lattice spacing is the largest over the nodes of each one's shortest Delaunay edge (the
     lattice's lines need not run along s1 and s2: a tilted, turned crack)."""
     tri = Triangulation(s1, s2)
-    d2 = (s1[:, None] - s1[None, :]) ** 2 + (s2[:, None] - s2[None, :]) ** 2
-    np.fill_diagonal(d2, np.inf)
-    spacing = np.sqrt(np.max(np.min(d2, axis=1)))
+    i, j = tri.edges[:, 0], tri.edges[:, 1]
+    length = np.hypot(s1[i] - s1[j], s2[i] - s2[j])
+    shortest = np.full(len(s1), np.inf)
+    np.minimum.at(shortest, i, length)
+    np.minimum.at(shortest, j, length)
+    spacing = np.max(shortest)
     x, y = s1[tri.triangles], s2[tri.triangles]
     longest = np.max(np.hypot(x - np.roll(x, 1, axis=1), y - np.roll(y, 1, axis=1)), axis=1)
     tri.set_mask(longest > 1.5 * np.sqrt(2) * spacing)
@@ -68,25 +71,27 @@ def _crack_plane_rise(run, x):
     return rise[nearest], len(names) - 1
 
 
-def _t2_name(x, s1, s2):
-    """The direction of s2 in space, fitted from the cells' positions x = centre + s1 t1 + s2 t2:
-    '-z' and the like along an axis, else its components."""
+def _tangent_names(x, s1, s2):
+    """The directions of s1 and s2 in space, fitted from the cells' positions x = centre +
+    s1 t1 + s2 t2: '-z' and the like along an axis, else their components."""
     basis = np.column_stack([np.ones_like(s1), s1, s2])
-    t2 = np.linalg.lstsq(basis, x, rcond=None)[0][2]
-    t2 = t2 / np.linalg.norm(t2)
-    axis = int(np.argmax(np.abs(t2)))
-    if abs(abs(t2[axis]) - 1) < 1e-6:
-        return ("-" if t2[axis] < 0 else "+") + "xyz"[axis]
-    return "(%.2f, %.2f, %.2f)" % tuple(t2)
+    fit = np.linalg.lstsq(basis, x, rcond=None)[0]
+    names = []
+    for t in (fit[1], fit[2]):
+        t = t / np.linalg.norm(t)
+        axis = int(np.argmax(np.abs(t)))
+        names.append(("-" if t[axis] < 0 else "+") + "xyz"[axis] if abs(abs(t[axis]) - 1) < 1e-6
+                     else "(%.2f, %.2f, %.2f)" % tuple(t))
+    return names
 
 
-def _panel(fig, ax, tri, values, title, label, t2, cmap="magma"):
+def _panel(fig, ax, tri, values, title, label, tangents, cmap="magma"):
     shading = ax.tripcolor(tri, values, shading="gouraud", cmap=cmap, vmin=0, vmax=max(np.nanmax(values), 1e-300))
     fig.colorbar(shading, ax=ax, label=label, shrink=0.85)
     ax.set_title(title, fontsize=10)
     ax.set_aspect("equal")
-    ax.set_xlabel("s1 along the strike [mm]")
-    ax.set_ylabel("s2 along %s [mm]" % t2)
+    ax.set_xlabel("s1 along %s [mm]" % tangents[0])
+    ax.set_ylabel("s2 along %s [mm]" % tangents[1])
 
 
 def _crack_panels(fig, axes, run, crack_state, title):
@@ -105,7 +110,7 @@ def _crack_panels(fig, axes, run, crack_state, title):
         count[n] += 1
     power, contact = power / np.maximum(count, 1), contact / np.maximum(count, 1)
     x = np.column_stack([crack_state[c][last] for c in ("x", "y", "z")])
-    t2 = _t2_name(x, crack_state["s1"][last], crack_state["s2"][last])
+    t2 = _tangent_names(x, crack_state["s1"][last], crack_state["s2"][last])
     rise, output = _crack_plane_rise(run, x)
     t_last = crack_state["t"][-1]
     span = t_last - crack_state["t"][window].min()

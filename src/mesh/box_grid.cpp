@@ -60,7 +60,7 @@ struct Run {
   double last_cell() const { return cells.empty() ? 0.0 : (ends.back() - ends[ends.size() - 2]) / cells.back(); }
 };
 
-std::vector<Run> MergeSegments(std::vector<AxisSegment> segments) {
+std::vector<Run> MergeSegments(std::vector<AxisSegment> segments, int refine) {
   std::sort(segments.begin(), segments.end(), [](const AxisSegment& a, const AxisSegment& b) { return a.lo < b.lo; });
   std::vector<Run> runs;
   std::vector<std::vector<AxisSegment>> members;
@@ -79,7 +79,7 @@ std::vector<Run> MergeSegments(std::vector<AxisSegment> segments) {
       for (const AxisSegment& s : members[k])
         if (s.cells > 0 && s.lo <= r.ends[j] && s.hi >= r.ends[j + 1])
           n = std::max(n, static_cast<int>(std::ceil(s.cells * (r.ends[j + 1] - r.ends[j]) / (s.hi - s.lo) - 1e-6)));
-      r.cells.push_back(n);
+      r.cells.push_back(n * refine);  // the heat grid's cells nest in the wave grid's
     }
   }
   return runs;
@@ -89,6 +89,25 @@ std::vector<Run> MergeSegments(std::vector<AxisSegment> segments) {
 double HalfExtent(const Crack& c, int a) {
   const Crack::Axes axes = c.axes();
   return 0.5 * c.length * std::abs(axes.strike[a]) + 0.5 * c.width * std::abs(axes.up_dip[a]);
+}
+
+using Vec = std::array<double, 3>;
+double Dot(const Vec& u, const Vec& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+Vec Offset(const Crack& a, const Crack& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+/// The gap between two coplanar crack rectangles (< 0: they overlap): the largest of their
+/// separations along either one's strike and up-dip (separating axes: for two rectangles in a
+/// plane, one of those four separates them if anything does).
+double RectangleGap(const Crack& a, const Crack& b) {
+  const Crack::Axes ea = a.axes(), eb = b.axes();
+  const Vec r = Offset(a, b);
+  const auto half = [](const Crack& c, const Crack::Axes& e, const Vec& u) {
+    return 0.5 * c.length * std::abs(Dot(e.strike, u)) + 0.5 * c.width * std::abs(Dot(e.up_dip, u));
+  };
+  double gap = -INFINITY;
+  for (const Vec& u : {ea.strike, ea.up_dip, eb.strike, eb.up_dip})
+    gap = std::max(gap, std::abs(Dot(r, u)) - half(a, ea, u) - half(b, eb, u));
+  return gap;
 }
 
 /// The axis crack c's normal is nearest: y, else x, else z (a tie goes to the earlier).
@@ -118,14 +137,13 @@ CrackOutlineMap OutlineOf(const Crack& c, const std::array<int, 2>& in) {
   return map;
 }
 
-/// The index of the node at x (it must be one).
-int NodeAt(const std::vector<double>& nodes, double x) {
+}  // namespace
+
+int NearestNode(const std::vector<double>& nodes, double x) {
   const auto it = std::min_element(nodes.begin(), nodes.end(),
                                    [x](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
   return static_cast<int>(it - nodes.begin());
 }
-
-}  // namespace
 
 void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length) {
   std::vector<double> ends;
@@ -142,7 +160,7 @@ void SnapEnds(std::vector<AxisSegment>* segments, double snap, double length) {
 }
 
 std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& s) {
-  const std::vector<Run> runs = MergeSegments(std::move(segments));
+  const std::vector<Run> runs = MergeSegments(std::move(segments), s.refine);
   // Steps away from a run's end whose cell is `cell` (0: a plane, which gets h_crack or layers).
   const auto steps = [&](double distance, double cell) {
     return cell == 0.0 && s.first_layer > 0.0 ? LayeredSteps(distance, s.first_layer, s.growth, s.h_crack, s.h, s.grading)
@@ -249,39 +267,45 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   const bool cracked = !g.cracks.empty();
   // Without a crack a plane through the box's centre stands in for it: no cells on it,
   // no shear, no layers; every axis graded from -mesh_h on (uniform).
-  const BoxGridSizes s = cracked ? sizes : BoxGridSizes{sizes.h, sizes.h, sizes.grading};
+  BoxGridSizes s = cracked ? sizes : BoxGridSizes{sizes.h, sizes.h, sizes.grading};
   std::array<std::vector<AxisSegment>, 3> segments;
   for (const Plane& pl : planes_) segments[p_].push_back({pl.at, pl.at, 0});
-  // Along a crack, a whole number of cells per wave cell (the heat grid's nest in the wave
-  // grid's: the same staircase, and the friction heat's sub-squares exact).
-  const int per_wave_cell = std::max(1, static_cast<int>(std::lround(g.h_crack / s.h_crack)));
+  // Along a crack, a whole number of cells per wave cell, no larger than asked (the heat
+  // grid's nest in the wave grid's: the same staircase, and the friction heat's sub-squares
+  // exact).
+  s.refine = std::max(1, static_cast<int>(std::ceil(g.h_crack / s.h_crack - 1e-9)));
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
-    std::array<int, 2> outline{};
-    for (int k = 0; k < 2; ++k) {
-      const int a = in_[k];
+    for (int a : in_) {
       const double half = HalfExtent(c, a), centre = a == 0 ? c.x : a == 1 ? c.y : c.z;
       // Cells of -mesh_h_crack measured along the crack (by the larger of the strike's and
       // the up-dip's parts along this axis): the length's and the width's counts when aligned.
-      outline[k] = CellsAcross(2.0 * half / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
+      const int cells = CellsAcross(2.0 * half / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
       const bool through = a == 2 && through_thickness(c, g);  // ends exactly on the faces
-      segments[a].push_back({through ? 0.0 : centre - half, through ? g.depth : centre + half, per_wave_cell * outline[k]});
+      segments[a].push_back({through ? 0.0 : centre - half, through ? g.depth : centre + half, cells});
     }
-    cracks_.push_back({0, {}, {}, c.shape, outline, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_)});
+    cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {}});
   }
   if (!cracked)
     for (int a : in_) segments[a].push_back({0.5 * size_[a], 0.5 * size_[a], 0});
   // Crack ends closer than a third of the wave grid's crack cell share a grid line.
   for (int a : in_) SnapEnds(&segments[a], g.h_crack / 3.0, size_[a]);
   for (int a = 0; a < 3; ++a) nodes_[a] = AxisNodes(size_[a], segments[a], s);
-  for (int a = 0; a < 3 && !cracked; ++a) stand_in_[a] = NodeAt(nodes_[a], segments[a].front().lo);
+  for (int a = 0; a < 3 && !cracked; ++a) stand_in_[a] = NearestNode(nodes_[a], segments[a].front().lo);
+  // A staircase is decided on the wave grid's cells in the crack's range (its lattice), so a
+  // heat grid nested in them (refine) labels the same faces.
+  std::array<std::vector<double>, 2> wave_nodes;
+  for (int k = 0; k < 2; ++k) wave_nodes[k] = AxisNodes(size_[in_[k]], segments[in_[k]], {g.h_crack, g.h, g.grading});
   for (std::size_t k = 0; k < cracks_.size(); ++k) {
     CrackOnGrid& c = cracks_[k];
     c.plane = plane_of[k];
-    c.lo[p_] = c.hi[p_] = NodeAt(nodes_[p_], planes_[c.plane].at);
-    for (int a : in_) {
+    c.lo[p_] = c.hi[p_] = NearestNode(nodes_[p_], planes_[c.plane].at);
+    for (int j = 0; j < 2; ++j) {
+      const int a = in_[j];
       const AxisSegment& seg = segments[a][k];
-      c.lo[a] = NodeAt(nodes_[a], seg.lo), c.hi[a] = NodeAt(nodes_[a], seg.hi);
+      c.lo[a] = NearestNode(nodes_[a], seg.lo), c.hi[a] = NearestNode(nodes_[a], seg.hi);
+      const auto& w = wave_nodes[j];
+      if (c.staircase()) c.lattice[j].assign(w.begin() + NearestNode(w, seg.lo), w.begin() + NearestNode(w, seg.hi) + 1);
     }
   }
 }
@@ -307,6 +331,9 @@ void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const st
            "through the thickness, untilted with -crack_width = -specimen_depth centred at z = depth/2; extent x [",
            lo[0], ", ", hi[0], "], y [", lo[1], ", ", hi[1], "], z [", lo[2], ", ", hi[2], "] in [0, ", g.width,
            "] x [0, ", g.height, "] x [0, ", g.depth, "])");
+  if (c.tilt_deg != 0.0 && std::abs(c.width - g.depth) <= tol)
+    reject("-crack_tilt: a crack through the thickness (-crack_width = -specimen_depth) is untilted; a tilted ",
+           "crack is buried (-crack_width < -specimen_depth)", name);
   if (c.shape == CrackShape::Ellipse && through)
     reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack ",
            "through the thickness is a rectangle");
@@ -327,17 +354,15 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
     validate_crack(g, g.cracks[k], g.cracks.size() > 1 ? " (crack " + std::to_string(k + 1) + ")" : std::string());
   for (std::size_t i = 1; i < planes_.size(); ++i)
     if (planes_[i].at - planes_[i - 1].at < 2.0 * g.h_crack * (1.0 - 1e-9))
-      reject("-crack_center/-crack_angle: two crack planes lie ", planes_[i].at - planes_[i - 1].at, " m apart along ",
-             kAxisName[p_], " (at ", kAxisName[in_[0]], " = ", planes_[i].ref[0], " m); they need at least 2 ",
-             "cells of -mesh_h_crack (", g.h_crack, " m) between them, and two cracks on one plane must lie on one line");
+      reject("-crack_center/-crack_angle/-crack_tilt: two crack planes lie ", planes_[i].at - planes_[i - 1].at,
+             " m apart along ", kAxisName[p_], " (at ", kAxisName[in_[0]], " = ", planes_[i].ref[0], " m, ",
+             kAxisName[in_[1]], " = ", planes_[i].ref[1], " m); they need at least 2 ",
+             "cells of -mesh_h_crack (", g.h_crack, " m) between them, and cracks sharing a plane must lie exactly in it");
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
     for (std::size_t j = 0; j < i; ++j) {  // on one plane (the others are apart): their rectangles must not touch
       const Crack &a = g.cracks[i], &b = g.cracks[j];
-      const Crack::Axes axes = a.axes();
-      const std::array<double, 3> r = {a.x - b.x, a.y - b.y, a.z - b.z};
-      const auto dot = [&r](const std::array<double, 3>& u) { return std::abs(r[0] * u[0] + r[1] * u[1] + r[2] * u[2]); };
-      const double along = dot(axes.strike), up = dot(axes.up_dip), normal = dot(axes.normal);
-      const double gap = std::max(along - 0.5 * (a.length + b.length), up - 0.5 * (a.width + b.width));
+      const double normal = std::abs(Dot(Offset(a, b), a.axes().normal));
+      const double gap = RectangleGap(a, b);
       if (normal < 2.0 * g.h_crack && gap < g.h_crack * (1.0 - 1e-9))
         reject("-crack_center: cracks ", j + 1, " and ", i + 1, " overlap or come closer than one cell of ",
                "-mesh_h_crack (", g.h_crack, " m) on their plane (gap ", gap, " m)");
@@ -350,7 +375,7 @@ bool BoxGrid::through_thickness(const Crack& c, const SpecimenGeometry& g) {
 }
 
 double BoxGrid::offset(double xp, double x0, double x1) const {
-  // Plane i's offset o_i(x_q) weighted by cos² of the way to its neighbour (or the face).
+  // Plane i's offset o_i(x_a, x_b) weighted by cos² of the way to its neighbour (or the face).
   const auto above = std::upper_bound(planes_.begin(), planes_.end(), xp,
                                       [](double x, const Plane& pl) { return x < pl.at; });
   const auto weight = [&](const Plane& pl, double d) {
@@ -413,17 +438,19 @@ int BoxGrid::crack_at(const std::array<double, 3>& f) const {
 
 bool BoxGrid::inside_outline(const CrackOnGrid& c, const std::array<double, 3>& f) const {
   if (!c.staircase()) return true;
-  // The crack's bounding rectangle cut into the wave grid's uniform crack cells: the face
-  // is kept when the cell holding its centre (by position, so that the wave grid and the
-  // finer heat grid nested in it agree) has its centre in the outline.
+  // The face is kept when the lattice cell (the wave grid's, by position) holding its centre
+  // has its centre in the outline: the wave grid and a heat grid nested in it agree.
   std::array<double, 2> uv;
   for (int k = 0; k < 2; ++k) {
     const int a = in_[k];
     const std::size_t i = static_cast<std::size_t>(std::floor(f[a]));
     const double x = 0.5 * (nodes_[a][i] + nodes_[a][std::min(i + 1, nodes_[a].size() - 1)]);
-    const double lo = nodes_[a][c.lo[a]], hi = nodes_[a][c.hi[a]];
-    const double cell = std::floor((x - lo) / (hi - lo) * c.outline_cells[k]);
-    uv[k] = 2.0 * (cell + 0.5) / c.outline_cells[k] - 1.0;
+    const std::vector<double>& lattice = c.lattice[k];
+    const std::size_t cell = std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(lattice.begin(), lattice.end(), x) - lattice.begin()), 1,
+        lattice.size() - 1);
+    const double centre = 0.5 * (lattice[cell - 1] + lattice[cell]);
+    uv[k] = 2.0 * (centre - lattice.front()) / (lattice.back() - lattice.front()) - 1.0;
   }
   const auto [s, w] = c.outline.along_crack(uv);  // along the strike and the up-dip, ±1 on the edges
   if (c.shape == CrackShape::Ellipse) return s * s + w * w <= 1.0;

@@ -77,6 +77,12 @@ void BoxGrid::align_patch(const SpecimenGeometry& g) {
     std::vector<int> fixed = {0, cells(a)};
     for (const CrackOnGrid& c : cracks_) fixed.push_back(c.lo[a]), fixed.push_back(c.hi[a]);
     if (cracks_.empty()) fixed.push_back(stand_in_[a]);  // the centre plane standing in for a crack
+    // A staircase's lattice lines stay (its faces are decided per lattice cell): a bound
+    // between two of them splits the cell.
+    for (const CrackOnGrid& c : cracks_)
+      for (int j = 0; j < 2; ++j)
+        if (in_[j] == a)
+          for (double x : c.lattice[j]) fixed.push_back(NearestNode(nodes_[a], x));
     for (double bound : g.patch.bounds(k)) {
       const double raw = unsheared(a, n, far ? size_[n] : 0.0, bound);
       if (!std::isfinite(raw)) continue;

@@ -46,7 +46,7 @@ PetscErrorCode PrintCracks(MPI_Comm comm, const SpecimenGeometry& geometry, cons
       PetscCall(PetscPrintf(comm, "Meshing: crack %d: the elliptical crack is %" PetscInt_FMT " of its %d x %d "
                             "rectangle's faces: %.4g m2, %.4f of the ellipse's area\n", k + 1, mine, n1, n2, area,
                             area / (0.25 * M_PI * crack.length * crack.width)));
-    else if (mine < n1 * n2)  // tilted and turned: a parallelogram in the grid's axes
+    else if (grid.crack_staircase(k))  // tilted and turned: a parallelogram in the grid's axes
       PetscCall(PetscPrintf(comm, "Meshing: crack %d: the tilted crack is %" PetscInt_FMT " of its %d x %d "
                             "bounding rectangle's faces (a staircase): %.4g m2, %.4f of length x width\n", k + 1,
                             mine, n1, n2, area, area / (crack.length * crack.width)));

@@ -87,12 +87,28 @@ double DistanceToEllipse(double a, double b, double s, double t) {
 
 }  // namespace
 
+namespace {
+
+/// cos and sin of an angle in degrees, exact at multiples of 90° (cos 90° is 6e-17 in
+/// radians: a crack parallel to a face must have exactly zero slopes, not a shear of 1e-17).
+std::array<double, 2> CosSinDegrees(double degrees) {
+  const double quarter = degrees / 90.0;
+  if (quarter == std::round(quarter)) {
+    static constexpr double kCos[4] = {1.0, 0.0, -1.0, 0.0}, kSin[4] = {0.0, 1.0, 0.0, -1.0};
+    const int k = ((static_cast<int>(std::lround(std::fmod(quarter, 4.0))) % 4) + 4) % 4;
+    return {kCos[k], kSin[k]};
+  }
+  const double r = degrees * M_PI / 180.0;
+  return {std::cos(r), std::sin(r)};
+}
+
+}  // namespace
+
 Crack::Axes Crack::axes() const {
-  const double t = angle_deg * M_PI / 180.0, d = tilt_deg * M_PI / 180.0;
-  const std::array<double, 3> n0 = {-std::sin(t), std::cos(t), 0.0};
-  return {{std::cos(t), std::sin(t), 0.0},
-          {-std::sin(d) * n0[0], -std::sin(d) * n0[1], std::cos(d)},
-          {std::cos(d) * n0[0], std::cos(d) * n0[1], std::sin(d)}};
+  const auto [ct, st] = CosSinDegrees(angle_deg);
+  const auto [cd, sd] = CosSinDegrees(tilt_deg);
+  const std::array<double, 3> n0 = {-st, ct, 0.0};
+  return {{ct, st, 0.0}, {-sd * n0[0], -sd * n0[1], cd}, {cd * n0[0], cd * n0[1], sd}};
 }
 
 double Crack::distance_to(const std::array<double, 3>& p) const {

@@ -102,6 +102,22 @@ PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeom
   PetscFunctionReturn(0);
 }
 
+/// A per-crack option's values: none (not given), one for all the cracks, or one a crack.
+template <class T>
+PetscErrorCode CheckPerCrack(MPI_Comm comm, const char* option, const std::vector<T>& values, PetscInt ncracks) {
+  PetscFunctionBeginUser;
+  PetscCheck(values.size() <= 1 || static_cast<PetscInt>(values.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
+             "%s: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", option, values.size(),
+             ncracks);
+  PetscFunctionReturn(0);
+}
+
+/// Crack i's value of such a list (given).
+template <class T>
+T PerCrack(const std::vector<T>& values, PetscInt i) {
+  return values[values.size() == 1 ? 0 : static_cast<std::size_t>(i)];
+}
+
 }  // namespace
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
@@ -140,8 +156,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCheck(g->depth > 0.0 || !three_d_given, comm, PETSC_ERR_USER_INPUT,
              "%s applies to a 3D box only: give -specimen_depth > 0", three_d_given);
 
-  const PetscInt ncenters = static_cast<PetscInt>(centers.size()), nlengths = static_cast<PetscInt>(lengths.size()),
-                 nangles = static_cast<PetscInt>(angles.size());
+  const PetscInt ncenters = static_cast<PetscInt>(centers.size());
   const PetscInt dim = g->depth > 0.0 ? 3 : 2;
   PetscCheck(ncenters % dim == 0, comm, PETSC_ERR_USER_INPUT, "-crack_center needs %s (got %" PetscInt_FMT " values)",
              dim == 2 ? "x,y pairs" : "x,y,z triples in 3D", ncenters);
@@ -149,29 +164,22 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCheck(ncracks == 0 || has_lengths, comm, PETSC_ERR_USER_INPUT, "-crack_length is required with -crack_center");
   PetscCheck(ncracks > 0 || (!has_lengths && !has_angles), comm, PETSC_ERR_USER_INPUT,
              "-crack_length/-crack_angle given without -crack_center");
-  PetscCheck(nlengths == 1 || nlengths == ncracks || ncracks == 0, comm, PETSC_ERR_USER_INPUT,
-             "-crack_length: %" PetscInt_FMT " values for %" PetscInt_FMT " cracks", nlengths, ncracks);
-  PetscCheck(nangles <= 1 || nangles == ncracks, comm, PETSC_ERR_USER_INPUT,
-             "-crack_angle: %" PetscInt_FMT " values for %" PetscInt_FMT " cracks", nangles, ncracks);
-  PetscCheck(widths.size() <= 1 || static_cast<PetscInt>(widths.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
-             "-crack_width: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", widths.size(),
-             ncracks);
-  PetscCheck(tilts.size() <= 1 || static_cast<PetscInt>(tilts.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
-             "-crack_tilt: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", tilts.size(), ncracks);
-  PetscCheck(shapes.size() <= 1 || static_cast<PetscInt>(shapes.size()) == ncracks, comm, PETSC_ERR_USER_INPUT,
-             "-crack_shape: %zu values for %" PetscInt_FMT " cracks (one for all, or one a crack)", shapes.size(),
-             ncracks);
+  if (ncracks > 0) PetscCall(CheckPerCrack(comm, "-crack_length", lengths, ncracks));
+  PetscCall(CheckPerCrack(comm, "-crack_angle", angles, ncracks));
+  PetscCall(CheckPerCrack(comm, "-crack_width", widths, ncracks));
+  PetscCall(CheckPerCrack(comm, "-crack_tilt", tilts, ncracks));
+  PetscCall(CheckPerCrack(comm, "-crack_shape", shapes, ncracks));
   g->cracks.clear();
   for (PetscInt i = 0; i < ncracks; ++i) {
     Crack c;
     c.x = centers[dim * i];
     c.y = centers[dim * i + 1];
     if (dim == 3) c.z = centers[dim * i + 2];
-    if (!widths.empty()) c.width = widths[widths.size() == 1 ? 0 : static_cast<std::size_t>(i)];
-    if (!tilts.empty()) c.tilt_deg = tilts[tilts.size() == 1 ? 0 : static_cast<std::size_t>(i)];
-    c.length = lengths[nlengths == 1 ? 0 : i];
-    c.angle_deg = nangles == 0 ? 0.0 : angles[nangles == 1 ? 0 : i];
-    if (!shapes.empty()) c.shape = static_cast<CrackShape>(shapes[shapes.size() == 1 ? 0 : static_cast<std::size_t>(i)]);
+    if (!widths.empty()) c.width = PerCrack(widths, i);
+    if (!tilts.empty()) c.tilt_deg = PerCrack(tilts, i);
+    c.length = PerCrack(lengths, i);
+    if (!angles.empty()) c.angle_deg = PerCrack(angles, i);
+    if (!shapes.empty()) c.shape = static_cast<CrackShape>(PerCrack(shapes, i));
     g->cracks.push_back(c);
   }
   if (dim == 3) VibrothermCallCpp(comm, (void)BoxGrid(*g));

@@ -341,20 +341,26 @@ TEST(SeveralCracks, SnapChainsAndFacesStay) {
 
 TEST(SeveralCracks, FaceSubdivisionsFollowUnevenCells) {
   // Extents overlapping along x on two planes (7-13 and 9.5-15.5 mm) make uneven wave cells
-  // (0.833 and 0.875 mm) under the heat grid's halves (0.5 mm): no m <= 16 nests them
-  // (5 and 7 would be needed), which the cell totals alone would miss.
+  // (0.833 and 0.875 mm); the heat grid halves each of them (refine 2), so 4 sub-squares
+  // nest it exactly.
   mesh::SpecimenGeometry g = Block(0.0);
   mesh::Crack a = g.cracks[0], b = g.cracks[0];
   a.x = 0.010, a.y = 0.007, b.x = 0.0125, b.y = 0.013;
   g.cracks = {a, b};
-  const mesh::BoxGrid wave(g), heat(g, mesh::BoxGridSizes{0.0005, g.h, g.grading, 1e-5, 1.5});
-  bool exact = true;
-  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave, heat, &exact), 16);
-  EXPECT_FALSE(exact);
-  g.cracks = {a};  // one crack: the halves nest in 4
-  const mesh::BoxGrid wave1(g), heat1(g, mesh::BoxGridSizes{0.0005, g.h, g.grading, 1e-5, 1.5});
-  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave1, heat1, &exact), 4);
+  const mesh::BoxGridSizes halves{0.0005, g.h, g.grading, 1e-5, 1.5};
+  const mesh::BoxGrid wave(g), heat(g, halves);
+  bool exact = false;
+  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave, heat, &exact), 4);
   EXPECT_TRUE(exact);
+  // A transducer patch bound over a rectangular crack (x = 9.3 mm) moves the nearest crack
+  // line of each grid (9 mm in the wave grid, 9.5 mm in the heat grid) and stretches the
+  // others: no m <= 16 nests them, which the cell totals alone would miss.
+  g.cracks = {a};
+  g.edges[static_cast<int>(mesh::Side::Top)] = mesh::EdgeKind::Free;
+  g.patch = {true, mesh::Side::Top, 0.0113, 0.004, 0.005, 0.01};
+  const mesh::BoxGrid wave1(g), heat1(g, halves);
+  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave1, heat1, &exact), 16);
+  EXPECT_FALSE(exact);
 }
 
 TEST(TiltedCrack, UnturnedIsTheExactRectangleOnItsPlane) {
@@ -382,7 +388,7 @@ TEST(TiltedCrack, UnturnedIsTheExactRectangleOnItsPlane) {
 /// The faces of dm on crack c's plane whose centroids lie in its L × W rectangle, counted
 /// from their 3D centroids and the crack's strike and up-dip written out here; and whether
 /// every such face, and no other, carries the crack label.
-void StaircaseOf(DM dm, const mesh::Crack& c, PetscInt* faces, bool* labels_agree) {
+void StaircaseOf(DM dm, const mesh::Crack& c, PetscInt* faces, bool* labels_agree, PetscInt label = 1) {
   const double t = c.angle_deg * M_PI / 180.0, d = c.tilt_deg * M_PI / 180.0;
   const double s[3] = {std::cos(t), std::sin(t), 0.0};
   const double w[3] = {std::sin(d) * std::sin(t), -std::sin(d) * std::cos(t), std::cos(d)};
@@ -401,7 +407,7 @@ void StaircaseOf(DM dm, const mesh::Crack& c, PetscInt* faces, bool* labels_agre
     const auto dot = [&r](const auto& u) { return r[0] * u[0] + r[1] * u[1] + r[2] * u[2]; };
     const bool in = std::abs(dot(n)) < 1e-9 && std::abs(dot(s)) <= 0.5 * c.length && std::abs(dot(w)) <= 0.5 * c.width;
     *faces += in;
-    if (in != (k == 1)) *labels_agree = false;
+    if (in != (k == label)) *labels_agree = false;
   }
 }
 
@@ -432,6 +438,45 @@ TEST(TiltedCrack, TurnedIsTheStaircaseOfItsRectangle) {
   EXPECT_EQ(total, 4 * expected);  // the heat grid's halves tile the wave staircase
   EXPECT_NEAR(LabelledCracks(dm, g)[0].area, l.area, 1e-15);
   DMDestroy(&dm);
+}
+
+TEST(TiltedCrack, StaircaseNestsBesideAnotherCrackAndUnderAPatch) {
+  // Two parallel cracks at 30° tilted by 20°, 4 mm apart along their normal and shifted
+  // 2.5 mm along x: their extents overlap, so the wave cells over each are uneven. Each
+  // crack is still the staircase of the wave faces whose centroids lie in its rectangle, and
+  // the heat grid halves every wave face (4 heat faces each, the same area).
+  mesh::SpecimenGeometry g = Block(30.0);
+  g.width = 0.04, g.height = 0.04, g.depth = 0.04, g.h_crack = 0.0005;
+  mesh::Crack a = g.cracks[0];
+  a.x = 0.02, a.y = 0.02, a.z = 0.02, a.length = 0.008, a.width = 0.006, a.tilt_deg = 20.0;
+  mesh::Crack b = a;
+  b.x = 0.02062, b.y = 0.023256, b.z = 0.021368;
+  g.cracks = {a, b};
+  const auto check = [&](const mesh::SpecimenGeometry& geometry, const char* what) {
+    const mesh::BoxGrid wave(geometry), heat(geometry, mesh::BoxGridSizes{0.5 * g.h_crack, g.h, g.grading, 1e-5, 1.5});
+    DM dm, heat_dm;
+    PetscInt total, heat_total;
+    ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, geometry, wave, &dm, &total), 0);
+    ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, geometry, heat, &heat_dm, &heat_total), 0);
+    const std::vector<LabelledCrack> w = LabelledCracks(dm, geometry), h = LabelledCracks(heat_dm, geometry);
+    for (std::size_t k = 0; k < geometry.cracks.size(); ++k) {
+      PetscInt expected;
+      bool agree;
+      StaircaseOf(dm, geometry.cracks[k], &expected, &agree, static_cast<PetscInt>(k + 1));
+      EXPECT_TRUE(agree) << what << ": crack " << k + 1 << "'s labelled faces differ from those in its rectangle";
+      EXPECT_EQ(w[k].faces, expected) << what << ": crack " << k + 1;
+      EXPECT_EQ(h[k].faces, 4 * w[k].faces) << what << ": crack " << k + 1;
+      EXPECT_NEAR(h[k].area, w[k].area, 1e-15) << what << ": crack " << k + 1;
+    }
+    DMDestroy(&dm);
+    DMDestroy(&heat_dm);
+  };
+  check(g, "two cracks");
+  // One crack under a transducer patch whose x bound (18.3 mm) falls inside its range.
+  g.cracks = {a};
+  g.edges[static_cast<int>(mesh::Side::Top)] = mesh::EdgeKind::Free;
+  g.patch = {true, mesh::Side::Top, 0.0203, 0.004, 0.02, 0.01};
+  check(g, "patch");
 }
 
 TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
@@ -473,6 +518,14 @@ TEST(BoxSpecimenInput, BadGeometryNamesTheOption) {
   EXPECT_NE(message(g).find("-crack_tilt must lie in"), std::string::npos) << message(g);
   g.cracks[0].tilt_deg = 45.0, g.cracks[0].y = 0.001;  // untilted it is buried; tilted it leaves through y = 0
   EXPECT_NE(message(g).find("-crack_tilt: the crack reaches the outside"), std::string::npos) << message(g);
+  g = Block(0.0);
+  g.cracks[0].tilt_deg = 10.0, g.cracks[0].width = g.depth;  // meant through the thickness
+  EXPECT_NE(message(g).find("-crack_tilt: a crack through the thickness"), std::string::npos) << message(g);
+  g = Block(0.0);  // two cracks parallel to the front face, one turned across the other
+  g.cracks[0].tilt_deg = 90.0, g.cracks[0].length = 0.006, g.cracks[0].width = 0.004;
+  g.cracks.push_back(g.cracks[0]);
+  g.cracks[1].x = 0.015, g.cracks[1].angle_deg = 90.0, g.cracks[1].length = 0.002, g.cracks[1].width = 0.008;
+  EXPECT_NE(message(g).find("cracks 1 and 2 overlap"), std::string::npos) << message(g);
   g = Block(0.0);
   g.cracks[0].tilt_deg = 40.0, g.cracks[0].y = 0.004;  // sheared along y by 3 mm, 4 mm from the face y = 0
   EXPECT_NE(message(g).find("without folding"), std::string::npos) << message(g);

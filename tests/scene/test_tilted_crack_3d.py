@@ -24,8 +24,11 @@ two runs (grid planes normal to z and to y) dissipate the same energy (within 1e
 many contact cells, and probes agree once turned (u_x, T equal, u_y(B) = u_z(A), u_z(B) =
 -u_y(A), within 1e-6 of the amplitude; a probe at the crack centre: T only, since which face
 holds a point on the crack is the locator's choice).
-Bad input, refused in one line naming the option: a tilt above 45 degrees, a tilted crack that
-leaves the box, a -crack_tilt list of the wrong length, -crack_tilt in 2D.
+A transducer patch on the left face of the delamination's box has exactly its requested area
+(the grid is unsheared along z there: the slopes of a crack at 90 degrees are exactly 0).
+Bad input, refused in one line naming the option: a tilt above 90 degrees, a tilted crack that
+leaves the box, a tilted crack through the thickness, a -crack_tilt list of the wrong length,
+-crack_tilt in 2D.
 
 usage: test_tilted_crack_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, math, os, sys, tempfile
@@ -99,6 +102,14 @@ def check_delamination(tmp):
                   "delamination probe %d: %s against the turned box's %s differs by %.3g of %.3g"
                   % (k, name_a, name_b, worst, scale))
     print("delamination: dissipated %.12g J, turned box %.12g J" % (sa["dissipated_energy"], sb["dissipated_energy"]))
+    patch = os.path.join(tmp, "flat_patch")
+    if run_scene(check, exe, a[:-2] + ["-edge_front", "absorbing", "-edge_left", "free", "-source_patch_edge", "left",
+                                       "-source_patch_center",
+                                       "0.0043,0.0022", "-source_patch_width", "0.0041,0.0023", "-final_time", "2e-7",
+                                       "-heat", "off"], patch):
+        area = json.load(open(os.path.join(patch, "summary.json")))["mesh"]["source_area"]
+        check(abs(area / (0.0041 * 0.0023) - 1) < 1e-12, "patch on the left face: area %.12g of %.12g"
+              % (area, 0.0041 * 0.0023))
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -136,6 +147,8 @@ with tempfile.TemporaryDirectory() as tmp:
     refused(check, exe, base, ["-crack_tilt", "45", "-crack_center", "0.01,0.001,0.005", "-crack_angle", "0"],
             os.path.join(tmp, "outside"), "-crack_tilt", "reaches the outside")
     refused(check, exe, base, ["-crack_tilt", "10,20"], os.path.join(tmp, "list"), "-crack_tilt", "2 values")
+    refused(check, exe, base, ["-crack_tilt", "10", "-crack_width", "0.01"], os.path.join(tmp, "through"),
+            "-crack_tilt", "through the thickness")
     refused(check, exe, ["-options_file", os.path.join(src, "options/paper.opts")], ["-crack_tilt", "10"],
             os.path.join(tmp, "twod"), "-crack_tilt", "3D box only")
 check.finish()

@@ -42,6 +42,7 @@ namespace vibrotherm::mesh {
 struct BoxGridSizes {
   double h_crack, h, grading;
   double first_layer = 0.0, growth = 1.0;
+  int refine = 1;  ///< cells per cell of the segments' counts in the cracks' runs (the heat grid's, nested)
 };
 
 /// A stretch of one axis that is meshed uniformly: [lo, hi] in `cells` cells, or a
@@ -88,6 +89,9 @@ class BoxGrid {
   /// of the wave grid's faces whose centres lie in its outline.
   int crack_at(const std::array<double, 3>& f) const;
   int crack_count() const { return static_cast<int>(cracks_.size()); }
+  /// Whether crack k is a staircase of its bounding rectangle's faces (an ellipse, or a
+  /// rectangle tilted and turned), not that rectangle.
+  bool crack_staircase(int crack) const { return cracks_.at(crack).staircase(); }
   /// Crack k's grid lines (unsheared) along the grid planes' first in-plane axis (along = 0:
   /// x, or y for planes normal to x) or second (1: z, or y for planes normal to z).
   std::vector<double> crack_nodes(int crack, int along) const;
@@ -126,9 +130,11 @@ class BoxGrid {
     int plane;
     std::array<int, 3> lo, hi;
     CrackShape shape;
-    std::array<int, 2> outline_cells;  ///< the wave grid's cells along the in-plane axes (the staircase)
     double area_per_cell;              ///< crack area per unit of in-plane cell area (1/|n_p|)
     CrackOutlineMap outline;
+    /// A staircase's lattice: the wave grid's lines over its range along each in-plane axis,
+    /// before a transducer patch (which may only add lines between them).
+    std::array<std::vector<double>, 2> lattice;
     bool staircase() const { return shape != CrackShape::Rectangle || !outline.aligned(); }
   };
   void validate(const SpecimenGeometry& g) const;
@@ -173,8 +179,12 @@ double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double tar
 /// it), and outside them a spacing that starts at the nearest run's cell and grows by
 /// sizes.grading per metre of distance up to sizes.h (between two runs, from both, meeting
 /// half way). sizes.first_layer > 0: geometric layers from first_layer by sizes.growth up
-/// to sizes.h_crack on each side of a plane.
+/// to sizes.h_crack on each side of a plane. Each sub-interval of a run gets sizes.refine
+/// times its cells (a grid nested in the one of refine 1).
 std::vector<double> AxisNodes(double length, std::vector<AxisSegment> segments, const BoxGridSizes& sizes);
+
+/// The index of the node of `nodes` nearest x (x is meant to be one).
+int NearestNode(const std::vector<double>& nodes, double x);
 
 /// Moves segment ends within `snap` of the smallest end of their group (sorted ends each
 /// within `snap` of the next) onto it: one grid line, not a sliver cell. Ends on the faces
