@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "vibrotherm/geometry/point.hpp"
+
 namespace vibrotherm::mesh {
 namespace {
 
@@ -91,22 +93,18 @@ double HalfExtent(const Crack& c, int a) {
   return 0.5 * c.length * std::abs(axes.strike[a]) + 0.5 * c.width * std::abs(axes.up_dip[a]);
 }
 
-using Vec = std::array<double, 3>;
-double Dot(const Vec& u, const Vec& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
-Vec Offset(const Crack& a, const Crack& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-
 /// The gap between two coplanar crack rectangles (< 0: they overlap): the largest of their
 /// separations along either one's strike and up-dip (separating axes: for two rectangles in a
 /// plane, one of those four separates them if anything does).
 double RectangleGap(const Crack& a, const Crack& b) {
   const Crack::Axes ea = a.axes(), eb = b.axes();
-  const Vec r = Offset(a, b);
-  const auto half = [](const Crack& c, const Crack::Axes& e, const Vec& u) {
-    return 0.5 * c.length * std::abs(Dot(e.strike, u)) + 0.5 * c.width * std::abs(Dot(e.up_dip, u));
+  const geometry::Vec3 r = geometry::Sub(a.centre(), b.centre());
+  const auto half = [](const Crack& c, const Crack::Axes& e, const geometry::Vec3& u) {
+    return 0.5 * c.length * std::abs(geometry::Dot(e.strike, u)) + 0.5 * c.width * std::abs(geometry::Dot(e.up_dip, u));
   };
   double gap = -INFINITY;
-  for (const Vec& u : {ea.strike, ea.up_dip, eb.strike, eb.up_dip})
-    gap = std::max(gap, std::abs(Dot(r, u)) - half(a, ea, u) - half(b, eb, u));
+  for (const geometry::Vec3& u : {ea.strike, ea.up_dip, eb.strike, eb.up_dip})
+    gap = std::max(gap, std::abs(geometry::Dot(r, u)) - half(a, ea, u) - half(b, eb, u));
   return gap;
 }
 
@@ -218,18 +216,17 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
 
 void BoxGrid::find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of) {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
-  const auto coordinate = [](const Crack& c, int a) { return a == 0 ? c.x : a == 1 ? c.y : c.z; };
   const auto rise = [](const std::array<double, 2>& m, const std::array<double, 2>& from,
                        const std::array<double, 2>& to) { return m[0] * (to[0] - from[0]) + m[1] * (to[1] - from[1]); };
   // Each plane's x_p at the first crack's in-plane coordinates: the planes' unsheared
   // positions and their spacing are compared there (one crack: its centre).
-  const std::array<double, 2> ref = {g.cracks.empty() ? 0.0 : coordinate(g.cracks.front(), in_[0]),
-                                     g.cracks.empty() ? 0.0 : coordinate(g.cracks.front(), in_[1])};
+  const std::array<double, 2> ref = {g.cracks.empty() ? 0.0 : g.cracks.front().centre()[in_[0]],
+                                     g.cracks.empty() ? 0.0 : g.cracks.front().centre()[in_[1]]};
   for (const Crack& c : g.cracks) {
     const auto n = c.axes().normal;
     const std::array<double, 2> slope = {-n[in_[0]] / n[p_], -n[in_[1]] / n[p_]};
-    const std::array<double, 2> centre = {coordinate(c, in_[0]), coordinate(c, in_[1])};
-    const double cp = coordinate(c, p_);
+    const std::array<double, 2> centre = {c.centre()[in_[0]], c.centre()[in_[1]]};
+    const double cp = c.centre()[p_];
     int found = -1;
     for (std::size_t i = 0; i < planes_.size() && found < 0; ++i) {
       const Plane& pl = planes_[i];
@@ -277,7 +274,7 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
     for (int a : in_) {
-      const double half = HalfExtent(c, a), centre = a == 0 ? c.x : a == 1 ? c.y : c.z;
+      const double half = HalfExtent(c, a), centre = c.centre()[a];
       // Cells of -mesh_h_crack measured along the crack (by the larger of the strike's and
       // the up-dip's parts along this axis): the length's and the width's counts when aligned.
       const int cells = CellsAcross(2.0 * half / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
@@ -313,16 +310,10 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
 void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const std::string& name) const {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
   if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width, name);
-  // Its corners centre ± (L/2) s ± (W/2) w: buried in x-y; in z buried, or exactly [0, D]
-  // (through the thickness, untilted: a plane-strain slab's crack).
-  const Crack::Axes axes = c.axes();
-  std::array<double, 3> lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
-  for (double i : {-0.5, 0.5})
-    for (double j : {-0.5, 0.5})
-      for (int a = 0; a < 3; ++a) {
-        const double x = (a == 0 ? c.x : a == 1 ? c.y : c.z) + i * c.length * axes.strike[a] + j * c.width * axes.up_dip[a];
-        lo[a] = std::min(lo[a], x), hi[a] = std::max(hi[a], x);
-      }
+  // Its bounding box (of the corners centre ± (L/2) s ± (W/2) w): buried in x-y; in z
+  // buried, or exactly [0, D] (through the thickness, untilted: a plane-strain slab's crack).
+  std::array<double, 3> lo, hi;
+  for (int a = 0; a < 3; ++a) lo[a] = c.centre()[a] - HalfExtent(c, a), hi[a] = c.centre()[a] + HalfExtent(c, a);
   const bool inside_box = std::min(lo[0], lo[1]) > tol && hi[0] < g.width - tol && hi[1] < g.height - tol;
   const bool through = through_thickness(c, g), z_ok = (lo[2] > tol && hi[2] < g.depth - tol) || through;
   if (!inside_box || !z_ok)
@@ -361,7 +352,7 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
     for (std::size_t j = 0; j < i; ++j) {  // on one plane (the others are apart): their rectangles must not touch
       const Crack &a = g.cracks[i], &b = g.cracks[j];
-      const double normal = std::abs(Dot(Offset(a, b), a.axes().normal));
+      const double normal = std::abs(geometry::Dot(geometry::Sub(a.centre(), b.centre()), a.axes().normal));
       const double gap = RectangleGap(a, b);
       if (normal < 2.0 * g.h_crack && gap < g.h_crack * (1.0 - 1e-9))
         reject("-crack_center: cracks ", j + 1, " and ", i + 1, " overlap or come closer than one cell of ",

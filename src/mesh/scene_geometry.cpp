@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "vibrotherm/geometry/point.hpp"
+
 namespace vibrotherm::mesh {
 
 const char* to_string(EdgeKind kind) {
@@ -85,10 +87,6 @@ double DistanceToEllipse(double a, double b, double s, double t) {
   return std::sqrt(d2(0.5 * (lo + hi)));
 }
 
-}  // namespace
-
-namespace {
-
 /// cos and sin of an angle in degrees, exact at multiples of 90° (cos 90° is 6e-17 in
 /// radians: a crack parallel to a face must have exactly zero slopes, not a shear of 1e-17).
 std::array<double, 2> CosSinDegrees(double degrees) {
@@ -113,9 +111,8 @@ Crack::Axes Crack::axes() const {
 
 double Crack::distance_to(const std::array<double, 3>& p) const {
   const Axes a = axes();
-  const std::array<double, 3> r = {p[0] - x, p[1] - y, p[2] - z};
-  const auto dot = [&r](const std::array<double, 3>& u) { return r[0] * u[0] + r[1] * u[1] + r[2] * u[2]; };
-  const double along = dot(a.strike), up = dot(a.up_dip), normal = dot(a.normal);
+  const geometry::Vec3 r = geometry::Sub(p, centre());
+  const double along = geometry::Dot(r, a.strike), up = geometry::Dot(r, a.up_dip), normal = geometry::Dot(r, a.normal);
   double in_plane;
   if (shape == CrackShape::Ellipse) {
     in_plane = DistanceToEllipse(0.5 * length, 0.5 * width, along, up);

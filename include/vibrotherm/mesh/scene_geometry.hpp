@@ -50,6 +50,8 @@ struct Crack {
     std::array<double, 3> strike, up_dip, normal;
   };
   Axes axes() const;
+  /// 3D: the centre (x, y, z).
+  std::array<double, 3> centre() const { return {x, y, z}; }
   /// End points: centre ∓ (L/2)(cos θ, sin θ); tangent s from end 0 to end 1.
   std::array<double, 2> end(int which) const;
   /// 3D: distance from p to the crack's rectangle (centre ± (L/2) s ± (W/2) w, axes())

@@ -3,6 +3,20 @@
 #include <algorithm>
 
 namespace vibrotherm {
+namespace {
+
+/// The index of `value` in `names`, or a one-line user error naming the option.
+PetscErrorCode ChoiceIndex(MPI_Comm comm, const char* option, const std::string& value,
+                           const std::vector<std::string>& names, PetscInt* index) {
+  PetscFunctionBeginUser;
+  const auto it = std::find(names.begin(), names.end(), value);
+  PetscCheck(it != names.end(), comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option,
+             value.c_str(), JoinChoices(names).c_str());
+  *index = static_cast<PetscInt>(it - names.begin());
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
 
 std::string JoinChoices(const std::vector<std::string>& names) {
   std::string joined;
@@ -18,9 +32,8 @@ PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* o
   PetscBool given = PETSC_FALSE;
   PetscCall(PetscOptionsGetString(PetscOptionsObject->options, PetscOptionsObject->prefix, option, value,
                                   sizeof(value), &given));
-  if (given && std::find(names.begin(), names.end(), std::string(value)) == names.end())
-    SETERRQ(PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option, value,
-            JoinChoices(names).c_str());
+  PetscInt checked;
+  if (given) PetscCall(ChoiceIndex(PetscOptionsObject->comm, option, value, names, &checked));
   std::vector<const char*> list;
   for (const std::string& n : names) list.push_back(n.c_str());
   const std::string text = std::string(help) + " (" + JoinChoices(names) + ")";
@@ -44,11 +57,9 @@ PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const cha
   for (std::size_t start = 0;;) {
     const std::size_t comma = rest.find(',', start);
     const std::string item = rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const auto it = std::find(names.begin(), names.end(), item);
-    if (it == names.end())
-      SETERRQ(PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: unknown value '%s' (known: %s)", option,
-              item.c_str(), JoinChoices(names).c_str());
-    indices->push_back(static_cast<PetscInt>(it - names.begin()));
+    PetscInt index;
+    PetscCall(ChoiceIndex(PetscOptionsObject->comm, option, item, names, &index));
+    indices->push_back(index);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
