@@ -271,6 +271,7 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   // grid's nest in the wave grid's: the same staircase, and the friction heat's sub-squares
   // exact).
   s.refine = std::max(1, static_cast<int>(std::ceil(g.h_crack / s.h_crack - 1e-9)));
+  refine_ = s.refine;
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
     for (int a : in_) {

@@ -3,21 +3,27 @@
 // requested rectangle (box_patch_labels.cpp labels them).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "vibrotherm/mesh/box_grid.hpp"
 
 namespace vibrotherm::mesh {
 
-double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol) {
+double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol,
+                 const std::function<bool(int)>& is_line) {
   std::vector<double>& x = *nodes;
   const auto is_fixed = [&](int i) { return std::find(fixed->begin(), fixed->end(), i) != fixed->end(); };
+  const auto line = [&](int i) { return !is_line || is_fixed(i) || is_line(i); };
   const int last = static_cast<int>(x.size()) - 1;
   const int above = std::clamp(static_cast<int>(std::lower_bound(x.begin(), x.end(), target) - x.begin()), 1, last);
-  int near = above, far = above - 1;  // target in [x[above − 1], x[above]]
+  int far = above - 1, near = above;  // the lines around the target: [x[far], x[near]] ∋ target
+  while (far > 0 && !line(far)) --far;
+  while (near < last && !line(near)) ++near;
+  const double cell = x[near] - x[far];
   if (target - x[far] < x[near] - target) std::swap(near, far);
   // A fixed node (the crack's edge, a face, the other bound) within a third of the cell
   // stays the bound: a sliver cell would shrink the stable time step as much.
-  const double reach = is_fixed(near) ? std::max(tol, (x[above] - x[above - 1]) / 3.0) : tol;
+  const double reach = is_fixed(near) ? std::max(tol, cell / 3.0) : tol;
   if (std::abs(x[near] - target) <= reach) {
     if (!is_fixed(near)) x[near] = target;
     fixed->push_back(near);
@@ -83,10 +89,19 @@ void BoxGrid::align_patch(const SpecimenGeometry& g) {
       for (int j = 0; j < 2; ++j)
         if (in_[j] == a)
           for (double x : c.lattice[j]) fixed.push_back(NearestNode(nodes_[a], x));
+    // In a heat grid nested in the wave grid (refine_ > 1) only the wave grid's lines inside
+    // a crack's range move: the stretch between them keeps the crack faces nested.
+    const auto wave_line = [&](int i) {
+      for (std::size_t j = 0; j < cracks_.size(); ++j) {
+        const int lo = fixed[2 + 2 * j], hi = fixed[3 + 2 * j];
+        if (i > lo && i < hi && (i - lo) % refine_ != 0) return false;
+      }
+      return true;
+    };
     for (double bound : g.patch.bounds(k)) {
       const double raw = unsheared(a, n, far ? size_[n] : 0.0, bound);
       if (!std::isfinite(raw)) continue;
-      const double line = AlignNode(&nodes_[a], &fixed, raw, 1e-9 * size_[a]);
+      const double line = AlignNode(&nodes_[a], &fixed, raw, 1e-9 * size_[a], wave_line);
       if (std::abs(line - raw) > 1e-9 * size_[a]) patch_snaps_.push_back({a, raw, line});
     }
     for (std::size_t j = 0; j < cracks_.size(); ++j) cracks_[j].lo[a] = fixed[2 + 2 * j], cracks_[j].hi[a] = fixed[3 + 2 * j];

@@ -2,7 +2,8 @@
 // lines on its bounds (box_patch_grid.cpp):
 //  - AlignNode moves the nearest free node (the others between its fixed neighbours
 //    stretched, fixed ones untouched), keeps a fixed node within a third of a cell,
-//    splits a cell whose two ends are fixed;
+//    splits a cell whose two ends are fixed; in a grid nested in a coarser one it moves
+//    only the coarser grid's lines, and the nesting stays;
 //  - on every face, for a crack sheared into a horizontal (20°) and a vertical (70°)
 //    grid plane, each bound is the physical position of a grid line of that face (on a
 //    face the shear moves, through its inverse), except along the sheared axis of the
@@ -34,6 +35,20 @@ TEST(AlignNode, MovesSnapsOrSplits) {
   EXPECT_DOUBLE_EQ(mesh::AlignNode(&y, &ends, 0.5, 1e-12), 0.5);  // both ends fixed: a new node
   EXPECT_EQ(y, (std::vector<double>{0.0, 0.5, 1.0, 2.0}));
   EXPECT_EQ(ends, (std::vector<int>{0, 2, 3, 1}));
+}
+
+TEST(AlignNode, MovesOnlyTheCoarserGridsLinesInANestedGrid) {
+  // A grid halving cells of 2 (its even nodes are the coarser grid's lines): 3.3 lies
+  // between lines 2 and 4; line 4 moves (node 3, nearer, is no line) and every node
+  // between the fixed ones stretches, so the halves stay halves.
+  std::vector<double> x = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  std::vector<int> fixed = {0, 8};
+  const auto even = [](int i) { return i % 2 == 0; };
+  EXPECT_DOUBLE_EQ(mesh::AlignNode(&x, &fixed, 3.3, 1e-12, even), 3.3);
+  EXPECT_DOUBLE_EQ(x[4], 3.3);
+  for (int i = 1; i < 8; i += 2) EXPECT_NEAR(x[i], 0.5 * (x[i - 1] + x[i + 1]), 1e-15) << "node " << i;
+  // Within a third of the coarser cell of a fixed line, the fixed line is the bound.
+  EXPECT_DOUBLE_EQ(mesh::AlignNode(&x, &fixed, 3.3 + 0.3 * (x[6] - 3.3), 1e-12, even), 3.3);
 }
 
 mesh::SpecimenGeometry PatchBlock(double angle, mesh::Side side) {

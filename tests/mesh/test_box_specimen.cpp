@@ -352,15 +352,27 @@ TEST(SeveralCracks, FaceSubdivisionsFollowUnevenCells) {
   bool exact = false;
   EXPECT_EQ(mesh::CrackFaceSubdivisions(wave, heat, &exact), 4);
   EXPECT_TRUE(exact);
-  // A transducer patch bound over a rectangular crack (x = 9.3 mm) moves the nearest crack
-  // line of each grid (9 mm in the wave grid, 9.5 mm in the heat grid) and stretches the
-  // others: no m <= 16 nests them, which the cell totals alone would miss.
+  // A transducer patch bound over a rectangular crack (x = 9.3 mm) moves the nearest wave
+  // line (9 mm) in both grids, the heat grid's lines between stretched with it: still halves.
+  // (Moving each grid's own nearest line, 9 mm and 9.5 mm, nested in no m <= 16, and the
+  // cell totals alone would not tell.)
   g.cracks = {a};
   g.edges[static_cast<int>(mesh::Side::Top)] = mesh::EdgeKind::Free;
   g.patch = {true, mesh::Side::Top, 0.0113, 0.004, 0.005, 0.01};
   const mesh::BoxGrid wave1(g), heat1(g, halves);
-  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave1, heat1, &exact), 16);
-  EXPECT_FALSE(exact);
+  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave1, heat1, &exact), 4);
+  EXPECT_TRUE(exact);
+  EXPECT_EQ(heat1.crack_cells(0), 2 * wave1.crack_cells(0));
+  // options/block3d.opts: its patch's x bounds (15, 25 mm) both fall inside the 20° crack's range.
+  mesh::SpecimenGeometry b3 = Block(20.0);
+  b3.width = 0.04, b3.height = 0.04, b3.depth = 0.02, b3.h = 0.002, b3.h_crack = 0.001;
+  b3.cracks[0].x = 0.02, b3.cracks[0].y = 0.02, b3.cracks[0].z = 0.01;
+  b3.cracks[0].length = 0.02, b3.cracks[0].width = 0.01;
+  b3.edges[static_cast<int>(mesh::Side::Top)] = mesh::EdgeKind::Free;
+  b3.patch = {true, mesh::Side::Top, 0.02, 0.01, 0.01, 0.01};
+  const mesh::BoxGrid wave3(b3), heat3(b3, mesh::BoxGridSizes{0.0005, b3.h, b3.grading, 1e-5, 1.5});
+  EXPECT_EQ(mesh::CrackFaceSubdivisions(wave3, heat3, &exact), 4);
+  EXPECT_TRUE(exact);
 }
 
 TEST(TiltedCrack, UnturnedIsTheExactRectangleOnItsPlane) {

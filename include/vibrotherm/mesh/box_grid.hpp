@@ -165,13 +165,18 @@ class BoxGrid {
   std::array<double, 3> size_{};
   std::vector<PatchSnap> patch_snaps_;
   std::array<int, 3> stand_in_{};  ///< no crack: the node of the centre plane on each axis
+  int refine_ = 1;                 ///< cells per wave-grid cell in the cracks' runs (a nested heat grid: > 1)
 };
 
 /// Makes `target` a node of the sorted `nodes`: an existing node within tol (a node in
 /// `fixed`: within a third of the cell), else the nearest node not in `fixed` moved there
 /// (the nodes between its fixed neighbours stretched linearly), else a new node. Updates
-/// the indices in `fixed`, adds the target's, returns its position.
-double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol);
+/// the indices in `fixed`, adds the target's, returns its position. `is_line` (empty: every
+/// node) names the nodes that may be moved or kept: in a grid nested in a coarser one, the
+/// coarser grid's lines, so that both move the same line and a linear stretch keeps the
+/// nesting; "the cell" is then the coarser grid's.
+double AlignNode(std::vector<double>* nodes, std::vector<int>* fixed, double target, double tol,
+                 const std::function<bool(int)>& is_line = {});
 
 /// The 1D nodes of [0, length]: each segment's [lo, hi] in its cells (overlapping
 /// segments share a run whose sub-intervals between their ends get cells no larger than
