@@ -110,16 +110,16 @@ def _crack_panels(fig, axes, run, crack_state, title):
         count[n] += 1
     power, contact = power / np.maximum(count, 1), contact / np.maximum(count, 1)
     x = np.column_stack([crack_state[c][last] for c in ("x", "y", "z")])
-    t2 = _tangent_names(x, crack_state["s1"][last], crack_state["s2"][last])
+    axis_names = _tangent_names(x, crack_state["s1"][last], crack_state["s2"][last])
     rise, output = _crack_plane_rise(run, x)
     t_last = crack_state["t"][-1]
     span = t_last - crack_state["t"][window].min()
     _panel(fig, axes[0], tri, crack_state["W"][last], "%s(a) dissipated friction energy W at t = %.4g ms"
-           % (title, t_last * 1e3), "W [J/m²]", t2)
+           % (title, t_last * 1e3), "W [J/m²]", axis_names)
     _panel(fig, axes[1], tri, power, "%s(b) friction power, mean over the last %.3g µs" % (title, span * 1e6),
-           "power [W/m²]", t2)
+           "power [W/m²]", axis_names)
     _panel(fig, axes[2], tri, contact, "%s(c) share of those records in contact" % title, "fraction in contact",
-           t2, cmap="Blues")
+           axis_names, cmap="Blues")
     if rise is None:
         axes[3].set_axis_off()
         axes[3].text(0.5, 0.5, "no temperature field (give -output_times)", ha="center")
@@ -129,7 +129,7 @@ def _crack_panels(fig, axes, run, crack_state, title):
         except (Skip, IndexError):
             when = "output %d" % output
         _panel(fig, axes[3], tri, rise * 1e6, "%s(d) temperature rise on the crack plane at %s" % (title, when),
-               "rise [µK]", t2, cmap="inferno")
+               "rise [µK]", axis_names, cmap="inferno")
     return last.sum()
 
 

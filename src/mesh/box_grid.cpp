@@ -246,6 +246,15 @@ void BoxGrid::find_planes(const SpecimenGeometry& g, std::vector<int>* plane_of)
     }
     plane_of->push_back(found);
   }
+  // Several planes share one clamp window, the union of theirs: parallel planes then keep
+  // equal offsets everywhere, so a plane's `at` (its line at the first crack's in-plane point)
+  // tells where it lies against its neighbours everywhere. Each clamped to its own cracks,
+  // planes side by side were compared where one of them had stopped turning (en-echelon
+  // cracks were refused as folding).
+  std::array<double, 2> lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+  for (const Plane& pl : planes_)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], pl.lo[k]), hi[k] = std::max(hi[k], pl.hi[k]);
+  for (Plane& pl : planes_) pl.lo = lo, pl.hi = hi;
   if (g.cracks.empty())  // a stand-in through the centre
     planes_.push_back({0.5 * size_[p_], {0.0, 0.0}, {0.5 * size_[in_[0]], 0.5 * size_[in_[1]]}, {0.0, 0.0},
                        {size_[in_[0]], size_[in_[1]]}});
@@ -282,7 +291,8 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
       const bool through = a == 2 && through_thickness(c, g);  // ends exactly on the faces
       segments[a].push_back({through ? 0.0 : centre - half, through ? g.depth : centre + half, cells});
     }
-    cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {}});
+    cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {},
+                       {c.centre()[in_[0]], c.centre()[in_[1]]}, {HalfExtent(c, in_[0]), HalfExtent(c, in_[1])}});
   }
   if (!cracked)
     for (int a : in_) segments[a].push_back({0.5 * size_[a], 0.5 * size_[a], 0});
@@ -318,17 +328,20 @@ void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const st
   const bool inside_box = std::min(lo[0], lo[1]) > tol && hi[0] < g.width - tol && hi[1] < g.height - tol;
   const bool through = through_thickness(c, g), z_ok = (lo[2] > tol && hi[2] < g.depth - tol) || through;
   if (!inside_box || !z_ok)
-    reject("-crack_center/-crack_length/-crack_width", c.tilt_deg != 0.0 ? "/-crack_tilt" : "", ": the crack",
+    reject("-crack_center/-crack_length/-crack_width/-crack_angle", c.tilt_deg != 0.0 ? "/-crack_tilt" : "", ": the crack",
            name, " reaches the outside of the specimen (3D cracks must be buried in x-y and either buried in z or ",
            "through the thickness, untilted with -crack_width = -specimen_depth centred at z = depth/2; extent x [",
            lo[0], ", ", hi[0], "], y [", lo[1], ", ", hi[1], "], z [", lo[2], ", ", hi[2], "] in [0, ", g.width,
            "] x [0, ", g.height, "] x [0, ", g.depth, "])");
-  if (c.tilt_deg != 0.0 && std::abs(c.width - g.depth) <= tol)
+  // Centred in z with -crack_width = -specimen_depth and its width mostly along z, a tilted
+  // crack was meant to go through the thickness, which only an untilted one does.
+  if (c.tilt_deg != 0.0 && std::abs(c.tilt_deg) < 45.0 && std::abs(c.width - g.depth) <= tol &&
+      std::abs(c.z - 0.5 * g.depth) <= tol)
     reject("-crack_tilt: a crack through the thickness (-crack_width = -specimen_depth) is untilted; a tilted ",
            "crack is buried (-crack_width < -specimen_depth)", name);
   if (c.shape == CrackShape::Ellipse && through)
     reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack ",
-           "through the thickness is a rectangle");
+           "through the thickness is a rectangle", name);
   const int along = CellsAcross(c.length, g.h_crack), across = CellsAcross(c.width, g.h_crack);
   if (along < 2)
     reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name);
@@ -442,7 +455,7 @@ bool BoxGrid::inside_outline(const CrackOnGrid& c, const std::array<double, 3>& 
         static_cast<std::size_t>(std::upper_bound(lattice.begin(), lattice.end(), x) - lattice.begin()), 1,
         lattice.size() - 1);
     const double centre = 0.5 * (lattice[cell - 1] + lattice[cell]);
-    uv[k] = 2.0 * (centre - lattice.front()) / (lattice.back() - lattice.front()) - 1.0;
+    uv[k] = (centre - c.centre[k]) / c.half[k];
   }
   const auto [s, w] = c.outline.along_crack(uv);  // along the strike and the up-dip, ±1 on the edges
   if (c.shape == CrackShape::Ellipse) return s * s + w * w <= 1.0;

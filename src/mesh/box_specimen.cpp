@@ -131,6 +131,10 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   // boundary label and checks one cohesive cell per crack face.
   PetscCall(SplitCracks(serial, &s->wave));
   PetscCall(DMDestroy(&serial));
+  if (heat_sizes.graded && heat_sizes.h_along > geometry.h_crack * (1.0 + 1e-9) && !geometry.cracks.empty())
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: -heat_mesh_h_along %g m is coarser than -mesh_h_crack %g m: the 3D "
+                          "heat grid's crack cells are the wave grid's (they nest in them)\n", heat_sizes.h_along,
+                          geometry.h_crack));
   std::unique_ptr<BoxGrid> heat_grid;
   PetscCall(CreateBoxHeatPlex(comm, geometry, heat_sizes, &heat_grid, &s->heat, &s->heat_source));
   bool exact = true;

@@ -67,6 +67,15 @@ std::array<double, 2> Crack::end(int which) const {
 
 namespace {
 
+[[noreturn]] void reject(const std::string& text) { throw std::invalid_argument(text); }
+
+double tolerance(const SpecimenGeometry& g) { return 1e-9 * std::max(g.width, g.height); }
+
+/// Orientation of the triangle (p, q, r): > 0 counter-clockwise.
+double orient(const std::array<double, 2>& p, const std::array<double, 2>& q, const std::array<double, 2>& r) {
+  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+}
+
 /// In-plane distance from (s, t) to the elliptical disc s²/a² + t²/b² ≤ 1: 0 inside,
 /// else to the nearest point (a cos φ, b sin φ), found by sampling φ and refining by
 /// golden sections (the distance is unimodal near its minimum).
@@ -123,19 +132,6 @@ double Crack::distance_to(const std::array<double, 3>& p) const {
   }
   return std::hypot(in_plane, normal);
 }
-
-namespace {
-
-[[noreturn]] void reject(const std::string& text) { throw std::invalid_argument(text); }
-
-double tolerance(const SpecimenGeometry& g) { return 1e-9 * std::max(g.width, g.height); }
-
-/// Orientation of the triangle (p, q, r): > 0 counter-clockwise.
-double orient(const std::array<double, 2>& p, const std::array<double, 2>& q, const std::array<double, 2>& r) {
-  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-}
-
-}  // namespace
 
 double crack_distance(const Crack& a, const Crack& b) {
   const auto a0 = a.end(0), a1 = a.end(1), b0 = b.end(0), b1 = b.end(1);

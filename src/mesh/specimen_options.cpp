@@ -164,6 +164,9 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCheck(ncracks == 0 || has_lengths, comm, PETSC_ERR_USER_INPUT, "-crack_length is required with -crack_center");
   PetscCheck(ncracks > 0 || (!has_lengths && !has_angles), comm, PETSC_ERR_USER_INPUT,
              "-crack_length/-crack_angle given without -crack_center");
+  PetscCheck(ncracks > 0 || (widths.empty() && tilts.empty() && shapes.empty()), comm, PETSC_ERR_USER_INPUT,
+             "%s given without -crack_center", !widths.empty() ? "-crack_width" : !tilts.empty() ? "-crack_tilt"
+                                                                                                  : "-crack_shape");
   if (ncracks > 0) PetscCall(CheckPerCrack(comm, "-crack_length", lengths, ncracks));
   PetscCall(CheckPerCrack(comm, "-crack_angle", angles, ncracks));
   PetscCall(CheckPerCrack(comm, "-crack_width", widths, ncracks));

@@ -32,8 +32,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vibrotherm/mesh/box_grid.hpp"
@@ -310,6 +312,38 @@ TEST(SeveralCracks, EachHasItsOwnShape) {
   EXPECT_NEAR(grid.crack_area(1), 0.006 * 0.004, 1e-15);
 }
 
+TEST(SeveralCracks, EnEchelonCracksSideBySide) {
+  // Two parallel 6 x 4 mm cracks at 10° or 15°, side by side on two planes (centres 16 mm
+  // apart along x, the second level with the first or 2 mm lower: 2.8-6.3 mm apart along y).
+  // A shear clamped to each plane's own cracks put the second plane's surface under the first
+  // at the first crack's x and refused them as folding; clamped to one window for both, they
+  // are what the run needs: exact rectangles on their planes, one cohesive cell a face.
+  for (const auto& [angle, rise] : {std::pair{10.0, 0.0}, std::pair{10.0, -0.002}, std::pair{15.0, 0.0},
+                                    std::pair{15.0, -0.002}}) {
+    mesh::SpecimenGeometry g = Block(angle);
+    g.width = 0.04, g.height = 0.04, g.depth = 0.02;
+    mesh::Crack a = g.cracks[0];
+    a.length = 0.006, a.width = 0.004, a.x = 0.012, a.y = 0.02, a.z = 0.01;
+    mesh::Crack b = a;
+    b.x = 0.028, b.y = 0.02 + rise;
+    g.cracks = {a, b};
+    std::unique_ptr<mesh::BoxGrid> grid;
+    ASSERT_NO_THROW(grid = std::make_unique<mesh::BoxGrid>(g)) << angle << " degrees, second crack " << rise << " m higher";
+    DM dm;
+    PetscInt total;
+    ASSERT_EQ(mesh::CreateBoxPlex(PETSC_COMM_SELF, g, *grid, &dm, &total), 0);
+    const std::vector<LabelledCrack> labelled = LabelledCracks(dm, g);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_NEAR(labelled[k].area, 0.006 * 0.004, 1e-12 * 0.006 * 0.004) << "crack " << k + 1 << ", rise " << rise;
+      EXPECT_LT(labelled[k].off_plane, 1e-12) << "crack " << k + 1 << " off its plane, rise " << rise;
+    }
+    DM split;
+    ASSERT_EQ(mesh::SplitCracks(dm, &split), 0);  // one cohesive cell per crack face
+    DMDestroy(&split);
+    DMDestroy(&dm);
+  }
+}
+
 TEST(SeveralCracks, NearbyEndsShareAGridLineInsteadOfASliver) {
   // Equal lengths at 5° and 6°: their ends along x are 5 µm apart, which would be a
   // cell of 5 µm (a 200 times smaller stable step). They share one line instead.
@@ -453,8 +487,8 @@ TEST(TiltedCrack, TurnedIsTheStaircaseOfItsRectangle) {
 }
 
 TEST(TiltedCrack, StaircaseNestsBesideAnotherCrackAndUnderAPatch) {
-  // Two parallel cracks at 30° tilted by 20°, 4 mm apart along their normal and shifted
-  // 2.5 mm along x: their extents overlap, so the wave cells over each are uneven. Each
+  // Two parallel cracks at 30° tilted by 20°, 2.83 mm apart along their normal and shifted
+  // 0.62 mm along x: their extents overlap, so the wave cells over each are uneven. Each
   // crack is still the staircase of the wave faces whose centroids lie in its rectangle, and
   // the heat grid halves every wave face (4 heat faces each, the same area).
   mesh::SpecimenGeometry g = Block(30.0);

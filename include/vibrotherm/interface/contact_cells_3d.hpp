@@ -3,10 +3,11 @@
 // owned by this rank. The crack front is not split (its pairs are one point): no
 // cell there, the faces are held together along it.
 //
-// Frame of a planar crack whose normal lies in the x–y plane (the box crack), the
-// 2D convention extended: n is oriented with n_y > 0 (n_x < 0 for a vertical
-// crack), t1 = n turned by −90° about z (the strike, as the 2D tangent s) and
-// t2 = n × t1 (= −z), so (t1, t2, n) is right handed (geometry::CrackFrame). The
+// Frame of a planar crack (geometry::CrackFrame), the 2D convention extended: n is
+// oriented with n_y > 0 (n_x < 0 for a vertical crack, n_z > 0 for one parallel to the
+// front face), t1 = (n_y, −n_x, 0)/|·| the horizontal strike (as the 2D tangent s; x for
+// a crack parallel to the front face) and t2 = n × t1 (−z for an untilted crack, the
+// down-dip of a tilted one), so (t1, t2, n) is right handed. The
 // + node is on the face the split labelled crack_plus (its bulk neighbour lies
 // along n: decided on the serial mesh). A node's weight is ∫φ dA over every crack
 // face around it, summed across ranks (its tributary area [m²]).

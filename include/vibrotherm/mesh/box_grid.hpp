@@ -42,7 +42,9 @@ namespace vibrotherm::mesh {
 struct BoxGridSizes {
   double h_crack, h, grading;
   double first_layer = 0.0, growth = 1.0;
-  int refine = 1;  ///< cells per cell of the segments' counts in the cracks' runs (the heat grid's, nested)
+  /// Cells per cell of the segments' counts in the cracks' runs (the heat grid's, nested): read
+  /// by AxisNodes; a BoxGrid sets it itself, ceil(the wave grid's h_crack / h_crack).
+  int refine = 1;
 };
 
 /// A stretch of one axis that is meshed uniformly: [lo, hi] in `cells` cells, or a
@@ -135,6 +137,9 @@ class BoxGrid {
     /// A staircase's lattice: the wave grid's lines over its range along each in-plane axis,
     /// before a transducer patch (which may only add lines between them).
     std::array<std::vector<double>, 2> lattice;
+    /// Its true centre and half extents along the in-plane axes (a snapped end moves its
+    /// lattice's end, not its outline).
+    std::array<double, 2> centre, half;
     bool staircase() const { return shape != CrackShape::Rectangle || !outline.aligned(); }
   };
   void validate(const SpecimenGeometry& g) const;

@@ -49,7 +49,8 @@ PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const cha
   char value[1024] = "";
   PetscBool given = PETSC_FALSE;
   const std::string text = std::string(help) + " (" + JoinChoices(names) + ", one value or a comma-separated list)";
-  PetscCall(PetscOptionsString(option, text.c_str(), nullptr, value, value, sizeof(value), &given));
+  // -help shows the first name, the default of a list not given.
+  PetscCall(PetscOptionsString(option, text.c_str(), nullptr, names.front().c_str(), value, sizeof(value), &given));
   if (set) *set = given;
   if (!given) PetscFunctionReturn(0);
   indices->clear();
