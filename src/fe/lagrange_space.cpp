@@ -371,16 +371,22 @@ PetscErrorCode LagrangeSpace::BasisAt(const std::array<double, 2>& ref, std::vec
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode LagrangeSpace::BasisAndDerivativesAt(const ReferencePoint& ref, std::vector<double>* phi,
+                                                    std::vector<double>* dphi) const {
+  PetscFunctionBeginUser;
+  PetscTabulation T;
+  PetscCall(PetscFECreateTabulation(fe_, 1, 1, ref.data(), 1, &T));
+  phi->assign(T->T[0], T->T[0] + nodes_);
+  dphi->assign(T->T[1], T->T[1] + dim_ * nodes_);
+  PetscCall(PetscTabulationDestroy(&T));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode LagrangeSpace::BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
                                                     std::vector<double>* dphi) const {
   PetscFunctionBeginUser;
   PetscCall(RequirePlanar("BasisAndDerivativesAt"));
-  PetscTabulation T;
-  const PetscReal point[2] = {ref[0], ref[1]};
-  PetscCall(PetscFECreateTabulation(fe_, 1, 1, point, 1, &T));
-  phi->assign(T->T[0], T->T[0] + nodes_);
-  dphi->assign(T->T[1], T->T[1] + 2 * nodes_);
-  PetscCall(PetscTabulationDestroy(&T));
+  PetscCall(BasisAndDerivativesAt(ReferencePoint{ref[0], ref[1], 0.0}, phi, dphi));
   PetscFunctionReturn(0);
 }
 

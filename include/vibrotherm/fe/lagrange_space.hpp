@@ -90,8 +90,11 @@ class LagrangeSpace {
   PetscErrorCode BasisAt(const ReferencePoint& ref, std::vector<double>* phi) const;
   /// The same in 2D; refused in 3D.
   PetscErrorCode BasisAt(const std::array<double, 2>& ref, std::vector<double>* phi) const;
-  /// Basis values and reference-coordinate derivatives ([node][2]) at a
-  /// reference point. 2D only; refused in 3D.
+  /// Basis values and reference-coordinate derivatives ([node][dim()]) at a
+  /// reference point (its first dim() coordinates).
+  PetscErrorCode BasisAndDerivativesAt(const ReferencePoint& ref, std::vector<double>* phi,
+                                       std::vector<double>* dphi) const;
+  /// The same in 2D; refused in 3D.
   PetscErrorCode BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
                                        std::vector<double>* dphi) const;
 

@@ -12,10 +12,10 @@
 namespace vibrotherm::coupling {
 namespace {
 
-/// A quadrature point of the heat mesh as every rank sees it: where, its weight,
-/// and the heat basis values with their global rows (up to 9 nodes).
-constexpr int kMaxHeatNodes = 9;
-constexpr int kPointFields = 3 + 2 * kMaxHeatNodes;  // x, y, w, rows[9], psi[9]
+/// A quadrature point of the heat mesh as every rank sees it: where (x, y, z; z = 0 in 2D),
+/// its weight, and the heat basis values with their global rows (up to 27 nodes: Q2 in 3D).
+constexpr int kMaxHeatNodes = 27;
+constexpr int kPointFields = 4 + 2 * kMaxHeatNodes;  // x, y, z, w, rows[27], psi[27]
 
 /// Every rank's heat quadrature points, packed (kPointFields doubles each). Collective.
 PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<double>* all) {
@@ -24,26 +24,97 @@ PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<doubl
   PetscSection local, global;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
-  const int nb = heat.nodes_per_cell();
-  PetscCheck(nb <= kMaxHeatNodes, PETSC_COMM_SELF, PETSC_ERR_SUP, "thermoelastic: heat elements of %d nodes", nb);
-  std::vector<double> mine, xy;
+  const int nb = heat.nodes_per_cell(), dim = heat.dim();
+  PetscCheck(nb <= kMaxHeatNodes, PETSC_COMM_SELF, PETSC_ERR_SUP, "wave-to-heat transfer: heat elements of %d nodes", nb);
+  std::vector<double> mine, xyz;
   fe::CellQuadrature q;
   for (PetscInt c : heat.cells()) {
     PetscCall(heat.Evaluate(c, &q));
-    PetscCall(heat.QuadraturePoints(c, &xy));
+    PetscCall(heat.QuadraturePoints(c, &xyz));
     PetscInt n, *rows = nullptr;
     PetscCall(DMPlexGetClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
     for (int p = 0; p < q.points; ++p) {
-      double packed[kPointFields] = {xy[2 * p], xy[2 * p + 1], q.weight[p]};
+      double packed[kPointFields] = {xyz[dim * p], xyz[dim * p + 1], dim == 3 ? xyz[dim * p + 2] : 0.0, q.weight[p]};
       for (int b = 0; b < kMaxHeatNodes; ++b) {
-        packed[3 + b] = b < nb ? static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)) : -1.0;
-        packed[3 + kMaxHeatNodes + b] = b < nb ? q.value[p * nb + b] : 0.0;
+        packed[4 + b] = b < nb ? static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)) : -1.0;
+        packed[4 + kMaxHeatNodes + b] = b < nb ? q.value[p * nb + b] : 0.0;
       }
       mine.insert(mine.end(), packed, packed + kPointFields);
     }
     PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
   }
   PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, all));
+  PetscFunctionReturn(0);
+}
+
+/// The inverse of the dim × dim row-major J (2 or 3).
+std::array<double, 9> Inverse(const std::array<double, 9>& J, int dim) {
+  if (dim == 2) {
+    const double det = J[0] * J[3] - J[1] * J[2];
+    return {J[3] / det, -J[1] / det, -J[2] / det, J[0] / det};
+  }
+  const double c00 = J[4] * J[8] - J[5] * J[7], c01 = J[5] * J[6] - J[3] * J[8], c02 = J[3] * J[7] - J[4] * J[6];
+  const double det = J[0] * c00 + J[1] * c01 + J[2] * c02;
+  return {c00 / det, (J[2] * J[7] - J[1] * J[8]) / det, (J[1] * J[5] - J[2] * J[4]) / det,
+          c01 / det, (J[0] * J[8] - J[2] * J[6]) / det, (J[2] * J[3] - J[0] * J[5]) / det,
+          c02 / det, (J[1] * J[6] - J[0] * J[7]) / det, (J[0] * J[4] - J[1] * J[3]) / det};
+}
+
+/// The heat quadrature points located in this rank's wave cells, each counted once: a
+/// point on a partition boundary belongs to the lowest rank holding it. Collective.
+struct LocatedPoints {
+  std::vector<PetscInt> cells;
+  std::vector<fe::ReferencePoint> refs;
+  std::vector<std::size_t> owned;  ///< indices of the points this rank assembles
+};
+PetscErrorCode LocateOwned(const fe::CellLocator& locator, const std::vector<double>& points, MPI_Comm comm,
+                           LocatedPoints* located) {
+  PetscFunctionBeginUser;
+  const std::size_t n = points.size() / kPointFields;
+  located->cells.assign(n, -1);
+  located->refs.assign(n, fe::ReferencePoint{0.0, 0.0, 0.0});
+  std::vector<int> mine(n, INT_MAX), owner(n);
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  for (std::size_t i = 0; i < n; ++i) {
+    locator.Locate(&points[kPointFields * i], &located->cells[i], &located->refs[i]);
+    if (located->cells[i] >= 0) mine[i] = rank;
+  }
+  if (n) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
+  for (std::size_t i = 0; i < n; ++i)
+    if (owner[i] == rank) located->owned.push_back(i);
+  PetscFunctionReturn(0);
+}
+
+/// Point i's block of the transfer: its heat rows × its wave cell's closure dofs (node-major,
+/// dim components); the values only when `values` is given.
+PetscErrorCode PointBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& locator, const double* p,
+                          PetscInt cell, const fe::ReferencePoint& ref, const WaveToHeatKernel& kernel,
+                          std::vector<PetscInt>* rows, std::vector<PetscInt>* cols, std::vector<double>* values) {
+  PetscFunctionBeginUser;
+  PetscSection local, global;
+  PetscCall(DMGetLocalSection(wave.dm(), &local));
+  PetscCall(DMGetGlobalSection(wave.dm(), &global));
+  PetscInt nc, *closure = nullptr;
+  PetscCall(DMPlexGetClosureIndices(wave.dm(), local, global, cell, PETSC_TRUE, &nc, &closure, nullptr, nullptr));
+  cols->resize(nc);
+  for (PetscInt k = 0; k < nc; ++k) (*cols)[k] = closure[k] >= 0 ? closure[k] : -(closure[k] + 1);
+  PetscCall(DMPlexRestoreClosureIndices(wave.dm(), local, global, cell, PETSC_TRUE, &nc, &closure, nullptr, nullptr));
+  rows->clear();
+  for (int b = 0; b < kMaxHeatNodes && p[4 + b] >= 0; ++b) rows->push_back(static_cast<PetscInt>(p[4 + b]));
+  if (!values) PetscFunctionReturn(0);
+  const int dim = wave.dim(), nb = wave.nodes_per_cell();
+  std::vector<double> phi, dphi;
+  PetscCall(wave.BasisAndDerivativesAt(ref, &phi, &dphi));
+  const std::array<double, 9> iJ = Inverse(locator.Jacobian(cell, ref), dim);  // dξ_j/dx_k at [j][k]
+  values->assign(rows->size() * nc, 0.0);
+  for (std::size_t h = 0; h < rows->size(); ++h)
+    for (int a = 0; a < nb; ++a)
+      for (int k = 0; k < dim; ++k) {  // ∂φ_a/∂x_k of the dof (node a, component k)
+        double d = 0.0;
+        for (int j = 0; j < dim; ++j) d += dphi[dim * a + j] * iJ[dim * j + k];
+        (*values)[h * nc + dim * a + k] = p[3] * p[4 + kMaxHeatNodes + h] * kernel(phi[a], d);
+      }
   PetscFunctionReturn(0);
 }
 
@@ -55,20 +126,10 @@ PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::Lagra
   MPI_Comm comm = PetscObjectComm((PetscObject)wave.dm());
   std::vector<double> points;
   PetscCall(GatherHeatPoints(heat, &points));
-  const std::size_t n = points.size() / kPointFields;
   fe::CellLocator locator;
   PetscCall(locator.Setup(wave));
-  std::vector<PetscInt> cells(n);
-  std::vector<std::array<double, 2>> refs(n);
-  std::vector<int> mine(n, INT_MAX), owner(n);
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  for (std::size_t i = 0; i < n; ++i) {
-    locator.Locate(points[kPointFields * i], points[kPointFields * i + 1], &cells[i], &refs[i]);
-    if (cells[i] >= 0) mine[i] = rank;
-  }
-  // A point on a partition boundary belongs to the lowest rank holding it: counted once.
-  if (n) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
+  LocatedPoints located;
+  PetscCall(LocateOwned(locator, points, comm, &located));
   Vec u;
   PetscInt rows, cols, global_rows, global_cols;
   PetscCall(DMGetGlobalVector(heat.dm(), &u));
@@ -79,39 +140,31 @@ PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::Lagra
   PetscCall(VecGetLocalSize(u, &cols));
   PetscCall(VecGetSize(u, &global_cols));
   PetscCall(DMRestoreGlobalVector(wave.dm(), &u));
-  Mat B;
-  PetscCall(MatCreateAIJ(comm, rows, cols, global_rows, global_cols, 60, nullptr, 60, nullptr, &B));
-  PetscCall(MatSetOption(B, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscSection local, global;
-  PetscCall(DMGetLocalSection(wave.dm(), &local));
-  PetscCall(DMGetGlobalSection(wave.dm(), &global));
-  const int nb = wave.nodes_per_cell();
-  std::vector<double> phi, dphi, values;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (owner[i] != rank) continue;
-    const double* p = &points[kPointFields * i];
-    PetscCall(wave.BasisAndDerivativesAt(refs[i], &phi, &dphi));
-    const auto J = locator.Jacobian(cells[i], refs[i]);
-    const double det = J[0] * J[3] - J[1] * J[2];
-    const double iJ[4] = {J[3] / det, -J[1] / det, -J[2] / det, J[0] / det};  // dξ_j/dx_i at [j][i]
-    PetscInt nc, *wave_cols = nullptr;
-    PetscCall(DMPlexGetClosureIndices(wave.dm(), local, global, cells[i], PETSC_TRUE, &nc, &wave_cols, nullptr, nullptr));
-    std::vector<PetscInt> cols_here(nc), rows_here;
-    for (PetscInt k = 0; k < nc; ++k) cols_here[k] = wave_cols[k] >= 0 ? wave_cols[k] : -(wave_cols[k] + 1);
-    PetscCall(DMPlexRestoreClosureIndices(wave.dm(), local, global, cells[i], PETSC_TRUE, &nc, &wave_cols, nullptr, nullptr));
-    for (int b = 0; b < kMaxHeatNodes && p[3 + b] >= 0; ++b) rows_here.push_back(static_cast<PetscInt>(p[3 + b]));
-    values.assign(rows_here.size() * nc, 0.0);
-    for (std::size_t h = 0; h < rows_here.size(); ++h)
-      for (int a = 0; a < nb; ++a)
-        for (int k = 0; k < 2; ++k) {  // ∂φ_a/∂x_k of the dof (node a, component k)
-          const double d = dphi[2 * a] * iJ[k] + dphi[2 * a + 1] * iJ[2 + k];
-          values[h * nc + 2 * a + k] = p[2] * p[3 + kMaxHeatNodes + h] * kernel(phi[a], d);
-        }
-    PetscCall(MatSetValues(B, static_cast<PetscInt>(rows_here.size()), rows_here.data(), nc, cols_here.data(),
-                           values.data(), ADD_VALUES));
+  // Twice: the pattern into a preallocator, then the values with it (a 3D heat row meets
+  // hundreds of wave dofs; reallocating rows would take minutes).
+  Mat pattern, B;
+  PetscCall(MatCreate(comm, &pattern));
+  PetscCall(MatSetType(pattern, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pattern, rows, cols, global_rows, global_cols));
+  PetscCall(MatSetUp(pattern));
+  PetscCall(MatCreate(comm, &B));
+  PetscCall(MatSetType(B, MATAIJ));
+  PetscCall(MatSetSizes(B, rows, cols, global_rows, global_cols));
+  std::vector<PetscInt> block_rows, block_cols;
+  std::vector<double> values;
+  for (Mat M : {pattern, B}) {
+    if (M == B) PetscCall(MatPreallocatorPreallocate(pattern, PETSC_TRUE, B));
+    for (std::size_t i : located.owned) {
+      PetscCall(PointBlock(wave, locator, &points[kPointFields * i], located.cells[i], located.refs[i], kernel,
+                           &block_rows, &block_cols, M == B ? &values : nullptr));
+      if (M == pattern) values.assign(block_rows.size() * block_cols.size(), 0.0);
+      PetscCall(MatSetValues(M, static_cast<PetscInt>(block_rows.size()), block_rows.data(),
+                             static_cast<PetscInt>(block_cols.size()), block_cols.data(), values.data(), ADD_VALUES));
+    }
+    PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
   }
-  PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDestroy(&pattern));
   *transfer = B;
   PetscFunctionReturn(0);
 }

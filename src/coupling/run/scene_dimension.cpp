@@ -49,8 +49,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
   const std::pair<bool, const char*> refused[] = {{s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
-                                                  {s->wave.lts.on, "-wave_lts on"},
-                                                  {s->material.damping_heat, "-material_damping_heat"}};
+                                                  {s->wave.lts.on, "-wave_lts on"}};
   for (const auto& [refuse, option] : refused)
     PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
                "%s is not supported in 3D yet", option);
