@@ -165,7 +165,7 @@ bad = [
     (["-crack_center", "0.01,0.01"], "-crack_center"),                  # 3 values a crack in 3D
     (["-crack_width", "0.01", "-crack_center", "0.01,0.01,0.005", "-crack_shape", "ellipse"], "-crack_shape"),
     (["-crack_shape", "circle"], "-crack_shape"),
-    (["-thermoelastic", "one_way"], "-thermoelastic"),
+    (["-wave_lts", "on"], "-wave_lts"),
     (["-specimen_depth", "0", "-crack_center", "0.01,0.01"], "-crack_width"),  # 2D: -crack_width is 3D only
 
 ]

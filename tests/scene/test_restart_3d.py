@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Requirement (issue 26, item 2: checkpoint/restart in 3D, 2 ranks = serial): a 3D run
-(options/block3d_small.opts, coarsened and lengthened to stop mid-way) stopped by SIGUSR1 once
+(options/block3d_small.opts, coarsened and lengthened to stop mid-way, with two-way thermoelastic
+coupling so that the thermal stress's state is restarted too) stopped by SIGUSR1 once
 its crack has dissipated and a field output is written writes a checkpoint, exits 128 + the
 signal, and -restart DIR then finishes it:
  - on the same ranks (serial, and 2 ranks partitioned so that the crack straddles them: both
@@ -28,7 +29,8 @@ SCENE = ["-options_file", os.path.join(src, "options/block3d_small.opts"),
          # 3 x 2 crack faces (15 contact cells), 8766 dofs: ~4 s a run
          "-mesh_h", "0.003", "-mesh_h_crack", "0.002", "-source_frequency", "1.5e5",
          "-source_duration", str(FINAL), "-final_time", str(FINAL), "-output_times", "1e-5,3e-5",
-         "-checkpoint_every_s", "0.1"]  # metis (the options file) cuts the crack between 2 ranks
+         "-checkpoint_every_s", "0.1",  # metis (the options file) cuts the crack between 2 ranks
+         "-thermoelastic", "two_way"]  # the thermal stress's state is in the checkpoint too
 ACTIVE = 1.2e-5  # s: the crack has dissipated since ~4e-6 and the first fields are written
 TEXT = ["energy.csv", "probes.csv"]
 

@@ -94,6 +94,10 @@ class LagrangeSpace {
   /// reference point (its first dim() coordinates).
   PetscErrorCode BasisAndDerivativesAt(const ReferencePoint& ref, std::vector<double>* phi,
                                        std::vector<double>* dphi) const;
+  /// The same at several reference points in one tabulation (one call per point costs a
+  /// dense product each): phi [point][node], dphi [point][node][dim()].
+  PetscErrorCode BasisAndDerivativesAt(const std::vector<ReferencePoint>& refs, std::vector<double>* phi,
+                                       std::vector<double>* dphi) const;
   /// The same in 2D; refused in 3D.
   PetscErrorCode BasisAndDerivativesAt(const std::array<double, 2>& ref, std::vector<double>* phi,
                                        std::vector<double>* dphi) const;

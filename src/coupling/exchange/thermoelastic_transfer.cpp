@@ -12,20 +12,24 @@
 namespace vibrotherm::coupling {
 namespace {
 
-/// A quadrature point of the heat mesh as every rank sees it: where (x, y, z; z = 0 in 2D),
-/// its weight, and the heat basis values with their global rows (up to 27 nodes: Q2 in 3D).
-constexpr int kMaxHeatNodes = 27;
-constexpr int kPointFields = 4 + 2 * kMaxHeatNodes;  // x, y, z, w, rows[27], psi[27]
+/// Every rank's heat quadrature points as every rank sees them, packed: per point where
+/// (x, y, z; z = 0 in 2D), its weight, its heat cell's nodes' global rows, their basis values.
+struct HeatPoints {
+  std::vector<double> packed;
+  int nodes = 0;  ///< heat nodes per cell
+  std::size_t stride() const { return 4 + 2 * static_cast<std::size_t>(nodes); }
+  std::size_t size() const { return packed.size() / stride(); }
+  const double* at(std::size_t i) const { return &packed[stride() * i]; }
+};
 
-/// Every rank's heat quadrature points, packed (kPointFields doubles each). Collective.
-PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<double>* all) {
+/// Gathers HeatPoints from every rank. Collective.
+PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, HeatPoints* all) {
   PetscFunctionBeginUser;
   DM dm = heat.dm();
   PetscSection local, global;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
   const int nb = heat.nodes_per_cell(), dim = heat.dim();
-  PetscCheck(nb <= kMaxHeatNodes, PETSC_COMM_SELF, PETSC_ERR_SUP, "wave-to-heat transfer: heat elements of %d nodes", nb);
   std::vector<double> mine, xyz;
   fe::CellQuadrature q;
   for (PetscInt c : heat.cells()) {
@@ -34,16 +38,14 @@ PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, std::vector<doubl
     PetscInt n, *rows = nullptr;
     PetscCall(DMPlexGetClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
     for (int p = 0; p < q.points; ++p) {
-      double packed[kPointFields] = {xyz[dim * p], xyz[dim * p + 1], dim == 3 ? xyz[dim * p + 2] : 0.0, q.weight[p]};
-      for (int b = 0; b < kMaxHeatNodes; ++b) {
-        packed[4 + b] = b < nb ? static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)) : -1.0;
-        packed[4 + kMaxHeatNodes + b] = b < nb ? q.value[p * nb + b] : 0.0;
-      }
-      mine.insert(mine.end(), packed, packed + kPointFields);
+      mine.insert(mine.end(), {xyz[dim * p], xyz[dim * p + 1], dim == 3 ? xyz[dim * p + 2] : 0.0, q.weight[p]});
+      for (int b = 0; b < nb; ++b) mine.push_back(static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)));
+      mine.insert(mine.end(), q.value + p * nb, q.value + (p + 1) * nb);
     }
     PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
   }
-  PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, all));
+  all->nodes = nb;
+  PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, &all->packed));
   PetscFunctionReturn(0);
 }
 
@@ -67,17 +69,17 @@ struct LocatedPoints {
   std::vector<fe::ReferencePoint> refs;
   std::vector<std::size_t> owned;  ///< indices of the points this rank assembles
 };
-PetscErrorCode LocateOwned(const fe::CellLocator& locator, const std::vector<double>& points, MPI_Comm comm,
+PetscErrorCode LocateOwned(const fe::CellLocator& locator, const HeatPoints& points, MPI_Comm comm,
                            LocatedPoints* located) {
   PetscFunctionBeginUser;
-  const std::size_t n = points.size() / kPointFields;
+  const std::size_t n = points.size();
   located->cells.assign(n, -1);
   located->refs.assign(n, fe::ReferencePoint{0.0, 0.0, 0.0});
   std::vector<int> mine(n, INT_MAX), owner(n);
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   for (std::size_t i = 0; i < n; ++i) {
-    locator.Locate(&points[kPointFields * i], &located->cells[i], &located->refs[i]);
+    locator.Locate(points.at(i), &located->cells[i], &located->refs[i]);
     if (located->cells[i] >= 0) mine[i] = rank;
   }
   if (n) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
@@ -86,12 +88,32 @@ PetscErrorCode LocateOwned(const fe::CellLocator& locator, const std::vector<dou
   PetscFunctionReturn(0);
 }
 
-/// Point i's block of the transfer: its heat rows × its wave cell's closure dofs (node-major,
-/// dim components); the values only when `values` is given.
-PetscErrorCode PointBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& locator, const double* p,
-                          PetscInt cell, const fe::ReferencePoint& ref, const WaveToHeatKernel& kernel,
-                          std::vector<PetscInt>* rows, std::vector<PetscInt>* cols, std::vector<double>* values) {
+/// The owned points in runs that share a heat cell (the same heat rows) and a wave cell:
+/// each run is one block of the transfer, so the matrix sees one insertion per run, not
+/// one per quadrature point (a heat cell inside one wave cell is a single run).
+std::vector<std::vector<std::size_t>> RunsOfPoints(const HeatPoints& points, const LocatedPoints& located) {
+  std::vector<std::vector<std::size_t>> runs;
+  auto same_rows = [&](std::size_t i, std::size_t j) {
+    for (int b = 0; b < points.nodes; ++b)
+      if (points.at(i)[4 + b] != points.at(j)[4 + b]) return false;
+    return true;
+  };
+  for (std::size_t i : located.owned) {
+    if (runs.empty() || located.cells[runs.back().back()] != located.cells[i] || !same_rows(runs.back().back(), i))
+      runs.emplace_back();
+    runs.back().push_back(i);
+  }
+  return runs;
+}
+
+/// A run's block of the transfer: its heat rows × its wave cell's closure dofs (node-major,
+/// dim components), summed over the run's points; the values only when `values` is given.
+PetscErrorCode RunBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& locator, const HeatPoints& points,
+                        const LocatedPoints& located, const std::vector<std::size_t>& run,
+                        const WaveToHeatKernel& kernel, std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
+                        std::vector<double>* values) {
   PetscFunctionBeginUser;
+  const PetscInt cell = located.cells[run.front()];
   PetscSection local, global;
   PetscCall(DMGetLocalSection(wave.dm(), &local));
   PetscCall(DMGetGlobalSection(wave.dm(), &global));
@@ -100,21 +122,27 @@ PetscErrorCode PointBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& 
   cols->resize(nc);
   for (PetscInt k = 0; k < nc; ++k) (*cols)[k] = closure[k] >= 0 ? closure[k] : -(closure[k] + 1);
   PetscCall(DMPlexRestoreClosureIndices(wave.dm(), local, global, cell, PETSC_TRUE, &nc, &closure, nullptr, nullptr));
-  rows->clear();
-  for (int b = 0; b < kMaxHeatNodes && p[4 + b] >= 0; ++b) rows->push_back(static_cast<PetscInt>(p[4 + b]));
+  const double* first = points.at(run.front());
+  rows->assign(first + 4, first + 4 + points.nodes);  // exact: global rows are below 2^53
   if (!values) PetscFunctionReturn(0);
   const int dim = wave.dim(), nb = wave.nodes_per_cell();
-  std::vector<double> phi, dphi;
-  PetscCall(wave.BasisAndDerivativesAt(ref, &phi, &dphi));
-  const std::array<double, 9> iJ = Inverse(locator.Jacobian(cell, ref), dim);  // dξ_j/dx_k at [j][k]
+  std::vector<fe::ReferencePoint> refs;
+  for (std::size_t i : run) refs.push_back(located.refs[i]);
+  std::vector<double> phi, dphi, dof_kernel(static_cast<std::size_t>(nb) * dim);
+  PetscCall(wave.BasisAndDerivativesAt(refs, &phi, &dphi));
   values->assign(rows->size() * nc, 0.0);
-  for (std::size_t h = 0; h < rows->size(); ++h)
+  for (std::size_t q = 0; q < run.size(); ++q) {
+    const double* p = points.at(run[q]);
+    const std::array<double, 9> iJ = Inverse(locator.Jacobian(cell, refs[q]), dim);  // dξ_j/dx_k at [j][k]
     for (int a = 0; a < nb; ++a)
-      for (int k = 0; k < dim; ++k) {  // ∂φ_a/∂x_k of the dof (node a, component k)
+      for (int k = 0; k < dim; ++k) {  // the kernel of the dof (node a, component k): ∂φ_a/∂x_k
         double d = 0.0;
-        for (int j = 0; j < dim; ++j) d += dphi[dim * a + j] * iJ[dim * j + k];
-        (*values)[h * nc + dim * a + k] = p[3] * p[4 + kMaxHeatNodes + h] * kernel(phi[a], d);
+        for (int j = 0; j < dim; ++j) d += dphi[(q * nb + a) * dim + j] * iJ[dim * j + k];
+        dof_kernel[dim * a + k] = kernel(phi[q * nb + a], d);
       }
+    for (std::size_t h = 0; h < rows->size(); ++h)
+      for (int c = 0; c < nb * dim; ++c) (*values)[h * nc + c] += p[3] * p[4 + points.nodes + h] * dof_kernel[c];
+  }
   PetscFunctionReturn(0);
 }
 
@@ -124,7 +152,7 @@ PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::Lagra
                                   const WaveToHeatKernel& kernel, Mat* transfer) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave.dm());
-  std::vector<double> points;
+  HeatPoints points;
   PetscCall(GatherHeatPoints(heat, &points));
   fe::CellLocator locator;
   PetscCall(locator.Setup(wave));
@@ -150,13 +178,14 @@ PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::Lagra
   PetscCall(MatCreate(comm, &B));
   PetscCall(MatSetType(B, MATAIJ));
   PetscCall(MatSetSizes(B, rows, cols, global_rows, global_cols));
+  const std::vector<std::vector<std::size_t>> runs = RunsOfPoints(points, located);
   std::vector<PetscInt> block_rows, block_cols;
   std::vector<double> values;
   for (Mat M : {pattern, B}) {
     if (M == B) PetscCall(MatPreallocatorPreallocate(pattern, PETSC_TRUE, B));
-    for (std::size_t i : located.owned) {
-      PetscCall(PointBlock(wave, locator, &points[kPointFields * i], located.cells[i], located.refs[i], kernel,
-                           &block_rows, &block_cols, M == B ? &values : nullptr));
+    for (const std::vector<std::size_t>& run : runs) {
+      PetscCall(RunBlock(wave, locator, points, located, run, kernel, &block_rows, &block_cols,
+                         M == B ? &values : nullptr));
       if (M == pattern) values.assign(block_rows.size() * block_cols.size(), 0.0);
       PetscCall(MatSetValues(M, static_cast<PetscInt>(block_rows.size()), block_rows.data(),
                              static_cast<PetscInt>(block_cols.size()), block_cols.data(), values.data(), ADD_VALUES));

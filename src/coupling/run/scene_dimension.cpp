@@ -48,11 +48,7 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   }
   PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
-  const std::pair<bool, const char*> refused[] = {{s->run.thermoelastic != ThermoelasticChoice::Off, "-thermoelastic"},
-                                                  {s->wave.lts.on, "-wave_lts on"}};
-  for (const auto& [refuse, option] : refused)
-    PetscCheck(!refuse, comm, PETSC_ERR_USER_INPUT,
-               "%s is not supported in 3D yet", option);
+  PetscCheck(!s->wave.lts.on, comm, PETSC_ERR_USER_INPUT, "-wave_lts on is not supported in 3D yet");
   char type[64] = "velocityverlet", cell[16] = "quad";
   PetscInt refine = 0;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
