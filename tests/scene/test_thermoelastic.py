@@ -18,16 +18,14 @@ displacement at 100 kHz on the top edge, absorbing bottom, no crack; probe at (0
     serial; the heat balance closes and energy.csv splits the heat by source.
 
 usage: test_thermoelastic.py VIBROTHERM MPIEXEC"""
-import csv, json, math, os, sys, tempfile
+import csv, json, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, run_scene
+from aluminium import T0, beta, c_P, cp, rho
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("thermoelastic")
-E, nu, rho, cp, T0, alpha_L = 70e9, 0.33, 2700.0, 900.0, 293.15, 23e-6
-lam, G = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-beta, c_P = (3 * lam + 2 * G) * alpha_L, math.sqrt((lam + 2 * G) / rho)
 plate = ["-specimen_width", "0.05", "-specimen_height", "0.1", "-edge_top", "source", "-edge_bottom", "absorbing",
          "-source_frequency", "1e5", "-source_amplitude", "1e-7", "-source_duration", "1e-3", "-thermoelastic",
          "one_way", "-heat", "on", "-final_time", "4e-5", "-probe_points", "0.025,0.07", "-probe_every", "1"]

@@ -15,21 +15,17 @@ about 12 um, is negligible), with the run's own velocity at the probe.
 usage: test_thermoelastic_3d.py VIBROTHERM MPIEXEC"""
 import csv
 import json
-import math
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, run_scene
+from aluminium import T0, beta, cp, rho
+from aluminium import c_P as c_isothermal, c_P_adiabatic as c_adiabatic
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("thermoelastic, 3D")
-E, nu, rho, cp, T0, alpha_L = 70e9, 0.33, 2700.0, 900.0, 293.15, 23e-6
-lam, G = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-beta = (3 * lam + 2 * G) * alpha_L
-c_isothermal = math.sqrt((lam + 2 * G) / rho)
-c_adiabatic = math.sqrt((lam + 2 * G + beta ** 2 * T0 / (rho * cp)) / rho)
 COLUMN = ["-specimen_width", "0.01", "-specimen_height", "0.1", "-specimen_depth", "0.01", "-edge_top", "source",
           "-edge_bottom", "absorbing", "-edge_left", "roller", "-edge_right", "roller", "-edge_front", "roller",
           "-edge_back", "roller", "-source_frequency", "1e5", "-source_amplitude", "1e-7", "-source_duration", "1e-3",

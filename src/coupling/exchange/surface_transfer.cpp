@@ -7,6 +7,7 @@
 
 #include "vibrotherm/fe/cell_locator.hpp"
 #include "vibrotherm/util/all_gather.hpp"
+#include "vibrotherm/util/two_pass_matrix.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -88,16 +89,8 @@ PetscErrorCode SurfaceHeatTransfer::Setup(const fe::LagrangeSpace& heat, const S
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   area_ = 0.0;
   for (PetscInt i = 0; i < n; ++i) area_ += all[kPointFields * i + 3];
-  // Twice: into a preallocator, then into T with its exact pattern (a heat node at a
-  // crack meets a hundred points or more; reallocating rows took minutes).
-  Mat pattern;
-  PetscCall(MatCreate(comm, &pattern));
-  PetscCall(MatSetType(pattern, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(pattern, rows, owned, global_rows, n));
-  PetscCall(MatSetUp(pattern));
-  PetscCall(MatCreate(comm, &transfer_));
-  PetscCall(MatSetType(transfer_, MATAIJ));
-  PetscCall(MatSetSizes(transfer_, rows, owned, global_rows, n));
+  Mat pattern;  // a heat node at a crack meets a hundred points or more
+  PetscCall(util::CreateTwoPassMatrices(comm, rows, owned, global_rows, n, &pattern, &transfer_));
   for (Mat T : {pattern, transfer_}) {
     if (T == transfer_) PetscCall(MatPreallocatorPreallocate(pattern, PETSC_TRUE, transfer_));
     for (PetscInt i = 0; i < n; ++i)

@@ -8,6 +8,7 @@
 
 #include "vibrotherm/fe/cell_locator.hpp"
 #include "vibrotherm/util/all_gather.hpp"
+#include "vibrotherm/util/two_pass_matrix.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
@@ -168,16 +169,8 @@ PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::Lagra
   PetscCall(VecGetLocalSize(u, &cols));
   PetscCall(VecGetSize(u, &global_cols));
   PetscCall(DMRestoreGlobalVector(wave.dm(), &u));
-  // Twice: the pattern into a preallocator, then the values with it (a 3D heat row meets
-  // hundreds of wave dofs; reallocating rows would take minutes).
   Mat pattern, B;
-  PetscCall(MatCreate(comm, &pattern));
-  PetscCall(MatSetType(pattern, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(pattern, rows, cols, global_rows, global_cols));
-  PetscCall(MatSetUp(pattern));
-  PetscCall(MatCreate(comm, &B));
-  PetscCall(MatSetType(B, MATAIJ));
-  PetscCall(MatSetSizes(B, rows, cols, global_rows, global_cols));
+  PetscCall(util::CreateTwoPassMatrices(comm, rows, cols, global_rows, global_cols, &pattern, &B));
   const std::vector<std::vector<std::size_t>> runs = RunsOfPoints(points, located);
   std::vector<PetscInt> block_rows, block_cols;
   std::vector<double> values;
