@@ -125,7 +125,7 @@ PetscErrorCode LagrangeSpace::Setup(DM dm, PetscInt degree, PetscInt components)
 PetscErrorCode LagrangeSpace::Evaluate(PetscInt cell, CellQuadrature* q) const {
   PetscFunctionBeginUser;
   const int Nq = qpoints_, Nb = nodes_, D = dim_;
-  // For non-affine cells v0 holds the physical coordinates of every quadrature point.
+  // v0: the physical coordinates of every quadrature point (the quadrature is given).
   constexpr int kMaxPoints = 216;  // Q2 hexahedra: PETSc's order-5 rule has 6³ points
   double v0[3 * kMaxPoints], J[9 * kMaxPoints], invJ[9 * kMaxPoints], detJ[kMaxPoints];
   PetscCheck(Nq <= kMaxPoints, PETSC_COMM_SELF, PETSC_ERR_SUP, "%d quadrature points, more than %d", Nq, kMaxPoints);

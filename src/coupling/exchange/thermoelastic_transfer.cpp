@@ -84,8 +84,15 @@ PetscErrorCode LocateOwned(const fe::CellLocator& locator, const HeatPoints& poi
     if (located->cells[i] >= 0) mine[i] = rank;
   }
   if (n) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
-  for (std::size_t i = 0; i < n; ++i)
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < n; ++i) {
     if (owner[i] == rank) located->owned.push_back(i);
+    lost += owner[i] == INT_MAX;
+  }
+  // A point no wave cell holds would drop its share silently (and the damping transfer's
+  // column scaling would hide it): the two meshes must cover the same body.
+  PetscCheck(lost == 0, comm, PETSC_ERR_PLIB, "wave-to-heat transfer: %zu of %zu heat quadrature points lie in no wave cell",
+             lost, n);
   PetscFunctionReturn(0);
 }
 
@@ -123,6 +130,8 @@ PetscErrorCode RunBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& lo
   cols->resize(nc);
   for (PetscInt k = 0; k < nc; ++k) (*cols)[k] = closure[k] >= 0 ? closure[k] : -(closure[k] + 1);
   PetscCall(DMPlexRestoreClosureIndices(wave.dm(), local, global, cell, PETSC_TRUE, &nc, &closure, nullptr, nullptr));
+  PetscCheck(nc == static_cast<PetscInt>(wave.nodes_per_cell()) * wave.dim(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "wave-to-heat transfer: a wave cell of %" PetscInt_FMT " dofs, not nodes x dim", nc);
   const double* first = points.at(run.front());
   rows->assign(first + 4, first + 4 + points.nodes);  // exact: global rows are below 2^53
   if (!values) PetscFunctionReturn(0);
