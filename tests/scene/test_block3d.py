@@ -186,4 +186,10 @@ with tempfile.TemporaryDirectory() as tmp:
                         "-output_dir", out], capture_output=True, text=True)
     one_line_error(check, "2D -crack_shape", r.returncode, r.stderr, "-crack_shape")
     check(not os.path.exists(out), "2D -crack_shape: nothing written")
+    for option, value in (("-crack_width", "0.004"), ("-crack_tilt", "10"), ("-crack_shape", "ellipse")):
+        out = os.path.join(tmp, "bad_no_center%s" % option)
+        r = subprocess.run([exe, "-specimen_depth", "0.01", option, value, "-output_dir", out],
+                           capture_output=True, text=True)
+        one_line_error(check, "%s without -crack_center" % option, r.returncode, r.stderr, option)
+        check(not os.path.exists(out), "%s without -crack_center: nothing written" % option)
 check.finish()
