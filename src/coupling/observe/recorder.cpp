@@ -51,6 +51,13 @@ PetscErrorCode Recorder::Open(const RecordingOptions& options, const std::string
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Recorder::MeterSource(const wave::SourceTimeFunction& signal, PetscInt window,
+                                     const store::Checkpoint* resume) {
+  PetscFunctionBeginUser;
+  PetscCall(source_power_.Open(comm_, signal, window, dir_ + "/source_power.csv", resume));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Recorder::RecordCrack(const wave::WaveSolver& w) {
   PetscFunctionBeginUser;
   if (!crack_) PetscFunctionReturn(0);
@@ -85,6 +92,7 @@ PetscErrorCode Recorder::RecordEnergy(const io::EnergyRow& row) {
   PetscFunctionBeginUser;
   double error;
   PetscCall(energy_.Record(row, &error));
+  source_power_.OnEnergyRow(row);
   // A budget off by half the source's work is no rounding: the step is unstable
   // (a local-time-stepping resonance grows slowly, never to inf: stop it here).
   PetscCheck(std::abs(error) < 0.5, comm_, PETSC_ERR_NOT_CONVERGED,
@@ -253,6 +261,7 @@ PetscErrorCode Recorder::Finish(io::RunSummary* summary) {
   PetscCall(probes_.Finish());
   PetscCall(energy_.Finish());
   PetscCall(crack_state_.Finish());
+  PetscCall(source_power_.Finish(summary));
   PetscCall(fields_.Finish());
   summary->max_budget_error = energy_.max_budget_error();
   if (heat_views_) field_peak_.Summarise(summary);

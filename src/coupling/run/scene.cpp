@@ -62,6 +62,11 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
   if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
+  if (s->periodic.on && s->excitation.signal.sweeping()) {
+    s->periodic.on = false;
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: a frequency sweep (-source_sweep) never "
+                                "repeats itself; it is simulated in full\n"));
+  }
   if (!s->periodic.on) PetscFunctionReturn(0);
   const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
   const double per_period = period / heat_dt;
@@ -84,8 +89,13 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
-  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
+  // A sweep's loss factor holds at its centre frequency (mass-proportional damping: η ∝ 1/f across the band).
+  const wave::SourceTimeFunction& signal = s->excitation.signal;
+  const double damping_frequency = signal.sweeping() ? 0.5 * (signal.sweep_from + signal.sweep_to) : signal.frequency;
+  PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  PetscCheck(!(s->wave.harmonic_start && signal.sweeping()), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start harmonic with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)");
   s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));
