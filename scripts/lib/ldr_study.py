@@ -4,9 +4,10 @@
              its defect participation (the share of strain energy near the crack);
 2. candidates the modes of the band ranked by participation, and off-resonance frequencies
              in the widest gaps between them, spread over the band;
-3. common power each candidate run over the test time T (harmonic start, periodic continuation)
-             at the scene's amplitude, then again at the amplitude that puts in the common
-             input power (power ∝ A²), which that run measures (verified within 10 %);
+3. common power the common input power: the scene's own drive's (its frequency and amplitude);
+             each candidate probed at 1 % of the scene's amplitude (the contact stuck: linear,
+             input power ∝ A²), then run over the test time T (harmonic start, continuation)
+             at the amplitude that puts the common power in, which that run measures;
 4. verdict   per candidate: input and friction power, efficiency, the defect's own peak rise
              on the camera's face within T, its SNR, contrast against the background heat,
              detectable, detection time; the LDR gain = the LDR's efficiency over the best
@@ -130,15 +131,18 @@ class LdrStudy:
 
     # --- the study ------------------------------------------------------------------------
     def common_power(self, picks):
-        """Every candidate at the scene's amplitude, then rescaled to the common input power."""
-        first = self.run_all([(c["frequency"], self.amplitude) for c in picks])
-        if self.power is None:  # the scene's own drive: its amplitude at the candidate nearest its frequency
+        """Every candidate at the common input power: probed in the linear regime (1 % of the scene's
+        amplitude: the contact stuck, the harmonic start exact, input power ∝ A²), then run at the
+        amplitude that puts that power in, which the run measures."""
+        if self.power is None:  # the scene's own drive at its own frequency
             own = float(self.options.get("source_frequency", picks[0]["frequency"]))
-            self.power = min(first, key=lambda p: abs(math.log(p["frequency"] / own)))["input_power"]
+            (reference,) = self.run_all([(own, self.amplitude)])
+            self.power = reference["input_power"]
         if not self.power or self.power <= 0:
             raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
-        scaled = [(c["frequency"], p["amplitude"] * math.sqrt(self.power / p["input_power"]))
-                  for c, p in zip(picks, first)]
+        probe = 0.01 * self.amplitude
+        first = self.run_all([(c["frequency"], probe) for c in picks])
+        scaled = [(c["frequency"], probe * math.sqrt(self.power / p["input_power"])) for c, p in zip(picks, first)]
         second = self.run_all(scaled)
         for c, p in zip(picks, second):
             c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "peak_rise",
@@ -191,9 +195,10 @@ class LdrStudy:
     def run(self):
         began = time.time()
         modes = modes_in_band(self.runner, self.band, self.log)
+        if not modes:
+            raise StudyError("--band %g,%g holds no mode of the scene: widen it (the scene's modes: -modes)" % tuple(
+                self.band))
         picks = candidates(modes, self.band, self.n_modes, self.n_off)
-        if len(picks) < 2:
-            raise StudyError("the band %g-%g Hz holds %d candidate(s): widen --band" % (*self.band, len(picks)))
         self.log("candidates: " + ", ".join("%.0f Hz%s" % (c["frequency"], " (mode, %.2f)" % c["participation"]
                                                             if c["mode"] else "") for c in picks))
         picks = self.common_power(picks)

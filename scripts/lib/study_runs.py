@@ -78,7 +78,7 @@ class Runner:
         record = os.path.join(directory, "overrides.json")
         summary_path = os.path.join(directory, "summary.json")
         if os.path.exists(record) and os.path.exists(summary_path):
-            with open(record) as f, open(summary_path) as g:
+            with open(record) as f, open(summary_path, errors="replace") as g:
                 old, summary = json.load(f), json.load(g)
             if old == {k: v for k, v in overrides.items()} and summary.get("complete"):
                 return Run(name, directory, overrides, summary)
@@ -95,7 +95,7 @@ class Runner:
             self.made += 1
         if code != 0 or not os.path.exists(summary_path):
             raise RunFailed("%s (exit %d): %s" % (directory, code, error_line(os.path.join(directory, "stderr.txt"))))
-        with open(summary_path) as f:
+        with open(summary_path, errors="replace") as f:
             summary = json.load(f)
         with open(record, "w") as f:
             json.dump(overrides, f, indent=1)

@@ -92,7 +92,6 @@ PetscErrorCode Recorder::RecordEnergy(const io::EnergyRow& row) {
   PetscFunctionBeginUser;
   double error;
   PetscCall(energy_.Record(row, &error));
-  source_power_.OnEnergyRow(row);
   // A budget off by half the source's work is no rounding: the step is unstable
   // (a local-time-stepping resonance grows slowly, never to inf: stop it here).
   PetscCheck(std::abs(error) < 0.5, comm_, PETSC_ERR_NOT_CONVERGED,

@@ -118,9 +118,9 @@ PetscErrorCode SourcePowerMeter::Finish(io::RunSummary* summary) {
   const io::SourcePowerRow& r = stretches.back();
   const char* unit = summary->mesh.dimension == 3 ? "W" : "W/m";
   PetscCall(PetscPrintf(comm_,
-                        "Source power (%s, %.4g periods to t = %.6g s): input %.4g %s, crack friction %.4g %s "
+                        "Source power over %.4g periods to t = %.6g s (%s): input %.4g %s, crack friction %.4g %s "
                         "(thermosonic efficiency %.3g %%), material damping %.4g %s, radiated %.4g %s\n",
-                        steady ? "periodic state" : "last periods, no steady state", r.periods, r.t_end, r.input, unit,
+                        r.periods, r.t_end, steady ? "the source steady" : "no steady source", r.input, unit,
                         r.friction, unit, 100.0 * r.efficiency(), r.damping, unit, r.radiated, unit));
   PetscFunctionReturn(0);
 }

@@ -95,7 +95,7 @@ PetscErrorCode ResponseStrain::Check(const wave::WaveSolver& waves, io::RunSumma
                                          "lower -source_amplitude";
     PetscCall(WarnValidity(PetscObjectComm((PetscObject)waves.space().dm()),
                            Format("the response strains the specimen by about %.3g at t = %.4g s (peak velocity %.3g "
-                                  "m/s over the shear speed %.4g m/s): %s",
+                                  "m/s over the shear speed %.4g m/s)",
                                   strain, waves.time(), speed, shear_speed_)
                                + ": " + meaning,
                            summary));

@@ -137,6 +137,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   io::EnergyRow row;
   PetscCall(waves_->Energy(&row));
   if (!control_.restart) {  // t = 0
+    recorder.OnInterval(row);
     PetscCall(RecordEnergy(recorder, row, heat_.get()));
     if (recorder.OutputDue(0.0)) PetscCall(WriteFields(recorder, 0.0, waves_.get(), heat_.get()));
   }
@@ -195,6 +196,7 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
   PetscCall(strain_->Check(solver, summary_));
+  recorder.OnInterval(*row);
   if (heat_) {
     PetscCall(RecordTemperature(recorder, *heat_, true));
     PetscCall(RecordEnergy(recorder, *row, heat_.get()));

@@ -48,6 +48,9 @@ class Recorder {
   /// for a run with waves, after Open. window: the periods of a steady stretch it reports. Collective.
   PetscErrorCode MeterSource(const wave::SourceTimeFunction& signal, PetscInt window,
                              const store::Checkpoint* resume = nullptr);
+  /// At t = 0 and after every coupling interval while the waves run (or are continued): the wave
+  /// columns of an energy row at the interval's end (the source's power per period).
+  void OnInterval(const io::EnergyRow& row) { source_power_.OnEnergyRow(row); }
   /// After every accepted wave step: probe rows (held), energy rows (without heat), crack state.
   PetscErrorCode OnWaveStep(const wave::WaveSolver& w, bool energy_rows);
   /// Appends an energy row (wave and heat columns filled by the caller); stops an unstable run.

@@ -1,11 +1,13 @@
 // The power the source puts in and where it goes (the thermosonic efficiency).
-// From the energy rows a run writes while the waves run, the cumulative accounts
+// From the energy columns at every coupling interval's end while the waves run (or a
+// continuation replays them), the cumulative accounts
 // (the source's work, the crack's friction, material damping, radiation) at every
 // source-period boundary (the source's cycles: a sweep's too) give each period's
 // mean powers, written to source_power.csv. A boundary between two rows takes the
 // accounts interpolated linearly between them: exact where the rows land on the
-// boundaries (a periodic source with heat: the steps are quantized to the period),
-// and close where rows come every few wave steps (a run without heat). A lightly
+// boundaries (a periodic source: the steps are quantized so that the coupling intervals
+// divide its period, coupling/run/scene.cpp), approximate otherwise (-wave_dt, a
+// -couple_dt that does not divide the period, a sweep's moving period). A lightly
 // damped specimen's source power swings far above its mean within a period, so only
 // whole periods mean anything.
 //
