@@ -7,7 +7,9 @@
 3. common power the common input power: the scene's own drive's (its frequency and amplitude);
              each candidate probed at 1 % of the scene's amplitude (the contact stuck: linear,
              input power ∝ A²), then run over the test time T (harmonic start, continuation)
-             at the amplitude that puts the common power in, which that run measures;
+             at the amplitude that puts the common power in, rescaled by the exponent
+             measured between its last two runs until within 10 % (a clapping defect takes
+             more power than its stuck linearisation: up to 4 more runs);
 4. verdict   per candidate: input and friction power, efficiency, the defect's own peak rise
              on the camera's face within T, its SNR, contrast against the background heat,
              detectable, detection time; the LDR gain = the LDR's efficiency over the best
@@ -34,6 +36,9 @@ def margin(point, criteria):
     if contrast is None or criteria[1] <= 0:
         return snr
     return min(snr, contrast / criteria[1])
+
+
+POWER_TOLERANCE = 0.1  # a candidate's measured input power within 10 % of the common one
 
 
 class StudyError(RuntimeError):
@@ -141,10 +146,19 @@ class LdrStudy:
         if not self.power or self.power <= 0:
             raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
         probe = 0.01 * self.amplitude
-        first = self.run_all([(c["frequency"], probe) for c in picks])
-        scaled = [(c["frequency"], probe * math.sqrt(self.power / p["input_power"])) for c, p in zip(picks, first)]
-        second = self.run_all(scaled)
-        for c, p in zip(picks, second):
+        last = self.run_all([(c["frequency"], probe) for c in picks])
+        exponents = [2.0] * len(picks)  # linear: power ∝ A²; then as measured between the last two runs
+        for _ in range(4):
+            off = [i for i, p in enumerate(last) if abs(p["input_power"] / self.power - 1.0) > POWER_TOLERANCE]
+            if not off:
+                break
+            pairs = [(picks[i]["frequency"], last[i]["amplitude"] * (self.power / last[i]["input_power"]) **
+                      (1.0 / exponents[i])) for i in off]
+            for i, p in zip(off, self.run_all(pairs)):
+                r = math.log(p["input_power"] / last[i]["input_power"]) / math.log(p["amplitude"] / last[i]["amplitude"])
+                exponents[i] = min(max(r, 1.0), 6.0) if math.isfinite(r) else 2.0
+                last[i] = p
+        for c, p in zip(picks, last):
             c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "peak_rise",
                                         "snr", "contrast", "detectable", "detection_time", "run",
                                         "total_peak_rise", "damping_power")})
