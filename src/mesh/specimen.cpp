@@ -273,6 +273,18 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FinestRequestedElement(MPI_Comm comm, double* h) {
+  PetscFunctionBeginUser;
+  *h = 0.0;
+  MeshSource source;
+  PetscCall(ReadMeshSource(comm, &source));
+  if (source.from_file) PetscFunctionReturn(0);
+  SpecimenGeometry geometry;
+  PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  *h = std::ldexp(std::min(geometry.h, geometry.h_crack), -static_cast<int>(source.refinements));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length) {
   PetscFunctionBeginUser;
   MeshSource source;

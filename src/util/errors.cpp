@@ -1,4 +1,5 @@
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 #include <dlfcn.h>
 #include <hdf5.h>
@@ -88,6 +89,7 @@ std::string UnknownTypeOption(const char* mess) {
 /// MPI_Abort calls after the banner, kills the job the same way without it. Looked
 /// up at run time, so other MPI libraries get their MPI_Abort.
 [[noreturn]] void EndJob(int code, bool debug) {
+  stop_signals::RemoveLockNow();  // the next run into the directory needs no takeover
   using Abort = int (*)(MPI_Comm, int);
   const auto quiet = reinterpret_cast<Abort>(dlsym(RTLD_DEFAULT, "ompi_mpi_abort"));
   if (quiet && !debug) quiet(MPI_COMM_WORLD, code);

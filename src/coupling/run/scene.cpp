@@ -56,6 +56,44 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
   PetscFunctionReturn(0);
 }
 
+/// Values every reader accepts but that can only give a useless run (a source that
+/// never drives, a switch-on longer than the excitation, a heat step longer than the
+/// run, a camera without noise): refused naming the option, or said when a default is cut.
+PetscErrorCode CheckUsefulValues(MPI_Comm comm, const Scene& s) {
+  PetscFunctionBeginUser;
+  const wave::SourceTimeFunction& g = s.excitation.signal;
+  if (s.run.physics != PhysicsChoice::Heat) {
+    PetscCheck(g.duration > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-source_duration must be > 0 (the waves are driven only while the source runs), got %g", g.duration);
+    PetscCheck(g.duration * g.frequency >= 1.0, comm, PETSC_ERR_USER_INPUT,
+               "-source_frequency %g Hz: %.3g cycles in -source_duration %g s; at least one whole cycle is needed "
+               "(raise -source_frequency or -source_duration)",
+               g.frequency, g.duration * g.frequency, g.duration);
+    PetscCheck(g.amplitude != 0.0 || !g.schedule.empty(), comm, PETSC_ERR_USER_INPUT,
+               "-source_amplitude 0: nothing drives the waves (give an amplitude, or a -source_schedule)");
+    PetscBool ramp_given;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-source_ramp_cycles", &ramp_given));
+    const double fit = 0.5 * g.duration * g.frequency;  // cycles: switch-on and switch-off each half the duration
+    if (g.ramp_cycles > fit * (1 + 1e-12)) {
+      PetscCheck(!ramp_given, comm, PETSC_ERR_USER_INPUT,
+                 "-source_ramp_cycles %g: a switch-on and a switch-off of %g cycles each do not fit in -source_duration "
+                 "%g s (%.4g cycles at %g Hz): at most %.4g",
+                 g.ramp_cycles, g.ramp_cycles, g.duration, 2.0 * fit, g.frequency, fit);
+      PetscCall(PetscPrintf(comm, "vibrotherm: note: the switch-on and switch-off (-source_ramp_cycles, default %g) "
+                                  "take %.4g cycles each: half of -source_duration %g s\n",
+                            g.ramp_cycles, fit, g.duration));
+    }
+  }
+  const double heat_dt = s.couple_dt / static_cast<double>(s.run.heat_substeps);
+  const bool heat_may_run = s.run.physics == PhysicsChoice::All && s.run.heat != HeatChoice::Off;
+  PetscCheck(!heat_may_run || heat_dt <= s.final_time * (1 + 1e-12), comm, PETSC_ERR_USER_INPUT,
+             "a heat step of %g s (the coupling interval %g s%s, / -heat_substeps %" PetscInt_FMT ") is longer than the "
+             "run (%g s, -final_time): set -couple_dt or raise -final_time",
+             heat_dt, s.couple_dt, s.run.couple_dt > 0.0 ? "" : ", 1/8 of the source period", s.run.heat_substeps,
+             s.final_time);
+  PetscFunctionReturn(0);
+}
+
 /// A periodic continuation compares and replays whole source periods: the wave step must divide
 /// the heat step, which must divide the period. Off (said once) when the coupling cannot.
 PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
@@ -96,6 +134,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(RestrictToDimension(comm, s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
+  PetscCall(CheckUsefulValues(comm, *s));
   PetscCall(QuantizeForPeriodicity(comm, s));
   s->heat.coupled_step = s->couple_dt / static_cast<double>(s->run.heat_substeps);
   // Output times after the end would never be written: say so, and drop them.

@@ -6,13 +6,15 @@
 #include "vibrotherm/coupling/run/recording.hpp"
 #include "vibrotherm/coupling/exchange/heat_camera.hpp"
 #include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
 
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
-PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                                 bool restarting) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
   scene_ = &scene;
@@ -28,7 +30,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   PetscCall(PetscLogStageRegister("Heat steps", &heat_stage_));
   if (run.physics != PhysicsChoice::Heat) {
     waves_ = std::make_unique<WaveComponent>();
-    PetscCall(waves_->Setup(specimen, scene, summary));
+    PetscCall(waves_->Setup(specimen, scene, summary, restarting));
   }
   const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
                                    run.thermoelastic != ThermoelasticChoice::Off || scene.material.damping_heat);
@@ -288,10 +290,10 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   if (interrupted_by_ && heat_alone_from_ >= 0.0)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
                                 "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
-                          SignalName(interrupted_by_), heat.time(), heat_alone_from_));
+                          stop_signals::Name(interrupted_by_), heat.time(), heat_alone_from_));
   else if (interrupted_by_)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
-                                "(this scene has none): the run is lost\n", SignalName(interrupted_by_), heat.time()));
+                                "(this scene has none): the run is lost\n", stop_signals::Name(interrupted_by_), heat.time()));
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());
