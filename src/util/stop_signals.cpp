@@ -39,6 +39,7 @@ struct State {
   volatile std::sig_atomic_t continues_taken = 0;  ///< ... of which the run has seen (TakeContinue)
   volatile std::sig_atomic_t insured = 0;     ///< the SIGCONT count a checkpoint was written for
   volatile std::sig_atomic_t timer_armed = 0;
+  volatile std::sig_atomic_t said = 0;         ///< the run has said where it stopped (Stopping)
   std::atomic<long long> continue_ms{0};      ///< when the last SIGCONT came (monotonic clock)
   const char* volatile setup_what = "setting up";
   int rank = 0;
@@ -76,7 +77,7 @@ void RemoveLock() {
 /// Ends the process from a handler: one line "vibrotherm: <signal><a><b><c>", the lock
 /// removed, exit 128 + signal.
 [[noreturn]] void EndAtOnce(int signal, const char* a, const char* b, const char* c = "") {
-  if (g_state.rank == 0) {
+  if (g_state.rank == 0 && !g_state.said) {
     for (const char* part : {"vibrotherm: ", Name(signal), a, b, c, "\n"}) Say(part);
   }
   RemoveLock();
@@ -138,6 +139,8 @@ void EnterSetup(const char* what) {
 }
 
 void EnterRun() { g_state.running = 1; }
+
+void Stopping() { g_state.said = 1; }
 
 int Received() { return g_state.stop; }
 

@@ -136,18 +136,24 @@ with tempfile.TemporaryDirectory() as tmp:
     one_line_refusal("a probe outside the specimen", code, err, "-probe_points")
     check(not os.path.exists(late), "bad input found after meshing: the directory made for the run removed")
 
-    # Two runs started together: the lock is taken before meshing, so the second is refused before it meshes.
+    # Two runs started together: the second starts while the first meshes (held still there with
+    # SIGSTOP); the lock is taken before meshing, so the second is refused before it meshes.
     together = os.path.join(tmp, "together")
-    first = subprocess.Popen([exe] + SCENE + ["-output_dir", together], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True)
-    if wait_for(os.path.join(together, LOCK), first):
-        first.send_signal(signal.SIGSTOP)
+    first = subprocess.Popen([exe] + SCENE + ["-output_dir", together], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True)
+    meshing = False
+    for line in first.stdout:
+        if line.startswith("Meshing"):
+            first.send_signal(signal.SIGSTOP)
+            meshing = True
+            break
+    if meshing:
         code, stdout, err = run(["-output_dir", together])
         one_line_refusal("the second of two runs started together", code, err, "pid %d" % first.pid)
         check("Meshing" not in stdout, "the second of two runs started together: refused before meshing")
         first.send_signal(signal.SIGCONT)
     else:
-        check.fail("two runs started together: no lock while the first runs")
+        check.fail("two runs started together: the first never meshed")
     first.communicate(timeout=300)
 
     # 3D: the directory and its lock exist before the harmonic start (and before meshing).

@@ -35,6 +35,9 @@ void Install(int rank);
 void EnterSetup(const char* what);
 /// The stepping phase: stop signals are remembered for Received().
 void EnterRun();
+/// The run has written its last checkpoint and said where it resumes: ended at once after
+/// this (mpiexec's deadline), it ends without another line.
+void Stopping();
 /// The first stop signal received (SIGTERM, SIGINT, SIGUSR1), 0 when none.
 int Received();
 /// Whether a SIGCONT arrived under Open MPI's mpiexec since the last call (the warning

@@ -288,12 +288,13 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   }
   heat.on_step = nullptr;
   if (interrupted_by_ && heat_alone_from_ >= 0.0)
-    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
-                                "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
-                          stop_signals::Name(interrupted_by_), heat.time(), heat_alone_from_));
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping; -restart %s resumes "
+                                "from its checkpoint at t = %.6g s, where the waves stopped, and repeats this phase\n",
+                          stop_signals::Name(interrupted_by_), heat.time(), dir_.c_str(), heat_alone_from_));
   else if (interrupted_by_)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
                                 "(this scene has none): the run is lost\n", stop_signals::Name(interrupted_by_), heat.time()));
+  if (interrupted_by_) stop_signals::Stopping();
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());

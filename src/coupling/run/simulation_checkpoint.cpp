@@ -44,9 +44,15 @@ PetscErrorCode Simulation::CheckpointIfDue(Recorder& recorder, bool quiet) {
   }
   if (!signal) PetscFunctionReturn(0);
   interrupted_by_ = signal;
-  PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: %s\n", stop_signals::Name(signal), waves_->solver().time(),
-                        checkpoints_ ? "checkpoint written, stopping (continue with -restart <output dir>)"
-                                     : "stopping without a checkpoint"));
+  if (checkpoints_) {
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: stopping; -restart %s resumes from its checkpoint at t = "
+                                "%.6g s\n", stop_signals::Name(signal), waves_->solver().time(), dir_.c_str(),
+                          waves_->solver().time()));
+    stop_signals::Stopping();
+  }
+  else
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: stopping without a checkpoint (this scene has none)\n",
+                          stop_signals::Name(signal), waves_->solver().time()));
   PetscFunctionReturn(0);
 }
 
