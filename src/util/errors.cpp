@@ -5,6 +5,9 @@
 #include <hdf5.h>
 
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -17,7 +20,25 @@ namespace {
 struct HandlerContext {
   std::string program;
   bool debug = false;  ///< -debug: PETSc's trace after the line, MPI_Abort's banner, HDF5's diagnostics
+  std::string writing;  ///< the output file being written (WritingFile), "" when none
 };
+
+HandlerContext g_context;  // the one handler's context: WritingFile and the handler share it
+
+/// A runtime failure's line: the file being written and why it failed, when known.
+std::string RuntimeFailure(const char* mess) {
+  const std::string what = mess ? mess : "(no message)";
+  std::string file = g_context.writing;
+  if (file.empty()) {  // elsewhere (a CSV, our own HDF5 writers name their file): is the output's disk full?
+    const std::string lock = stop_signals::LockPath();
+    file = lock.empty() ? "" : lock;
+    const std::string reason = file.empty() ? "" : WriteFailureReason(file);
+    const bool full = reason.rfind("no space", 0) == 0 && what.find("no space") == std::string::npos;
+    return full ? what + "; " + reason + " in " + std::filesystem::path(file).parent_path().string() : what;
+  }
+  const std::string reason = WriteFailureReason(file);
+  return "writing " + file + (reason.empty() ? "" : ": " + reason) + " (" + what + ")";
+}
 
 bool IsUserError(PetscErrorCode n) { return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN; }
 
@@ -117,7 +138,7 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
     // then the whole job ends; outputs stay under their .partial names (a
     // checkpoint's restart needs them).
     if (p == PETSC_ERROR_INITIAL) {
-      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", program, mess ? mess : "(no message)", fun ? fun : "?",
+      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", program, RuntimeFailure(mess).c_str(), fun ? fun : "?",
                    file ? file : "?", line);
       std::fflush(stderr);
       EndJob(1, context.debug);
@@ -143,7 +164,7 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
 
 PetscErrorCode PushUserErrorHandler(const char* program) {
   PetscFunctionBeginUser;
-  static HandlerContext context;  // PETSc keeps the context pointer for the whole run
+  HandlerContext& context = g_context;  // PETSc keeps the context pointer for the whole run
   context.program = program;
   PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
   PetscBool debug = PETSC_FALSE;  // read under the handler: a bad value is one line, exit 2
@@ -164,6 +185,23 @@ void PrintOneLineError(const char* program, const std::string& message) {
 int ExitCode(PetscErrorCode ierr) {
   if (ierr == 0) return 0;
   return IsUserError(ierr) ? 2 : 1;
+}
+
+WritingFile::WritingFile(const std::string& path) : previous_(g_context.writing) { g_context.writing = path; }
+
+WritingFile::~WritingFile() { g_context.writing = previous_; }
+
+std::string WriteFailureReason(const std::string& path) {
+  const int error = errno;  // of the failed write, before anything here changes it
+  std::error_code ec;
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(dir.empty() ? "." : dir, ec);
+  constexpr std::uintmax_t kNearlyFull = 1 << 20;  // bytes: less than a dataset or a CSV block more
+  if (!ec && space.available < kNearlyFull)
+    return "no space left on device (" + std::to_string(space.available / 1024) + " kB free)";
+  for (int known : {ENOSPC, EDQUOT, EFBIG, EIO, EROFS, EACCES})
+    if (error == known) return std::strerror(error);
+  return "";
 }
 
 }  // namespace vibrotherm

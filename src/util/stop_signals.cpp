@@ -162,6 +162,8 @@ void SetLock(const std::string& path) { g_state.lock.Set(path); }
 
 void SetCreatedDirectory(const std::string& path) { g_state.created_dir.Set(path); }
 
+std::string LockPath() { return g_state.lock.Get(); }
+
 void RemoveLockNow() { RemoveLock(); }
 
 const char* Name(int signal) {

@@ -24,6 +24,24 @@ void PrintOneLineError(const char* program, const std::string& message);
 /// The process exit code for the error code a run returned (0 on success).
 int ExitCode(PetscErrorCode ierr);
 
+/// While in scope: the output file being written, which a runtime failure's line names
+/// (a full disk inside PETSc's HDF5 viewer says only "Error in HDF5 call H5Dcreate2()").
+class WritingFile {
+ public:
+  explicit WritingFile(const std::string& path);
+  ~WritingFile();
+  WritingFile(const WritingFile&) = delete;
+  WritingFile& operator=(const WritingFile&) = delete;
+
+ private:
+  std::string previous_;
+};
+
+/// Why writing `path` may have failed: "no space left on device (N kB free)" when the file
+/// system that holds it is (nearly) full, else the system's text for errno after a failed
+/// write (EFBIG, EIO, EDQUOT, EROFS, EACCES), else "".
+std::string WriteFailureReason(const std::string& path);
+
 }  // namespace vibrotherm
 
 /// Runs a statement that may throw std::exception and turns the exception into

@@ -50,6 +50,8 @@ void CheckpointWritten(double t, const std::string& dir, bool after_continue);
 /// created it (removed when the process ends at once and it holds nothing else).
 void SetLock(const std::string& path);
 void SetCreatedDirectory(const std::string& path);
+/// The lock this run holds ("" when none): the output directory's vibrotherm.lock.
+std::string LockPath();
 /// Removes the lock (and the created, empty directory): a runtime failure ends the job.
 void RemoveLockNow();
 /// "SIGTERM", "SIGINT", "SIGUSR1", "SIGCONT" (or "a signal").
