@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/write_failure.hpp"
 
 namespace vibrotherm::store {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/util/all_gather.hpp"
-#include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/write_failure.hpp"
 
 namespace vibrotherm::store {
 namespace {

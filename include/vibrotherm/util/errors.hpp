@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "vibrotherm/util/write_failure.hpp"
+
 namespace vibrotherm {
 
 /// Installs the handler; call right after PetscInitialize. -debug (read here)
@@ -36,11 +38,6 @@ class WritingFile {
  private:
   std::string previous_;
 };
-
-/// Why writing `path` may have failed: "no space left on device (N kB free)" when the file
-/// system that holds it is (nearly) full, else the system's text for errno after a failed
-/// write (EFBIG, EIO, EDQUOT, EROFS, EACCES), else "".
-std::string WriteFailureReason(const std::string& path);
 
 }  // namespace vibrotherm
 

@@ -14,6 +14,10 @@ double Scene::exchange_length() const {
   return std::sqrt(heat.material.diffusivity() * couple_dt / static_cast<double>(run.heat_substeps));
 }
 
+double Scene::waves_expected_end() const {
+  return std::min(final_time, excitation.signal.duration + 8.0 / excitation.signal.frequency);
+}
+
 namespace {
 
 /// Values every reader accepted but no run can use: infinities, and wave TS types

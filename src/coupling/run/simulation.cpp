@@ -110,9 +110,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
   const double heat_dt = scene_->couple_dt / per_interval;
   const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
-  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
-  const double expected_end =
-      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
+  const double expected_end = scene_->waves_expected_end();
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
