@@ -4,6 +4,7 @@
 // coupling/driver.hpp) or, with -modes, solves for its natural modes.
 #include <slepcsys.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstring>
 #include <string>
@@ -13,6 +14,21 @@
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 #include "run.hpp"
+
+namespace {
+
+/// While PETSc starts with -help it prints its version banner, its generic options and
+/// its device options (80 lines before vibrotherm's own): dropped.
+PetscErrorCode DropPetscHelp(MPI_Comm, const char[], ...) { return 0; }
+
+const char kIntro[] =
+    "vibrotherm: vibrothermography of cracked solids (elastic waves, crack contact with friction, heat, an IR "
+    "camera) in 2D plane strain or in a 3D box.\n"
+    "Usage: vibrotherm -options_file FILE [-name value ...]   (options after the file override it)\n"
+    "       scripts/run FILE [-name value ...]                 (build, run on all cores, plots)\n"
+    "Every option, by task, with <default : value now>:\n";
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // The GNU spellings too: --help and --version mean -help and -version.
@@ -41,9 +57,11 @@ int main(int argc, char** argv) {
   words.push_back(nullptr);
   int petsc_argc = static_cast<int>(words.size()) - 1;
   char** petsc_argv = words.data();
-  PetscCall(SlepcInitialize(&petsc_argc, &petsc_argv, nullptr,
-                            "vibrotherm: ultrasonic waves, crack contact (MMD) and frictional heating.\n"
-                            "Options files: -options_file options/paper.opts. Full list: -help.\n"));
+  const bool asks_help = std::find(expanded.begin(), expanded.end(), "-help") != expanded.end();
+  if (asks_help) PetscHelpPrintf = DropPetscHelp;
+  PetscCall(SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr));
+  PetscHelpPrintf = PetscHelpPrintfDefault;
+  if (asks_help) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", kIntro));
   // Output piped into a reader that stopped (vibrotherm ... | head): end quietly, as
   // any command does, not with PETSc's trace of a "caught signal".
   std::signal(SIGPIPE, SIG_DFL);
