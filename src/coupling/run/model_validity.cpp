@@ -1,5 +1,6 @@
 #include "vibrotherm/coupling/run/model_validity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -76,6 +77,32 @@ PetscErrorCode CheckStrain(MPI_Comm comm, const Scene& scene, io::RunSummary* su
 }
 
 }  // namespace
+
+PetscErrorCode ResponseStrain::Check(const wave::WaveSolver& waves, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  Vec u, v;
+  PetscReal speed;
+  PetscCall(waves.GetFields(&u, &v));
+  PetscCall(VecNorm(v, NORM_INFINITY, &speed));
+  PetscCall(waves.RestoreFields(&u, &v));
+  const double strain = speed / shear_speed_;
+  peak_ = std::max(peak_, strain);
+  const double limits[2] = {kYieldStrain, kSmallStrain};
+  while (warned_ < 2 && strain > limits[warned_]) {
+    const char* meaning = warned_ == 0 ? "metals yield near 0.001, beyond which this linear elastic model overstates "
+                                         "the waves and the heat"
+                                       : "beyond small-strain elasticity (~0.01): the waves and heat here mean nothing; "
+                                         "lower -source_amplitude";
+    PetscCall(WarnValidity(PetscObjectComm((PetscObject)waves.space().dm()),
+                           Format("the response strains the specimen by about %.3g at t = %.4g s (peak velocity %.3g "
+                                  "m/s over the shear speed %.4g m/s)",
+                                  strain, waves.time(), speed, shear_speed_)
+                               + ": " + meaning,
+                           summary));
+    ++warned_;
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode CheckSourceBeforeMeshing(MPI_Comm comm, const Scene& scene, double finest_h, io::RunSummary* summary) {
   PetscFunctionBeginUser;

@@ -356,7 +356,9 @@ PetscErrorCode PeriodicContinuation::Observe(Recorder& recorder, double t, bool 
   PetscCall(recorder.OnHeatStep(heat));
   if (interval) {
     PetscCall(RecordTemperature(recorder, *heat_, false));
-    PetscCall(RecordEnergy(recorder, WaveRow(t), heat_));
+    const io::EnergyRow row = WaveRow(t);
+    recorder.OnInterval(row);
+    PetscCall(RecordEnergy(recorder, row, heat_));
     PetscCall(recorder.progress().Update(t, heat.steps()));
   }
   if (recorder.OutputDue(t)) PetscCall(WriteFields(recorder, t, nullptr, heat_));

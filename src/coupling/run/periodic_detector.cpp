@@ -153,12 +153,15 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
   if (interface::CrackInterface* crack = waves.crack())
     for (const interface::ContactCell& c : crack->cells()) weights.push_back(c.weight);
   last_change_ = INFINITY;
-  for (std::size_t m = 1; m <= static_cast<std::size_t>(options_.max_multiple) && m < samples_.size(); ++m) {
+  // A statistically steady state (mean) has no period: windows of single periods, their means only.
+  const std::size_t longest = options_.mean ? 1 : static_cast<std::size_t>(options_.max_multiple);
+  for (std::size_t m = 1; m <= longest && m < samples_.size(); ++m) {
     double parts[4];
     PetscCall(Change(m, weights, parts));
     // The contact's cell by cell quantities against their own tolerance (their noise floor is higher).
-    const double scale = options_.tol / options_.tol_cells;
-    const double change = std::max({parts[0], parts[1] * scale, parts[3], parts[2] * scale});
+    const double scale = options_.mean ? 1.0 : options_.tol / options_.tol_cells;
+    const double change = options_.mean ? std::max(parts[3], parts[2])
+                                        : std::max({parts[0], parts[1] * scale, parts[3], parts[2] * scale});
     last_change_ = std::min(last_change_, change);
     if (file_)
       file_->stream() << samples_.back().t << ',' << m << ',' << change << ',' << parts[0] << ',' << parts[1] << ','

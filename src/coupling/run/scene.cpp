@@ -97,23 +97,30 @@ PetscErrorCode CheckUsefulValues(MPI_Comm comm, const Scene& s) {
   PetscFunctionReturn(0);
 }
 
-/// A periodic continuation compares and replays whole source periods: the wave step must divide
-/// the heat step, which must divide the period. Off (said once) when the coupling cannot.
+/// A periodic continuation compares and replays whole source periods, and the source's power is
+/// measured over whole periods: the wave step must divide the heat step, which must divide the
+/// period. The steps are quantized so whenever the coupling allows it (the continuation is off,
+/// said once, when it cannot be).
 PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
   if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
-  if (!s->periodic.on) PetscFunctionReturn(0);
+  if (s->periodic.on && s->excitation.signal.sweeping()) {
+    s->periodic.on = false;
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: a frequency sweep (-source_sweep) never "
+                                "repeats itself; it is simulated in full\n"));
+  }
   const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
   const double per_period = period / heat_dt;
-  if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || s->wave.dt > 0.0) {
+  const bool divides = std::abs(per_period - std::round(per_period)) <= 1e-9 * per_period;
+  if (divides && s->wave.dt <= 0.0 && !s->excitation.signal.sweeping())
+    s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
+  if (s->periodic.on && s->wave.step_quantum <= 0.0) {
     s->periodic.on = false;
     PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: %s\n",
                           s->wave.dt > 0.0 ? "-wave_dt fixes the wave step (it must divide the heat step)"
                                            : "-couple_dt / -heat_substeps does not divide the source period"));
-    PetscFunctionReturn(0);
   }
-  s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
   PetscFunctionReturn(0);
 }
 
@@ -125,8 +132,13 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
-  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
+  // A sweep's loss factor holds at its centre frequency (mass-proportional damping: η ∝ 1/f across the band).
+  const wave::SourceTimeFunction& signal = s->excitation.signal;
+  const double damping_frequency = signal.sweeping() ? 0.5 * (signal.sweep_from + signal.sweep_to) : signal.frequency;
+  PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  PetscCheck(!(s->wave.harmonic_start && signal.sweeping()), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start harmonic with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)");
   s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));

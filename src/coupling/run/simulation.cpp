@@ -31,6 +31,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   if (run.physics != PhysicsChoice::Heat) {
     waves_ = std::make_unique<WaveComponent>();
     PetscCall(waves_->Setup(specimen, scene, summary, restarting));
+    strain_ = std::make_unique<ResponseStrain>(scene.material.cs());
   }
   const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
                                    run.thermoelastic != ThermoelasticChoice::Off || scene.material.damping_heat);
@@ -57,6 +58,7 @@ PetscErrorCode Simulation::SetupCamera(const Scene& scene) {
   PetscFunctionBeginUser;
   if (!scene.camera.on) PetscFunctionReturn(0);
   camera_ = std::make_unique<HeatCamera>();
+  camera_->SetDefectShare(heat_->defect_share());
   PetscInt frames;
   PetscCall(camera_->Setup(heat_->solver(), scene.camera, scene.final_time, &frames));
   if (frames == 0) camera_.reset();
@@ -67,6 +69,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscFunctionBeginUser;
   dir_ = dir;
   control_ = control;
+  summary_ = summary;
   const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
   PetscCall(schedule_.Start(PetscObjectComm((PetscObject)probe_space.dm()), scene_->run.checkpoint_every_s));
   PetscCall(CanCheckpoint(&checkpoints_));
@@ -74,6 +77,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
+  if (waves_) PetscCall(recorder.MeterSource(scene_->excitation.signal, scene_->periodic.window, control.restart));
   if (heat_ && !control.restart) {  // t = 0
     PetscCall(RecordTemperature(recorder, *heat_, waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
@@ -133,6 +137,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   io::EnergyRow row;
   PetscCall(waves_->Energy(&row));
   if (!control_.restart) {  // t = 0
+    recorder.OnInterval(row);
     PetscCall(RecordEnergy(recorder, row, heat_.get()));
     if (recorder.OutputDue(0.0)) PetscCall(WriteFields(recorder, 0.0, waves_.get(), heat_.get()));
   }
@@ -190,6 +195,8 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
     PetscCall(PetscLogStagePop());
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
+  PetscCall(strain_->Check(solver, summary_));
+  recorder.OnInterval(*row);
   if (heat_) {
     PetscCall(RecordTemperature(recorder, *heat_, true));
     PetscCall(RecordEnergy(recorder, *row, heat_.get()));
@@ -241,6 +248,10 @@ PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& la
   recorder.FlushProbes();
   recorder.StopWaves(last);
   summary->wave_energy_left = mechanical_left_;
+  summary->derived["response_strain"] = strain_->peak();
+  summary->derived_rules["response_strain"] =
+      "max |v| / c_s over the specimen and the coupling intervals: the strain the waves reached (a plane wave's; "
+      "warned about above 1e-3 and 1e-2)";
   summary->work_thermal = last.work_thermal;
   if (solver.time() < scene_->final_time * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "Waves quiet at t = %.6g s: wave solver stopped%s\n", solver.time(),

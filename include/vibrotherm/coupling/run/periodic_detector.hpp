@@ -20,6 +20,9 @@
 // the contact's cell-by-cell quantities have a noise floor of ~0.5 %) is
 // the change of multiple m; summary.json and
 // periodic.csv report it (a scene that never becomes periodic says how close it came).
+// -periodic_mode mean (a statistically steady state, e.g. a chaotically clapping crack):
+// m = 1 and only cells and energies, both against -periodic_tol (state and memory are
+// still written to periodic.csv, not judged).
 #pragma once
 
 #include <petscvec.h>

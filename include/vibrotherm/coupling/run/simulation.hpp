@@ -32,6 +32,7 @@
 
 #include "vibrotherm/coupling/run/checkpoint_schedule.hpp"
 #include "vibrotherm/coupling/run/heat_component.hpp"
+#include "vibrotherm/coupling/run/model_validity.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/coupling/run/wave_component.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
@@ -96,6 +97,8 @@ class Simulation {
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
   std::unique_ptr<PeriodicContinuation> periodic_;  ///< -periodic: continuation of a periodic state
+  std::unique_ptr<ResponseStrain> strain_;            ///< the waves' strain, once per coupling interval
+  io::RunSummary* summary_ = nullptr;                 ///< Run's (its warnings)
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
     double t, energy;                    ///< energy: the mechanical energy left times friction's share of the losses
