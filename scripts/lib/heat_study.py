@@ -65,7 +65,7 @@ def run_one(root, build_dir, ranks, out, extra, env, reuse, sawtooth=False):
                    "-crack_state_every", "1", "-probe_every", "1"] if sawtooth else
                   ["-output_times", ",".join(map(str, TIMES)), "-crack_state_every", "0"])
         command = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm"), "-options_file",
-                   os.path.join(root, "options", "paper.opts"), "-output_dir", out] + record + extra
+                   os.path.join(root, "options", "paper.opts"), "-overwrite", "-output_dir", out] + record + extra
         result = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
         if result.returncode != 0:
             sys.exit("scripts/convergence: %s failed:\n%s" % (out, result.stderr[-3000:]))

@@ -73,11 +73,11 @@ def check_restart_inside_continuation(check, exe, args, tmp):
     ladder long enough to catch, e.g. camera windows) restarts from its checkpoint and ends
     identical to the run never stopped: energy.csv, probes.csv, periodic.csv, summary figures."""
     whole, stopped = os.path.join(tmp, "whole"), os.path.join(tmp, "stopped")
-    r = subprocess.run([exe] + args + ["-output_dir", whole], capture_output=True, text=True)
+    r = subprocess.run([exe] + args + ["-overwrite", "-output_dir", whole], capture_output=True, text=True)
     check(r.returncode == 0, "%s: %s" % (whole, r.stderr[-1500:]))
     if r.returncode != 0:
         return
-    p = subprocess.Popen([exe] + args + ["-output_dir", stopped], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    p = subprocess.Popen([exe] + args + ["-overwrite", "-output_dir", stopped], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True)
     for line in p.stdout:
         if line.startswith("Periodic at"):

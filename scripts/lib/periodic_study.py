@@ -33,7 +33,7 @@ def scene_options(root, scene, duration):
 def run_one(root, build_dir, ranks, out, options, env, reuse):
     if reuse and os.path.exists(os.path.join(out, "summary.json")):
         return
-    cmd = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm")] + options + ["-output_dir", out]
+    cmd = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm")] + options + ["-overwrite", "-output_dir", out]
     print("run:", " ".join(cmd[3:]), flush=True)
     subprocess.run(cmd, env=env, check=True, stdout=subprocess.DEVNULL, cwd=root)  # options files include others by relative path
 

@@ -10,6 +10,7 @@
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/options/petsc/option_choice.hpp"
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
@@ -244,8 +245,13 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDist
   PetscCall(KSPGetOptionsPrefix(ksp, &factor_prefix));
   PetscCall(wave::CheckFactorMemory(K_, factor_prefix,
                                     {"Modes", "-modes_memory_limit", options.memory_limit_gb, options.force}));
+  PetscCall(PetscPrintf(comm, "Modes: shift-invert about %g Hz (MUMPS factors the stiffness), %" PetscInt_FMT
+                              " modes sought\n", options.target_frequency, options.n));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
-  PetscCall(EPSSolve(eps));
+  {
+    const Heartbeat beat(comm, "Modes: solving");  // MUMPS and SLEPc say nothing for minutes on a 3D box
+    PetscCall(EPSSolve(eps));
+  }
   PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));
   PetscInt converged;
   PetscCall(EPSGetConverged(eps, &converged));

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "vibrotherm/coupling/exchange/camera_face.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
 
 namespace vibrotherm::coupling {
@@ -20,7 +21,11 @@ PetscErrorCode CheckCameraOptions(MPI_Comm comm, const CameraOptions& o) {
     PetscCheck(std::isfinite(value), comm, PETSC_ERR_USER_INPUT, "%s must be finite, got %g", option, value);
   PetscCheck(o.fps >= 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_fps must be >= 0 (0: no camera), got %g", o.fps);
   PetscCheck(o.pixel > 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_pixel must be > 0, got %g", o.pixel);
-  PetscCheck(o.netd >= 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_netd must be >= 0, got %g", o.netd);
+  PetscCheck(o.netd > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-camera_netd must be > 0 (every camera has noise: detectability is the peak rise over it; the noise-free "
+             "frames are in camera.h5 as clean_k), got %g", o.netd);
+  PetscCheck(o.face.empty() || IsCameraFace(o.face), comm, PETSC_ERR_USER_INPUT,
+             "-camera_face %s: unknown face (front, back, top, bottom, left, right)", o.face.c_str());
   PetscCheck(o.integration > 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_integration must be > 0, got %g",
              o.integration);
   PetscCheck(o.fps == 0.0 || o.integration <= (1.0 / o.fps) * (1 + 1e-12), comm, PETSC_ERR_USER_INPUT,

@@ -6,13 +6,15 @@
 #include "vibrotherm/coupling/run/recording.hpp"
 #include "vibrotherm/coupling/exchange/heat_camera.hpp"
 #include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
 
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
-PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                                 bool restarting) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
   scene_ = &scene;
@@ -28,7 +30,7 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   PetscCall(PetscLogStageRegister("Heat steps", &heat_stage_));
   if (run.physics != PhysicsChoice::Heat) {
     waves_ = std::make_unique<WaveComponent>();
-    PetscCall(waves_->Setup(specimen, scene, summary));
+    PetscCall(waves_->Setup(specimen, scene, summary, restarting));
     strain_ = std::make_unique<ResponseStrain>(scene.material.cs());
   }
   const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
@@ -112,9 +114,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
   const double heat_dt = scene_->couple_dt / per_interval;
   const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
-  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
-  const double expected_end =
-      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
+  const double expected_end = scene_->waves_expected_end();
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
@@ -297,12 +297,13 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   }
   heat.on_step = nullptr;
   if (interrupted_by_ && heat_alone_from_ >= 0.0)
-    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
-                                "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
-                          SignalName(interrupted_by_), heat.time(), heat_alone_from_));
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping; -restart %s resumes "
+                                "from its checkpoint at t = %.6g s, where the waves stopped, and repeats this phase\n",
+                          stop_signals::Name(interrupted_by_), heat.time(), dir_.c_str(), heat_alone_from_));
   else if (interrupted_by_)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
-                                "(this scene has none): the run is lost\n", SignalName(interrupted_by_), heat.time()));
+                                "(this scene has none): the run is lost\n", stop_signals::Name(interrupted_by_), heat.time()));
+  if (interrupted_by_) stop_signals::Stopping();
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());

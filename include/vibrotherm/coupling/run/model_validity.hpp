@@ -25,7 +25,10 @@
 
 namespace vibrotherm::coupling {
 
-/// The strain and mesh checks of a scene with waves; h_max: the largest element edge [m]. Collective.
+/// Before meshing: the strain check, and the mesh check against the finest element the options
+/// ask for (finest_h [m]; 0: unknown, a mesh file). Collective.
+PetscErrorCode CheckSourceBeforeMeshing(MPI_Comm comm, const Scene& scene, double finest_h, io::RunSummary* summary);
+/// Once meshed: the mesh check; h_max: the largest element edge [m]. Collective.
 PetscErrorCode CheckSourceValidity(MPI_Comm comm, const Scene& scene, double h_max, io::RunSummary* summary);
 
 /// The response's strain (above): the largest estimate so far, a warning when it crosses a limit.

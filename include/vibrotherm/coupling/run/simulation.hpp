@@ -56,7 +56,9 @@ class Simulation {
   Simulation();
   ~Simulation();
   /// Builds what the scene needs; all input is checked here, before any output.
-  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  /// restarting: the state will come from a checkpoint (the harmonic start is not solved).
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                       bool restarting = false);
   /// Runs to the final time (or until a signal stops it), writing the outputs into dir.
   PetscErrorCode Run(const std::string& dir, io::RunSummary* summary, const RunControl& control);
   /// The signal that stopped the run (0: it ran to its end).
