@@ -24,7 +24,9 @@ void SourcePowerLog::Record(const SourcePowerRow& r) {
   std::ostream& out = file_->stream();
   out << r.t_start << ',' << r.t_end << ',' << r.periods << ',' << r.frequency << ',' << r.amplitude << ',' << r.input
       << ',' << r.friction << ',' << r.damping << ',' << r.radiated << ',';
+  // No input (the source stopped, the waves ring down): no efficiency, nan for every CSV reader.
   if (r.input > 0.0) out << r.efficiency();
+  else out << "nan";
   out << '\n';
 }
 

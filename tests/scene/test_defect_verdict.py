@@ -17,7 +17,7 @@ excitation from its harmonic start, resolved (no continuation, the waves run to 
   - the source's power over the last steady periods closes on its losses: input = friction +
     damping + radiated within 1 % (a steady state stores nothing more), the efficiency is
     friction / input, and source_power.csv has a row per source period; a traction source
-    reports its power too.
+    reports its power too; the rows go on through the ring-down (no input, efficiency nan).
 
 usage: test_defect_verdict.py VIBROTHERM SOURCE_DIR"""
 import json
@@ -82,9 +82,15 @@ with tempfile.TemporaryDirectory() as tmp:
             check(abs(s["thermosonic_efficiency"] - s["friction_power"] / s["input_power"]) < 1e-12,
                   "%s: efficiency = friction / input" % name)
         rows = read_csv(os.path.join(friction_only, "source_power.csv"))
-        periods = 2e-3 * float(a["option_values"]["-source_frequency"]["value"])
-        check(abs(len(rows["t_start"]) - periods) <= 2, "source_power.csv: a row per period (%d for %.0f)" % (
-            len(rows["t_start"]), periods))
+        f = float(a["option_values"]["-source_frequency"]["value"])
+        driven = rows["amplitude"] > 0
+        # A row per period to the end (the ring-down after the switch-off too: input 0, efficiency nan).
+        check(abs(len(rows["t_start"]) - 2.5e-3 * f) <= 2 and abs(driven.sum() - 2e-3 * f) <= 2,
+              "source_power.csv: a row per period (%d for %.0f, %d driven for %.0f)" % (
+                  len(rows["t_start"]), 2.5e-3 * f, driven.sum(), 2e-3 * f))
+        check(np.isnan(rows["efficiency"][rows["input_power"] == 0]).all() and
+              np.isfinite(rows["efficiency"][rows["input_power"] > 0]).all(),
+              "source_power.csv: the efficiency where something is put in, nan where nothing is")
         e = read_csv(os.path.join(friction_only, "energy.csv"))
         w = b["source_power"][-1]
         at = lambda t: np.interp(t, e["t"], e["dissipated"])  # noqa: E731

@@ -80,6 +80,8 @@ ALLOWED = {
     "-output_times": {"0"},
     # Poisson ratio in (-1, 0.5): 0 is valid.
     "-material_nu": {"0"},
+    # "0: no damping" (-help).
+    "-material_loss_factor": {"0"},
     # No thermoelastic coupling (-help: "(-thermoelastic)"; the heat reader wants >= 0).
     "-material_expansion": {"0"},
     # "0: a 2D plane-strain specimen" (-help).

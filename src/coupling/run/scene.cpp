@@ -113,7 +113,9 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
   const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
   const double per_period = period / heat_dt;
   const bool divides = std::abs(per_period - std::round(per_period)) <= 1e-9 * per_period;
-  if (divides && s->wave.dt <= 0.0 && !s->excitation.signal.sweeping())
+  // Only for a continuation: quantizing shrinks the step (a run without one keeps its own CFL step;
+  // the source's power between rows that miss a period boundary is then interpolated).
+  if (divides && s->wave.dt <= 0.0 && s->periodic.on)
     s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
   if (s->periodic.on && s->wave.step_quantum <= 0.0) {
     s->periodic.on = false;

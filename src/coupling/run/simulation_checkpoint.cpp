@@ -70,6 +70,7 @@ PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder, bool waves_quiet)
   std::vector<double> quiet = {peak_mechanical_, mechanical_left_};
   for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy, s.dissipated, s.damped, s.radiated});
   checkpoint.PutShared("run/quiet_rule", quiet);
+  checkpoint.PutShared("run/response_strain", strain_->state());
   PetscCall(checkpoint.Write(dir_ + "/checkpoint.h5"));
   PetscFunctionReturn(0);
 }
@@ -92,6 +93,11 @@ PetscErrorCode Simulation::Resume(const store::Checkpoint& checkpoint, Recorder&
   for (std::size_t i = 2; i + 4 < quiet.size(); i += 5)
     recent_.push_back({quiet[i], quiet[i + 1], quiet[i + 2], quiet[i + 3], quiet[i + 4]});
   waves_quiet_at_restart_ = checkpoint.Has("run/waves_quiet");
+  if (checkpoint.Has("run/response_strain")) {  // older checkpoints: the peak since the restart
+    std::vector<double> strain;
+    PetscCall(checkpoint.GetShared("run/response_strain", &strain, 2));
+    strain_->Restore(strain);
+  }
   PetscCall(PetscPrintf(comm, "Restarted from the checkpoint at t = %.6g s (wave step %" PetscInt_FMT ")\n",
                         waves_->solver().time(), waves_->solver().steps()));
   PetscFunctionReturn(0);

@@ -5,9 +5,9 @@
 // source-period boundary (the source's cycles: a sweep's too) give each period's
 // mean powers, written to source_power.csv. A boundary between two rows takes the
 // accounts interpolated linearly between them: exact where the rows land on the
-// boundaries (a periodic source: the steps are quantized so that the coupling intervals
-// divide its period, coupling/run/scene.cpp), approximate otherwise (-wave_dt, a
-// -couple_dt that does not divide the period, a sweep's moving period). A lightly
+// boundaries (a periodic continuation: the steps are quantized so that the coupling
+// intervals divide its period, coupling/run/scene.cpp), within a wave step's exchange
+// otherwise (no continuation, -wave_dt, a sweep's moving period). A lightly
 // damped specimen's source power swings far above its mean within a period, so only
 // whole periods mean anything.
 //

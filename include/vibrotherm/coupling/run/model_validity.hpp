@@ -20,6 +20,8 @@
 
 #include <petscsys.h>
 
+#include <vector>
+
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 
@@ -38,6 +40,12 @@ class ResponseStrain {
   /// max |v| / c_s now; warns (once per limit) at t. Collective.
   PetscErrorCode Check(const wave::WaveSolver& waves, io::RunSummary* summary);
   double peak() const { return peak_; }
+  /// The peak so far and the limits warned about: a restart continues them.
+  std::vector<double> state() const { return {peak_, static_cast<double>(warned_)}; }
+  void Restore(const std::vector<double>& state) {
+    peak_ = state.at(0);
+    warned_ = static_cast<int>(state.at(1));
+  }
 
  private:
   double shear_speed_, peak_ = 0.0;
