@@ -1,7 +1,7 @@
 """camera.png: what the IR camera saw (camera.h5 of a -camera run).
 
     draw(run_dir, out_png)      draws, or prints "skipped camera.png: <why>"
-    figure(run_dir)             the figure, or raises run_data.Skip (scripts/plot's list)
+    figure(run_dir)             the figure, or raises vibrotherm.MissingOutput (scripts/plot's list)
 
 Left: the best frame (largest noise-free pixel) without noise; middle: the same frame as
 the camera reads it (with NETD noise); right: the peak SNR of every frame (its largest
@@ -13,7 +13,8 @@ import os
 
 import numpy as np
 
-from run_data import Skip
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+from vibrotherm import MissingOutput as Skip
 
 
 def _read(run_dir):

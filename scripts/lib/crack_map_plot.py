@@ -1,7 +1,7 @@
 """crack_maps.png: a 3D run's crack surfaces (crack_state.csv, fields.h5), each in its crack plane
 (one crack: 2 x 2 maps; several: a row of the four maps per crack).
 
-    figure(run)        the figure, or raises run_data.Skip (scripts/plot's list; 2D runs
+    figure(run)        the figure, or raises vibrotherm.MissingOutput (scripts/plot's list; 2D runs
                        have crack_spacetime.png and temperature_maps.png instead)
 
 Maps over (s1, s2), the position on the crack plane from its centre (s1 along t1, the
@@ -19,7 +19,8 @@ numpy, h5py and matplotlib only.
 import numpy as np
 from matplotlib.tri import Triangulation
 
-from run_data import Skip
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+from vibrotherm import MissingOutput as Skip
 
 
 def _triangulation(s1, s2):

@@ -10,7 +10,8 @@ import time
 
 import numpy as np
 
-from run_data import read_csv
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+from vibrotherm.csv_tables import read_columns as read_csv
 
 
 def summary(out):
