@@ -42,16 +42,17 @@ def read_frame(path, name=None, dimension=2):
     import pandas as pd
 
     names, data = _whole_rows(path)
-    frame = pd.read_csv(io.BytesIO(b",".join(n.encode() for n in names) + b"\n" + data), dtype={"state": "object"},
-                        keep_default_na=True)
+    frame = pd.read_csv(io.BytesIO(b",".join(n.encode() for n in names) + b"\n" + data),
+                        float_precision="round_trip")  # the numbers as written, to the last bit
     if len(frame.columns) != len(names):
         raise ValueError("%s: %d columns in the header, %d in the rows" % (path, len(names), len(frame.columns)))
-    if "state" in frame and frame["state"].dtype == object:
-        present = set(frame["state"].dropna())
-        if present and present <= set(STATES):
-            frame["state"] = pd.Categorical(frame["state"], categories=STATES)
-        else:  # periodic.csv: a relative change; or no contact state in any row
-            frame["state"] = pd.to_numeric(frame["state"])
+    if frame.empty:  # a header only: every column a number
+        frame = frame.astype("float64")
+    if "state" in frame and frame["state"].dtype == object:  # contact states (periodic.csv's is a number)
+        unknown = set(frame["state"].dropna()) - set(STATES)
+        if unknown:
+            raise ValueError("%s: unknown contact states %s" % (path, sorted(unknown)[:3]))
+        frame["state"] = pd.Categorical(frame["state"], categories=STATES)
     for column in ("probe", "crack", "mode", "multiple"):
         if column in frame and frame[column].notna().all() and len(frame):
             frame[column] = frame[column].astype("int64")

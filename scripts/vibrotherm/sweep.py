@@ -82,7 +82,8 @@ def summary_row(k, options, status, out, stderr_text=""):
 
 def resolved_cost(summary):
     """(wall seconds, the same case's estimated wall seconds had it never been continued): the
-    wave stages scaled by the wave time it ran over the wave time it simulated."""
+    wave stages scaled by the wave time it ran over the wave time it simulated, the heat steps
+    grown by one per heat_dt of the time continued."""
     wall = float(summary.get("wall_time_s", 0.0))
     segments = summary.get("periodic", []) or []
     span = summary.get("physics_time", {}).get("wave", [0.0, 0.0])
@@ -91,8 +92,11 @@ def resolved_cost(summary):
     if skipped <= 0 or simulated <= 0:
         return wall, wall
     stages = summary.get("stages", {})
-    waves = stages.get("wave_steps", 0.0) + stages.get("contact", 0.0)
-    return wall, wall + waves * ((span[1] - span[0]) / simulated - 1.0)
+    waves = (stages.get("wave_steps", 0.0) + stages.get("contact", 0.0)) * ((span[1] - span[0]) / simulated - 1.0)
+    # Resolved, the heat takes a step every heat_dt where the continuation took a few of a ladder.
+    heat_dt, heat_steps = summary.get("derived", {}).get("heat_dt", 0.0), summary.get("steps_heat", 0)
+    heat = stages.get("heat_steps", 0.0) * skipped / heat_dt / heat_steps if heat_dt > 0 and heat_steps > 0 else 0.0
+    return wall, wall + waves + heat
 
 
 def _duration(seconds):
