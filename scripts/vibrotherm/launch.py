@@ -48,6 +48,25 @@ def option_words(options):
     return words
 
 
+def is_option_name(word):
+    """-name is an option, -1e-3 and -inf values (as vibrotherm's options reader tells them)."""
+    return (len(word) > 1 and word[0] == "-" and (word[1].isalpha() or word[1] == "_")
+            and word[1:].lower() not in ("nan", "inf", "infinity"))
+
+
+def option_dict(words):
+    """{name: value} of command-line words "-a 1 -b -c x" in order: a flag without a value is
+    True (option_words turns it back into the flag alone). ValueError on a value without its option."""
+    options, k = {}, 0
+    while k < len(words):
+        if not is_option_name(words[k]):
+            raise ValueError("%r: expected an option (-name) before %r" % (" ".join(words), words[k]))
+        has_value = k + 1 < len(words) and not is_option_name(words[k + 1])
+        options[words[k][1:]] = words[k + 1] if has_value else True
+        k += 2 if has_value else 1
+    return options
+
+
 def error_line(text):
     """The line of a run's stderr that says what went wrong: vibrotherm's own error, else
     PETSc's message, else the first line that is not MPI's frame."""

@@ -10,7 +10,7 @@ import os
 import re
 import xml.etree.ElementTree as ElementTree
 
-from . import csv_tables, h5_arrays
+from . import crack_geometry, csv_tables, h5_arrays
 
 
 class MissingOutput(LookupError):
@@ -169,6 +169,11 @@ class Run:
     def period(self):
         """The source period [s] (1 / -source_frequency)."""
         return 1.0 / self.option_number("source_frequency", 1e5)
+
+    def crack_outlines(self):
+        """[(crack name, polyline (n × dim) [m])]: 2D the cracks' lines (mesh.h5), 3D their outlines
+        from the options (rectangle or ellipse); a crack the run cannot place is left out."""
+        return crack_geometry.outlines(self)
 
     def crack_probes(self):
         """{crack k: (probe index, xi)} of the crack probe nearest each crack's centre."""
