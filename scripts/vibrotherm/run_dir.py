@@ -10,6 +10,8 @@ import os
 import re
 import xml.etree.ElementTree as ElementTree
 
+import numpy as np
+
 from . import crack_geometry, csv_tables, h5_arrays
 
 
@@ -322,6 +324,34 @@ class Run:
             return None
         start = max(0.0, min(ran / 2, ran - cycles * self.period))
         return start, min(start + cycles * self.period, ran)
+
+    def steady_window(self, times, cycles):
+        """[start, end) of `cycles` source periods that the record `times` (a table's t column)
+        covers without a gap: the middle of the excitation that ran (excitation_window) when
+        recorded there, else the last `cycles` periods recorded before the source stopped (a
+        periodic continuation records nothing while it continues: its rows are the simulated
+        stretches); None when no such window was recorded."""
+        times = np.unique(np.asarray(times, float))
+        if len(times) < 3:
+            return None
+        period = self.period
+
+        def covered(window):
+            inside = times[(times >= window[0]) & (times <= window[1])]
+            if len(inside) < 3:
+                return False
+            gaps = np.diff(np.concatenate([[window[0]], inside, [window[1]]]))
+            return gaps.max() <= 0.5 * period
+
+        middle = self.excitation_window(times[-1], cycles)
+        if middle and covered(middle):
+            return middle
+        ran = min(self.option_number("source_duration", times[-1]), times[-1])
+        before = times[times <= ran * (1 + 1e-12)]
+        if len(before) == 0:
+            return None
+        last = (max(0.0, before[-1] - cycles * period), before[-1])
+        return last if last[1] - last[0] >= period * (1 - 1e-9) and covered(last) else None
 
 
 def load(directory):
