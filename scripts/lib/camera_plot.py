@@ -22,12 +22,16 @@ from vibrotherm.crack_geometry import project
 CRACK_COLOUR = "cyan"
 
 
+PREFIXES = {0: "K", -3: "mK", -6: "µK", -9: "nK", -12: "pK", -15: "fK", -18: "aK"}
+
+
 def temperature_unit(peak):
-    """(scale, unit) for temperatures up to `peak` [K]: values between 0.1 and 1000 on the bars."""
-    for scale, unit in ((1.0, "K"), (1e3, "mK"), (1e6, "µK"), (1e9, "nK")):
-        if abs(peak) * scale >= 0.1:
-            return scale, unit
-    return 1e9, "nK"
+    """(scale, unit) for temperatures up to `peak` [K]: values from 1 to 1000 on the bars (K for
+    1 K and more), so that no exponent sits above a colour bar."""
+    if not np.isfinite(peak) or peak <= 0:
+        return 1.0, "K"
+    exponent = min(0, 3 * int(np.floor(np.log10(peak) / 3)))
+    return 10.0 ** -exponent, PREFIXES.get(exponent, "1e%d K" % exponent)
 
 
 def _hot_box(values, extent):
