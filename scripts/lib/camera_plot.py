@@ -152,8 +152,8 @@ def figure(run):
     else:
         cmap, vmin, vmax = "inferno", 0.0, max(peaks[best] * scale, 1e-300)
     where = " on the %s face" % face if face else ""
-    _image(axes[0], fig, clean * scale, extent, "best frame %d%s, %s, without noise\npeak %.3g %s; dashed: the crack"
-           % (best, where, when, peaks[best] * scale, unit), cmap, unit, vmin=vmin, vmax=vmax,
+    _image(axes[0], fig, clean * scale, extent, "best frame %d, %s, no noise\npeak %.3g %s; dashed: the crack"
+           % (best, when, peaks[best] * scale, unit), cmap, unit, vmin=vmin, vmax=vmax,
            box=_hot_box(clean, extent), axes=axes_names)
     _draw_cracks(axes[0], lines)
     # Scaled as the camera's display would be: the noise band (±2 NETD) or the signal, whichever is larger.

@@ -139,10 +139,10 @@ def write_table(path, rows, option_columns):
 class _Sweep:
     """The state of a sweep under way: which cases run, which finished, the table so far."""
 
-    def __init__(self, options_file, cases, output_dir, common, ranks, jobs, program, resume, report):
+    def __init__(self, options_file, cases, output_dir, common, ranks, jobs, program, resume, overwrite, report):
         self.options_file, self.cases, self.output_dir = options_file, cases, os.path.abspath(output_dir)
         self.common, self.ranks, self.jobs, self.program = common, ranks, jobs, program
-        self.resume, self.report = resume, report
+        self.resume, self.overwrite, self.report = resume, overwrite, report
         self.lock, self.stopping = threading.Lock(), threading.Event()
         self.live, self.started, self.rows, self.costs, self.interrupted = {}, {}, {}, [], []
         self.option_columns = []
@@ -165,6 +165,8 @@ class _Sweep:
                     k, " ".join(before), _words(options)))
             if os.path.exists(os.path.join(out, "checkpoint.h5")):
                 options["restart"] = out
+        if self.overwrite and "restart" not in options:
+            options["overwrite"] = True
         with open(record, "w") as f:
             json.dump(launch.option_words(dict(self.common, **self.cases[k])), f)
         return launch.command(self.options_file, options, out, self.ranks, self.program)
@@ -231,18 +233,20 @@ class _Sweep:
                     pass
 
 
-def sweep(options_file, cases, output_dir, common=None, ranks=1, jobs=1, program=None, resume=False, report=print):
+def sweep(options_file, cases, output_dir, common=None, ranks=1, jobs=1, program=None, resume=False, overwrite=False,
+          report=print):
     """Runs every case (a list of override dicts; [] or [{}]: the scene as it is) with `common`
     given to all, `jobs` at a time on `ranks` ranks each, and returns sweep.csv as a pandas
     DataFrame (attrs["runs"] = {case: its directory}). resume=True reuses the complete runs of
     an earlier sweep into the same directory (same options) and continues the interrupted ones
-    with -restart. Progress lines go to `report`. A failed case is a row with its status and
+    with -restart; overwrite=True gives every case -overwrite (an earlier run in its directory is
+    replaced). Progress lines go to `report`. A failed case is a row with its status and
     error line; the others go on."""
     import pandas as pd
 
     cases = [dict(c) for c in cases] or [{}]
     state = _Sweep(options_file, cases, output_dir, dict(common or {}), ranks, jobs,
-                   program or project.executable(), resume, report)
+                   program or project.executable(), resume, overwrite, report)
     os.makedirs(state.output_dir, exist_ok=True)
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(state.run_case, k) for k in range(len(cases))]
