@@ -28,17 +28,12 @@ import tempfile
 
 import numpy as np
 
-exe, src = sys.argv[1:3]
-sys.path.insert(0, os.path.join(src, "scripts"))
-sys.path.insert(0, os.path.join(src, "tests", "scene"))
-import vibrotherm as vt  # noqa: E402
-from checks import Checks  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import package_test  # noqa: E402
 
-check = Checks("plots")
-paper = os.path.join(src, "options", "paper.opts")
-block = os.path.join(src, "options", "block3d_small.opts")
-coarse = {"mesh_h": 0.004, "mesh_h_crack": 0.001, "wave_degree": 1}
-program = os.path.abspath(exe)
+test = package_test.setup("plots")
+vt, check, program, src = test.vt, test.check, test.program, test.src
+paper, block, coarse = test.paper, test.block, test.coarse
 loader = importlib.machinery.SourceFileLoader("plot_script", os.path.join(src, "scripts", "plot"))
 plot = importlib.util.module_from_spec(importlib.util.spec_from_loader("plot_script", loader))
 loader.exec_module(plot)

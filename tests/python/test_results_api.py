@@ -29,7 +29,6 @@ import csv
 import json
 import math
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -37,16 +36,12 @@ import tempfile
 import h5py
 import numpy as np
 
-exe, src = sys.argv[1:3]
-sys.path.insert(0, os.path.join(src, "scripts"))
-sys.path.insert(0, os.path.join(src, "tests", "scene"))
-import vibrotherm as vt  # noqa: E402
-from checks import Checks  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import package_test  # noqa: E402
 
-check = Checks("results from Python")
-paper = os.path.join(src, "options", "paper.opts")
-coarse = {"mesh_h": 0.004, "mesh_h_crack": 0.001, "wave_degree": 1}
-program = os.path.abspath(exe)
+test = package_test.setup("results from Python")
+vt, check, program, src = test.vt, test.check, test.program, test.src
+paper, block, coarse = test.paper, test.block, test.coarse
 
 
 def raw_rows(path):
