@@ -39,15 +39,22 @@ def figure(run):
     top.set_ylabel("mean power per period [%s]" % unit)
     top.legend(fontsize=8)
     top.grid(alpha=0.3)
-    if sweep:
-        friction = table["friction_power"].to_numpy()
-        k = int(np.argmax(friction))
+    if sweep:  # the heating's peak: the crack's friction, or the damping where nothing rubs (an open crack)
+        heating = "friction_power" if table["friction_power"].max() > 0 else "damping_power"
+        values = table[heating].to_numpy()
+        k = int(np.argmax(values))
         top.axvline(x[k], color="C3", lw=0.8, alpha=0.6)
-        top.annotate("friction peaks at %.4g kHz" % x[k], (x[k], friction[k]), textcoords="offset points",
-                     xytext=(6, -12), fontsize=8, color="C3")
-    efficiency = table["efficiency"].to_numpy()
-    bottom.plot(x, 100 * efficiency, "k-", lw=1)
-    bottom.set_ylabel("thermosonic efficiency [%]\n(friction / input)")
+        top.annotate("%s peaks at %.4g kHz" % ("friction" if heating == "friction_power" else "damping", x[k]),
+                     (x[k], values[k]), textcoords="offset points", xytext=(-6, 8), ha="right", fontsize=8, color="C3")
+        # A sweep's input swings through negative periods: the friction's share of the losses instead.
+        losses = (table["friction_power"] + table["damping_power"] + table["radiated_power"]).to_numpy()
+        share = np.divide(table["friction_power"].to_numpy(), losses, out=np.full(len(losses), np.nan),
+                          where=losses > 0)
+        bottom.plot(x, 100 * share, "k-", lw=1)
+        bottom.set_ylabel("friction's share of the losses [%]")
+    else:
+        bottom.plot(x, 100 * table["efficiency"].to_numpy(), "k-", lw=1)
+        bottom.set_ylabel("thermosonic efficiency [%]\n(friction / input)")
     bottom.set_xlabel(label)
     bottom.grid(alpha=0.3)
     f = table["frequency"].to_numpy()
