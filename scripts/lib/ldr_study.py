@@ -65,19 +65,30 @@ def modes_in_band(runner, band, log):
 
 
 def candidates(modes, band, n_modes, n_off):
-    """The modes of largest participation, and off-resonance frequencies at the centres of the widest gaps."""
+    """The modes of largest participation, and off-resonance frequencies at the (geometric) centres of
+    the widest gaps between the band's modes and edges, one per gap; when the band has fewer gaps
+    than n_off, the widest halves left are split again (a band with few modes still gets n_off)."""
     chosen = sorted(modes, key=lambda m: -m[1])[:n_modes]
     picks = [{"frequency": f, "participation": p, "mode": True} for f, p in chosen]
-    edges = [band[0]] + [f for f, _ in modes] + [band[1]]
-    gaps = sorted(((math.log(b / a), math.sqrt(a * b)) for a, b in zip(edges, edges[1:]) if b > a * 1.02),
-                  reverse=True)
-    for _, f in gaps[:n_off]:
-        picks.append({"frequency": round(f, 2), "participation": None, "mode": False})
+    edges = [band[0]] + sorted(f for f, _ in modes) + [band[1]]
+    unpicked = sorted(((a, b) for a, b in zip(edges, edges[1:]) if b > a * 1.02), key=lambda g: g[0] / g[1])
+    halves = []  # the two sides of every gap picked so far
+    for _ in range(n_off):
+        if unpicked:
+            a, b = unpicked.pop(0)
+        elif halves:
+            a, b = max(halves, key=lambda g: g[1] / g[0])
+            halves.remove((a, b))
+        else:
+            break
+        middle = math.sqrt(a * b)
+        halves += [(a, middle), (middle, b)]
+        picks.append({"frequency": round(middle, 2), "participation": None, "mode": False})
     return sorted(picks, key=lambda c: c["frequency"])
 
 
 class LdrStudy:
-    def __init__(self, runner, options, band, duration, log=print, n_modes=5, n_off=4, thresholds=3,
+    def __init__(self, runner, options, band, duration, log=print, n_modes=5, n_off=None, thresholds=3,
                  ldr_participation=0.8, power=None):
         self.runner, self.options, self.band, self.duration, self.log = runner, options, band, duration, log
         self.n_modes, self.n_off, self.n_thresholds = n_modes, n_off, thresholds
@@ -218,7 +229,9 @@ class LdrStudy:
         if not modes:
             raise StudyError("--band %g,%g holds no mode of the scene: widen it (the scene's modes: -modes)" % tuple(
                 self.band))
-        picks = candidates(modes, self.band, self.n_modes, self.n_off)
+        # None: 4 off-resonance frequencies, or more so that a band with few modes still has 8 candidates.
+        n_off = self.n_off if self.n_off is not None else max(4, 8 - min(len(modes), self.n_modes))
+        picks = candidates(modes, self.band, self.n_modes, n_off)
         self.log("candidates: " + ", ".join("%.0f Hz%s" % (c["frequency"], " (mode, %.2f)" % c["participation"]
                                                             if c["mode"] else "") for c in picks))
         picks = self.common_power(picks)
