@@ -144,6 +144,10 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(PetscOptionsReal("-mesh_grading", "Element size growth per metre of distance from a crack", nullptr,
                              g->grading, &g->grading, nullptr));
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
+  PetscCall(PetscOptionsReal("-mesh_crack_mirror",
+                             "Half-width [m] of the band around each crack meshed mirror-symmetric across it (0: none; "
+                             "default: the width over which the mesh grades from -mesh_h_crack to -mesh_h)",
+                             nullptr, g->crack_mirror_width, &g->crack_mirror_width, nullptr));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
   PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &tilts, &shapes, &three_d_given));
