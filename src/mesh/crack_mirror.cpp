@@ -91,8 +91,8 @@ std::optional<double> EndOffset(const SpecimenGeometry& g, const Crack& c, int w
   return std::nullopt;
 }
 
-/// The band of half-width w around crack i, if it fits the specimen and keeps an element
-/// away from the other cracks and from the bands already planned.
+/// The band of half-width w around crack i, if it fits the specimen, stays half-way (and an
+/// element) from the other cracks and an element from the bands already planned.
 std::optional<CrackMirror> TryBand(const SpecimenGeometry& g, std::size_t i, double w,
                                    const std::vector<CrackMirror>& planned) {
   const Crack& c = g.cracks[i];
@@ -107,8 +107,10 @@ std::optional<CrackMirror> TryBand(const SpecimenGeometry& g, std::size_t i, dou
   if (!t0 || !t1 || c.length + *t0 + *t1 < 2.0 * g.h_crack) return std::nullopt;
   band.e0 = Add(band.p0, Scale(-*t0, d));
   band.e1 = Add(band.p1, Scale(*t1, d));
-  for (std::size_t j = 0; j < g.cracks.size(); ++j)
-    if (j != i && Distance(band.outline(), {g.cracks[j].end(0), g.cracks[j].end(1)}) < g.h_crack) return std::nullopt;
+  for (std::size_t j = 0; j < g.cracks.size(); ++j)  // at most half-way to another crack: room for its band
+    if (j != i && Distance(band.outline(), {g.cracks[j].end(0), g.cracks[j].end(1)}) <
+                      std::max(g.h_crack, 0.5 * crack_distance(c, g.cracks[j])))
+      return std::nullopt;
   for (const CrackMirror& other : planned)
     if (Distance(band.outline(), other.outline()) < g.h_crack) return std::nullopt;
   return band;

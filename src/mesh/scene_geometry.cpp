@@ -173,7 +173,7 @@ void SpecimenGeometry::validate() const {
     reject(msg.str());
   }
   if (!std::isfinite(crack_mirror_width)) {
-    msg << "-mesh_crack_mirror must be a width in metres (0: none), got " << crack_mirror_width;
+    msg << "-mesh_crack_mirror must be a half-width in metres (0: none; negative: the default width), got " << crack_mirror_width;
     reject(msg.str());
   }
   const double tol = tolerance(*this);

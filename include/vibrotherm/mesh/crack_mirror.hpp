@@ -18,8 +18,8 @@
 // outer edge perpendicular to the crack is the band's end; an end on an inclined edge
 // stops the band short of it where the band still fits (the last stretch of the crack
 // there is meshed as before: its geometry is not symmetric either). A band that does not
-// fit in the specimen or comes near another crack's is narrowed, down to 2 elements; a
-// crack that has none then is said (`why`).
+// fit in the specimen or reaches half-way to another crack is narrowed, down to 2
+// elements; a crack that has none then is said (`why`).
 #pragma once
 
 #include <array>
