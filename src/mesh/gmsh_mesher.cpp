@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -56,6 +57,22 @@ int SurfaceAfterFragment(const DimTags& produced) {
   throw std::runtime_error("gmsh: a crack's mirror band vanished in the fragment");
 }
 
+/// gmsh's 2D mesher; its own errors (it throws strings) become one line naming the mesh options.
+void generate_2d(const SpecimenGeometry& g) {
+  try {
+    gmsh::model::mesh::generate(2);
+  } catch (const std::exception&) {
+    throw;
+  } catch (...) {
+    char text[400];
+    std::snprintf(text, sizeof(text),
+                  "gmsh could not mesh the specimen with -mesh_h %g, -mesh_h_crack %g, -mesh_grading %g (its "
+                  "recombination into quads failed): change -mesh_h_crack or -mesh_grading, or use -mesh_cell tri",
+                  g.h, g.h_crack, g.grading);
+    throw std::invalid_argument(text);
+  }
+}
+
 }  // namespace
 
 MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
@@ -95,7 +112,7 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // blossom
   }
-  gmsh::model::mesh::generate(2);
+  generate_2d(g);
   if (g.quads && has_triangles()) {
     // Strong grading can leave triangles after recombination: mesh at twice the
     // size and subdivide every element into quads (back to the requested size).
@@ -105,7 +122,7 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::model::mesh::clear();
     set_size_field(coarse, all_crack_curves);
     gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
-    gmsh::model::mesh::generate(2);
+    generate_2d(g);
   }
 
   MeshData mesh = collect_rectangle_mesh(g, crack_curves, "gmsh");
