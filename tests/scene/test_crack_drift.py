@@ -21,12 +21,10 @@ import sys
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
 from checks import Checks, run_scene
-from run_data import read_csv
+from crack_motion import friction_per_period, trend
 
 exe, src = sys.argv[1:3]
 check = Checks("crack drift")
@@ -39,20 +37,12 @@ SCENE = ["-options_file", os.path.join(src, "options/paper.opts"), "-physics", "
          "-crack_state_every", "0", "-probe_every", "1000"]
 
 
-def trend(out):
-    """The least-squares line through F_k over TREND: its change over 100 periods, relative to the mean F."""
-    e = read_csv(os.path.join(out, "energy.csv"))
-    F = np.diff(np.interp(PERIOD * np.arange(TREND[1] + 1), e["t"], e["dissipated"]))[TREND[0]:]
-    slope = np.polyfit(np.arange(TREND[0], TREND[1]), F, 1)[0]
-    return 100 * slope / F.mean()
-
-
 with tempfile.TemporaryDirectory() as tmp:
     runs = {m: os.path.join(tmp, m) for m in ("on", "off")}
     with ThreadPoolExecutor(max_workers=2) as pool:
         ran = list(pool.map(lambda m: run_scene(check, exe, SCENE + ["-mesh_crack_mirror", m], runs[m]), runs))
     if all(ran):
-        rise = {m: trend(out) for m, out in runs.items()}
+        rise = {m: trend(friction_per_period(out, TREND[1], PERIOD), *TREND) for m, out in runs.items()}
         print("friction per period, trend over periods %d-%d per 100 periods: mirror on %+.3f %%, off %+.3f %%" %
               (TREND[0], TREND[1], 100 * rise["on"], 100 * rise["off"]))
         check(abs(rise["on"]) < 0.8e-2, "mirror-symmetric mesh: the friction per period drifts by %+.3f %% "
