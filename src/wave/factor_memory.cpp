@@ -31,8 +31,9 @@ PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLimit& options) {
+PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLimit& options, bool* fits) {
   PetscFunctionBeginUser;
+  if (fits) *fits = true;
   MPI_Comm comm = PetscObjectComm((PetscObject)A);
   char solver[64] = MATSOLVERMUMPS;
   PetscCall(PetscOptionsGetString(nullptr, prefix, "-pc_factor_mat_solver_type", solver, sizeof solver, nullptr));
@@ -52,6 +53,12 @@ PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLi
   PetscCall(MatGetSize(A, &dofs, nullptr));
   PetscCall(PetscPrintf(comm, "%s: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT
                         " dofs (limit %.3g GB)\n", options.who, needed / 1e9, dofs, limit / 1e9));
+  if (options.fallback && !options.force && limit > 0.0 && needed > limit) {
+    PetscCall(PetscPrintf(comm, "%s: that is more than the %.3g GB allowed (%s): an iterative solve instead\n",
+                          options.who, limit / 1e9, options.option));
+    if (fits) *fits = false;
+    PetscFunctionReturn(0);
+  }
   PetscCheck(options.force || !(limit > 0.0) || needed <= limit, comm, PETSC_ERR_USER_INPUT,
              "%s: MUMPS estimates %.3g GB for the factorisation of %" PetscInt_FMT " dofs, more than the "
              "%.3g GB allowed (%s, default 0.9 x the memory available): coarsen -mesh_h, or give -force",

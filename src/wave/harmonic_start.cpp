@@ -14,10 +14,14 @@
 // at rest, so its first trial at u(0) is the stuck springs the solve assumed; the
 // initial energy (kinetic, strain, the stuck springs') is booked as the source's
 // work at t = 0, which keeps the energy budget closed.
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
+#include "vibrotherm/wave/harmonic_krylov.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::wave {
@@ -39,49 +43,122 @@ PetscErrorCode AddDamping(Mat Z, PetscInt r, PetscInt c, double b) {
   PetscFunctionReturn(0);
 }
 
-}  // namespace
-
-PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const {
+/// Per owned row of A: copies × its entries + extra (the preallocation of a matrix built from A's rows).
+PetscErrorCode StiffnessRowLengths(Mat A, PetscInt copies, PetscInt extra, std::vector<PetscInt>* lengths) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
-  PetscInt n, rstart, rend;
-  PetscCall(VecGetLocalSize(M_, &n));
-  PetscCall(VecGetOwnershipRange(M_, &rstart, &rend));
-  std::vector<PetscInt> nnz(2 * n);
+  PetscInt rstart, rend;
+  PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
+  lengths->assign(static_cast<std::size_t>(copies * (rend - rstart)), 0);
   for (PetscInt g = rstart; g < rend; ++g) {
     PetscInt ncols;
-    PetscCall(MatGetRow(A_, g, &ncols, nullptr, nullptr));
-    nnz[2 * (g - rstart)] = nnz[2 * (g - rstart) + 1] = 2 * ncols + 16;  // K, the damping blocks, a contact cell
-    PetscCall(MatRestoreRow(A_, g, &ncols, nullptr, nullptr));
+    PetscCall(MatGetRow(A, g, &ncols, nullptr, nullptr));
+    for (PetscInt part = 0; part < copies; ++part) (*lengths)[copies * (g - rstart) + part] = copies * ncols + extra;
+    PetscCall(MatRestoreRow(A, g, &ncols, nullptr, nullptr));
   }
-  PetscCall(MatCreateAIJ(comm, 2 * n, 2 * n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0, nnz.data(), Z));
-  PetscCall(MatSetOption(*Z, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscCall(MatCreateVecs(*Z, nullptr, rhs));
+  PetscFunctionReturn(0);
+}
+
+/// The iterative solve's outcome on the console. One that did not converge, or whose true residual
+/// ‖Z U − rhs‖ is above 10 × its tolerance (some Krylov types stop on an estimate), is an error naming
+/// the options that help.
+PetscErrorCode ReportHarmonicSolve(KSP ksp, Mat Z, Vec rhs, Vec U) {
+  PetscFunctionBeginUser;
+  KSPType type;
+  PetscCall(KSPGetType(ksp, &type));
+  if (std::string(type) == KSPPREONLY) PetscFunctionReturn(0);
+  PetscInt iterations;
+  KSPConvergedReason reason;
+  PetscReal rtol, rhs_norm, residual;
+  PetscCall(KSPGetIterationNumber(ksp, &iterations));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, nullptr));
+  Vec r;
+  PetscCall(VecDuplicate(rhs, &r));
+  PetscCall(MatMult(Z, U, r));
+  PetscCall(VecAXPY(r, -1.0, rhs));
+  PetscCall(VecNorm(r, NORM_2, &residual));
+  PetscCall(VecNorm(rhs, NORM_2, &rhs_norm));
+  PetscCall(VecDestroy(&r));
+  const double relative = rhs_norm > 0.0 ? residual / rhs_norm : residual;
+  MPI_Comm comm = PetscObjectComm((PetscObject)ksp);
+  PetscCheck(reason > 0 && relative <= 10.0 * rtol, comm, PETSC_ERR_NOT_CONVERGED,
+             "Harmonic start: the Krylov solve (%s) did not converge (%s after %" PetscInt_FMT " iterations, true "
+             "residual %.3g of the load): raise -wave_harmonic_ksp_max_it or -wave_harmonic_ksp_gmres_restart, or use "
+             "-wave_harmonic_solver direct",
+             type, KSPConvergedReasons[reason], iterations, relative);
+  PetscCall(PetscPrintf(comm, "Harmonic start: %s converged in %" PetscInt_FMT " iterations (true residual %.2g of the "
+                        "load)\n", type, iterations, relative));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode WaveSolver::AddLinearizedStiffness(double mass_coefficient, const EntryAdder& add) const {
+  PetscFunctionBeginUser;
+  PetscInt rstart, rend;
+  PetscCall(VecGetOwnershipRange(M_, &rstart, &rend));
   const PetscScalar* m;
   PetscCall(VecGetArrayRead(M_, &m));
-  for (PetscInt g = rstart; g < rend; ++g) {  // K = −M A (A = −M⁻¹K), − ω² M, the damping ω α M
+  for (PetscInt g = rstart; g < rend; ++g) {  // K = −M A (A = −M⁻¹K), then the mass term
     const PetscInt i = g - rstart, *cols;
     const PetscScalar* values;
     PetscInt ncols;
     PetscCall(MatGetRow(A_, g, &ncols, &cols, &values));
-    for (PetscInt k = 0; k < ncols; ++k) PetscCall(AddBoth(*Z, g, cols[k], -m[i] * PetscRealPart(values[k])));
+    for (PetscInt k = 0; k < ncols; ++k) PetscCall(add(g, cols[k], -m[i] * PetscRealPart(values[k])));
     PetscCall(MatRestoreRow(A_, g, &ncols, &cols, &values));
-    PetscCall(AddBoth(*Z, g, g, -omega * omega * m[i]));
-    if (material_.damping_rate > 0.0) PetscCall(AddDamping(*Z, g, g, omega * material_.damping_rate * m[i]));
+    PetscCall(add(g, g, mass_coefficient * m[i]));
   }
   PetscCall(VecRestoreArrayRead(M_, &m));
+  if (interface_) {
+    std::vector<PetscInt> rows, cols;
+    std::vector<double> values;
+    PetscCall(interface_->TangentStiffness(&rows, &cols, &values));
+    for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(add(rows[k], cols[k], values[k]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::HarmonicConstraints(std::vector<PetscInt>* dofs, std::vector<double>* values) const {
+  PetscFunctionBeginUser;
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(M_, &rstart, nullptr));
+  const int D = boundary_.dim;
+  for (const Constraint& c : boundary_.constraints) {
+    int axis = 0;
+    while (axis + 1 < D && !(std::abs(c.d[axis]) > 1.0 - 1e-12)) ++axis;
+    PetscCheck(std::abs(c.d[axis]) > 1.0 - 1e-12, PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
+               "-wave_start harmonic: a constrained direction (%g, %g, %g) is not along a coordinate axis", c.d[0],
+               c.d[1], c.d[2]);
+    dofs->push_back(rstart + D * c.node + axis);
+    values->push_back(c.source ? excitation_.signal.amplitude * c.d[axis] : 0.0);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  PetscInt n, rstart;
+  PetscCall(VecGetLocalSize(M_, &n));
+  PetscCall(VecGetOwnershipRange(M_, &rstart, nullptr));
+  std::vector<PetscInt> nnz;
+  PetscCall(StiffnessRowLengths(A_, 2, 16, &nnz));  // K on both parts, the damping blocks, a contact cell
+  PetscCall(MatCreateAIJ(comm, 2 * n, 2 * n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0, nnz.data(), Z));
+  PetscCall(MatSetOption(*Z, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatCreateVecs(*Z, nullptr, rhs));
+  PetscCall(AddLinearizedStiffness(-omega * omega, [Z](PetscInt r, PetscInt c, double v) { return AddBoth(*Z, r, c, v); }));
+  if (material_.damping_rate > 0.0) {  // ω α M
+    const PetscScalar* m;
+    PetscCall(VecGetArrayRead(M_, &m));
+    for (PetscInt i = 0; i < n; ++i) PetscCall(AddDamping(*Z, rstart + i, rstart + i, omega * material_.damping_rate * m[i]));
+    PetscCall(VecRestoreArrayRead(M_, &m));
+  }
   const int D = boundary_.dim;
   for (std::size_t k = 0; k < boundary_.dashpots.size(); ++k) {
     const PetscInt first = rstart + D * boundary_.dashpots.nodes[k];
     for (int p = 0; p < D; ++p)
       for (int q = 0; q < D; ++q)
         PetscCall(AddDamping(*Z, first + p, first + q, omega * boundary_.dashpots.at(k, p, q)));
-  }
-  if (interface_) {
-    std::vector<PetscInt> rows, cols;
-    std::vector<double> values;
-    PetscCall(interface_->TangentStiffness(&rows, &cols, &values));
-    for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(AddBoth(*Z, rows[k], cols[k], values[k]));
   }
   PetscCall(MatAssemblyBegin(*Z, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*Z, MAT_FINAL_ASSEMBLY));
@@ -95,24 +172,107 @@ PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) cons
     PetscCall(VecRestoreArrayRead(boundary_.traction_shape, &shape));
   }
   // Constrained components: their rows and columns by the prescribed values (real A on the source's).
-  std::vector<PetscInt> fixed;
+  std::vector<PetscInt> dofs, fixed;
+  std::vector<double> values;
+  PetscCall(HarmonicConstraints(&dofs, &values));
   Vec known;
   PetscCall(VecDuplicate(*rhs, &known));
-  for (const Constraint& c : boundary_.constraints) {
-    int axis = 0;
-    while (axis + 1 < D && !(std::abs(c.d[axis]) > 1.0 - 1e-12)) ++axis;
-    PetscCheck(std::abs(c.d[axis]) > 1.0 - 1e-12, comm, PETSC_ERR_SUP,
-               "-wave_start harmonic: a constrained direction (%g, %g, %g) is not along a coordinate axis", c.d[0],
-               c.d[1], c.d[2]);
-    const PetscInt g = rstart + D * c.node + axis;
-    const double value = c.source ? excitation_.signal.amplitude * c.d[axis] : 0.0;
-    fixed.insert(fixed.end(), {2 * g, 2 * g + 1});
-    PetscCall(VecSetValue(known, 2 * g, value, INSERT_VALUES));
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    fixed.insert(fixed.end(), {2 * dofs[k], 2 * dofs[k] + 1});
+    PetscCall(VecSetValue(known, 2 * dofs[k], values[k], INSERT_VALUES));
   }
   PetscCall(VecAssemblyBegin(known));
   PetscCall(VecAssemblyEnd(known));
   PetscCall(MatZeroRowsColumns(*Z, static_cast<PetscInt>(fixed.size()), fixed.data(), 1.0, known, *rhs));
   PetscCall(VecDestroy(&known));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::AssembleHarmonicPreconditioner(double omega, Mat* P) const {
+  PetscFunctionBeginUser;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(M_, &n));
+  std::vector<PetscInt> nnz;
+  PetscCall(StiffnessRowLengths(A_, 1, 8, &nnz));
+  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)dm_), n, n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0,
+                         nnz.data(), P));
+  PetscCall(MatSetBlockSize(*P, boundary_.dim));
+  PetscCall(MatSetOption(*P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(AddLinearizedStiffness(omega * omega, [P](PetscInt r, PetscInt c, double v) {
+    return MatSetValue(*P, r, c, v, ADD_VALUES);
+  }));
+  PetscCall(MatAssemblyBegin(*P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*P, MAT_FINAL_ASSEMBLY));
+  std::vector<PetscInt> dofs;
+  std::vector<double> values;
+  PetscCall(HarmonicConstraints(&dofs, &values));
+  PetscCall(MatZeroRowsColumns(*P, static_cast<PetscInt>(dofs.size()), dofs.data(), 1.0, nullptr, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::NodePositionVector(Vec* coordinates) const {
+  PetscFunctionBeginUser;
+  std::vector<double> positions;  // in the local section's layout: dof (node, axis) holds x_axis
+  PetscCall(space_.NodePositions(&positions));
+  Vec local;
+  PetscCall(DMGetLocalVector(dm_, &local));
+  PetscScalar* x;
+  PetscCall(VecGetArray(local, &x));
+  std::copy(positions.begin(), positions.end(), x);
+  PetscCall(VecRestoreArray(local, &x));
+  PetscCall(DMCreateGlobalVector(dm_, coordinates));
+  PetscCall(DMLocalToGlobal(dm_, local, INSERT_VALUES, *coordinates));
+  PetscCall(DMRestoreLocalVector(dm_, &local));
+  PetscCall(VecSetBlockSize(*coordinates, boundary_.dim));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) const {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  HarmonicSolver solver = options_.harmonic_solver;
+  if (solver != HarmonicSolver::kKrylov) {
+    PetscBool force = PETSC_FALSE;
+    PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-force", &force, nullptr));  // declared with the mesh options
+    bool fits = true;
+    PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
+                                {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
+                                 force == PETSC_TRUE, solver == HarmonicSolver::kAuto},
+                                &fits));
+    solver = fits ? HarmonicSolver::kDirect : HarmonicSolver::kKrylov;
+  }
+  PetscInt n_dofs;
+  PetscCall(MatGetSize(Z, &n_dofs, nullptr));
+  KSP ksp;
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscCall(KSPSetOptionsPrefix(ksp, "wave_harmonic_"));
+  PetscCall(KSPSetOperators(ksp, Z, Z));
+  Mat P = nullptr;
+  Vec coordinates = nullptr;
+  if (solver == HarmonicSolver::kDirect) {
+    PC pc;
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    PetscCall(PetscPrintf(comm, "Harmonic start: factoring and solving the %" PetscInt_FMT " doubled dofs (MUMPS)\n",
+                          n_dofs));
+  } else {
+    PetscCall(AssembleHarmonicPreconditioner(omega, &P));
+    PetscCall(NodePositionVector(&coordinates));
+    PetscCall(ConfigureHarmonicKrylov(ksp, P, coordinates));
+    PetscCall(PetscPrintf(comm, "Harmonic start: GMRES on the %" PetscInt_FMT " doubled dofs, multigrid on "
+                          "K + w^2 M for each part\n", n_dofs));
+  }
+  PetscCall(KSPSetFromOptions(ksp));
+  {
+    const Heartbeat beat(comm, "Harmonic start: solving");  // minutes on a 3D box, with no word from MUMPS
+    PetscCall(KSPSolve(ksp, rhs, U));
+  }
+  PetscCall(ReportHarmonicSolve(ksp, Z, rhs, U));
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&P));
+  PetscCall(VecDestroy(&coordinates));
   PetscFunctionReturn(0);
 }
 
@@ -125,29 +285,7 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   Vec rhs, U;
   PetscCall(AssembleHarmonic(omega, &Z, &rhs));
   PetscCall(VecDuplicate(rhs, &U));
-  KSP ksp;
-  PC pc;
-  PetscCall(KSPCreate(comm, &ksp));
-  PetscCall(KSPSetOptionsPrefix(ksp, "wave_harmonic_"));
-  PetscCall(KSPSetOperators(ksp, Z, Z));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  PetscCall(KSPSetFromOptions(ksp));
-  PetscBool force = PETSC_FALSE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-force", &force, nullptr));  // declared with the mesh options
-  PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
-                              {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
-                               force == PETSC_TRUE}));
-  PetscInt n_dofs;
-  PetscCall(MatGetSize(Z, &n_dofs, nullptr));
-  PetscCall(PetscPrintf(comm, "Harmonic start: factoring and solving the %" PetscInt_FMT " doubled dofs (MUMPS)\n",
-                        n_dofs));
-  {
-    const Heartbeat beat(comm, "Harmonic start: factoring");  // minutes on a 3D box, with no word from MUMPS
-    PetscCall(KSPSolve(ksp, rhs, U));
-  }
+  PetscCall(SolveHarmonic(omega, Z, rhs, U));
   // u(0) = Im U, v(0) = ω Re U.
   Vec u, v;
   PetscCall(GetFields(&u, &v));
@@ -163,7 +301,6 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscCall(VecRestoreArray(v, &pv));
   PetscCall(VecRestoreArray(u, &pu));
   PetscCall(RestoreFields(&u, &v));
-  PetscCall(KSPDestroy(&ksp));
   PetscCall(VecDestroy(&U));
   PetscCall(VecDestroy(&rhs));
   PetscCall(MatDestroy(&Z));

@@ -45,6 +45,10 @@ PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   PetscCall(PetscOptionsReal("-wave_harmonic_memory_limit",
                              "Memory the harmonic start's MUMPS factorisation may take [GB] (0: 0.9 x available)",
                              nullptr, o->harmonic_memory_limit_gb, &o->harmonic_memory_limit_gb, nullptr));
+  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_harmonic_solver",
+                              "The harmonic start's linear solve: auto (MUMPS if its factor fits the memory limit, "
+                              "else GMRES), direct (MUMPS) or krylov (GMRES, multigrid on each part)",
+                              {"auto", "direct", "krylov"}, &o->harmonic_solver));
   PetscCall(PetscOptionsInt("-wave_lts_max_levels", "Most levels of local time stepping (rate 2 each)", nullptr,
                             o->lts.max_levels, &o->lts.max_levels, nullptr));
   PetscCall(PetscOptionsReal("-wave_lts_cfl", "Each LTS level's step as a fraction of its own stability limit", nullptr,

@@ -15,6 +15,7 @@ struct FactorMemoryLimit {
   const char* option;        ///< the option that sets the limit, named in the refusal
   double limit_gb = 0.0;     ///< [GB] (0: 0.9 x the memory available on rank 0's node)
   bool force = false;        ///< -force: factor even above that
+  bool fallback = false;     ///< above the limit: say so and report *fits = false instead of refusing
 };
 
 /// MUMPS's estimate of its LU factorisation of A [bytes] (INFOG(17), in-core, summed
@@ -22,8 +23,8 @@ struct FactorMemoryLimit {
 PetscErrorCode MumpsFactorMemory(Mat A, const char* prefix, double* bytes);
 
 /// Prints that estimate and refuses, naming limit.option, when it exceeds the limit,
-/// unless limit.force; nothing when -<prefix>pc_factor_mat_solver_type is not MUMPS.
-/// Collective.
-PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLimit& limit);
+/// unless limit.force (or limit.fallback: then *fits = false); nothing when
+/// -<prefix>pc_factor_mat_solver_type is not MUMPS. Collective.
+PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLimit& limit, bool* fits = nullptr);
 
 }  // namespace vibrotherm::wave

@@ -37,6 +37,10 @@
 
 namespace vibrotherm::wave {
 
+/// How the harmonic start solves its doubled system: MUMPS when its factor fits the memory
+/// limit, else GMRES (auto); always MUMPS (direct); always GMRES with multigrid (krylov).
+enum class HarmonicSolver { kAuto, kDirect, kKrylov };
+
 /// How the explicit step applies A = −M⁻¹K: PETSc's MatMult, or the 2×2-block kernel (block_kernel.hpp).
 enum class StiffnessKernel { kPetsc, kBlocked };
 
@@ -53,6 +57,8 @@ struct WaveOptions {
   /// -wave_harmonic_memory_limit [GB]: what the harmonic start's MUMPS factorisation may take
   /// (0: 0.9 x the memory available; -force: factor even above it).
   double harmonic_memory_limit_gb = 0.0;
+  /// -wave_harmonic_solver auto|direct|krylov (harmonic_krylov.hpp).
+  HarmonicSolver harmonic_solver = HarmonicSolver::kAuto;
   /// Every step divides this (0: any step): the heat step of a periodic source (-periodic on),
   /// so that source periods end on wave steps (set by the scene, not an option).
   double step_quantum = 0.0;
@@ -191,7 +197,18 @@ class WaveSolver {
   /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
   PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
   // The harmonic start (harmonic_start.cpp).
+  /// add(row, col, value) for every entry of K + K_c + mass_coefficient · M (owned rows; K_c this rank's cells').
+  using EntryAdder = std::function<PetscErrorCode(PetscInt, PetscInt, double)>;
+  PetscErrorCode AddLinearizedStiffness(double mass_coefficient, const EntryAdder& add) const;
+  /// The constrained dofs (global) and their prescribed amplitudes.
+  PetscErrorCode HarmonicConstraints(std::vector<PetscInt>* dofs, std::vector<double>* values) const;
   PetscErrorCode AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const;
+  /// K + K_c + ω² M, constrained rows and columns identity: the Krylov solve's preconditioner.
+  PetscErrorCode AssembleHarmonicPreconditioner(double omega, Mat* P) const;
+  /// The wave nodes' positions as a global vector (block size = dimension).
+  PetscErrorCode NodePositionVector(Vec* coordinates) const;
+  /// Z U = rhs by -wave_harmonic_solver.
+  PetscErrorCode SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) const;
   /// The state's energy (the stuck springs' with it) as the source's work at t = 0.
   PetscErrorCode BookInitialEnergy();
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.

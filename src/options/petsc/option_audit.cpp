@@ -72,7 +72,7 @@ PetscErrorCode CapturingVFPrintf(FILE* fd, const char format[], va_list args) {
 const char* const kSolverPrefixes[] = {
     "wave_ts_", "wave_snes_", "wave_ksp_", "wave_pc_", "heat_ts_", "heat_snes_", "heat_ksp_", "heat_pc_",
     "heat_free_", "heat_redundant_", "heat_psubcomm_", "modes_eps_", "modes_st_", "modes_ksp_", "modes_pc_",
-    "modes_mat_", "wave_stability_", "petscpartitioner_"};
+    "modes_mat_", "wave_stability_", "wave_harmonic_", "petscpartitioner_"};
 /// PETSc's own options (read by PetscInitialize, logging, viewers, the DM and matrix layers).
 const char* const kPetscPrefixes[] = {
     "dm_", "mat_", "vec_", "log", "malloc", "options_", "info", "on_error", "history", "help",
