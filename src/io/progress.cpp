@@ -24,6 +24,7 @@ void Progress::Start(MPI_Comm comm, std::string label, double t_begin, double t_
   t_begin_ = t_begin;
   t_end_ = t_end;
   dt_ = dt;
+  counts_steps_ = dt > 0.0;
   log_time_ = log_time && t_begin > 0.0;
   wall_start_ = wall_last_ = MPI_Wtime();
   steps_start_ = steps_last_ = -1;
@@ -38,25 +39,32 @@ double Progress::Fraction(double t) const {
 PetscErrorCode Progress::Update(double t, long long steps) {
   PetscFunctionBeginUser;
   if (steps_start_ < 0) steps_start_ = steps;
-  // The step now, from the last step taken: the contact may have shrunk it since Start.
-  if (steps > steps_last_ && steps_last_ >= 0 && t > t_last_) dt_ = (t - t_last_) / static_cast<double>(steps - steps_last_);
+  // The step now, from the last step taken: the contact may have shrunk it since Start. Only
+  // for a phase that counts steps (started with a step): the free heat phase has none to count.
+  if (counts_steps_ && steps > steps_last_ && steps_last_ >= 0 && t > t_last_)
+    dt_ = (t - t_last_) / static_cast<double>(steps - steps_last_);
   steps_last_ = steps, t_last_ = t;
   const double now = MPI_Wtime();
   if (!speaker_ || now - wall_last_ < 2.0) PetscFunctionReturn(0);
   wall_last_ = now;
-  const double done = Fraction(t), elapsed = now - wall_start_;
-  const double rate = (steps - steps_start_) / elapsed, eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
-  const std::string count = dt_ > 0.0 ? StepCount(steps, t, t_end_, dt_) : "";
-  if (dt_ > 0.0 && t < t_end_)
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s (%.1f %%), %.3g steps/s, ETA %.0f s\n",
-                           label_.c_str(), t, count.c_str(), 100.0 * done, rate, eta));
-  else if (dt_ > 0.0)
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s, %.3g steps/s\n", label_.c_str(), t,
-                           count.c_str(), rate));
-  else
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s (%.1f %%%s), step %lld, ETA %.0f s\n",
-                           label_.c_str(), t, 100.0 * done, log_time_ ? " in log time" : "", steps, eta));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s\n", Line(t, steps, now - wall_start_).c_str()));
   PetscFunctionReturn(0);
+}
+
+std::string Progress::Line(double t, long long steps, double elapsed) const {
+  const double done = Fraction(t);
+  const double rate = (steps - steps_start_) / elapsed, eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
+  char text[320];
+  if (counts_steps_ && t < t_end_)
+    std::snprintf(text, sizeof text, "%s: t = %.4g s, %s (%.1f %%), %.3g steps/s, ETA %.0f s", label_.c_str(), t,
+                  StepCount(steps, t, t_end_, dt_).c_str(), 100.0 * done, rate, eta);
+  else if (counts_steps_)
+    std::snprintf(text, sizeof text, "%s: t = %.4g s, %s, %.3g steps/s", label_.c_str(), t,
+                  StepCount(steps, t, t_end_, dt_).c_str(), rate);
+  else
+    std::snprintf(text, sizeof text, "%s: t = %.4g s (%.1f %%%s), step %lld, ETA %.0f s", label_.c_str(), t,
+                  100.0 * done, log_time_ ? " in log time" : "", steps, eta);
+  return text;
 }
 
 PetscErrorCode Progress::Done(double t, long long steps) {

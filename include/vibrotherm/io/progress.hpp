@@ -24,13 +24,17 @@ class Progress {
   /// A phase from t_begin expected to end at t_end; log_time: measure progress in log t.
   void Start(MPI_Comm comm, std::string label, double t_begin, double t_end, double dt, bool log_time);
   PetscErrorCode Update(double t, long long steps);
+  /// The line Update prints at (t, steps) after `elapsed` seconds of the phase: a count of
+  /// steps for a phase started with a step (the waves), the fraction of the time (in log time
+  /// if asked) otherwise (the free heat phase: no "past the expected end" there).
+  std::string Line(double t, long long steps, double elapsed) const;
   PetscErrorCode Done(double t, long long steps);
 
  private:
   double Fraction(double t) const;
   std::string label_;
   double t_begin_ = 0, t_end_ = 1, dt_ = 0, wall_start_ = 0, wall_last_ = 0;
-  bool log_time_ = false;
+  bool log_time_ = false, counts_steps_ = false;
   long long steps_start_ = -1, steps_last_ = -1;
   double t_last_ = 0;
   bool speaker_ = false;
