@@ -14,16 +14,16 @@ to 0.2 ms with -crack_state_every 1 -probe_every 1; crack_sawtooth.py), against
   * wave-mesh refinement with the heat side at its default (the friction power
     itself changes: self-convergence against the finest wave mesh).
 """
-import json
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
 
 import crack_sawtooth
 import line_source
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+import vibrotherm as vt
 
 TIMES = [1e-4, 2e-4, 5e-4, 1e-3, 1e-2, 1.0]
 PERIOD_ENDS, PERIOD = (1e-4, 2e-4), 1e-5  # the saw-tooth's periods (paper scene: 100 kHz)
@@ -57,20 +57,18 @@ def settings(paper_option):
     return out
 
 
-def run_one(root, build_dir, ranks, out, extra, env, reuse, sawtooth=False):
-    """The full scene (output times), or (sawtooth) 0.2 ms recorded at every wave step."""
-    summary_path = os.path.join(out, "summary.json")
-    if not (reuse and os.path.exists(summary_path)):
-        record = (["-final_time", "%.6g" % (max(PERIOD_ENDS) * 1.00005), "-output_times", "%g" % max(PERIOD_ENDS),
-                   "-crack_state_every", "1", "-probe_every", "1"] if sawtooth else
-                  ["-output_times", ",".join(map(str, TIMES)), "-crack_state_every", "0"])
-        command = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm"), "-options_file",
-                   os.path.join(root, "options", "paper.opts"), "-output_dir", out] + record + extra
-        result = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True)
-        if result.returncode != 0:
-            sys.exit("scripts/convergence: %s failed:\n%s" % (out, result.stderr[-3000:]))
-    with open(summary_path) as f:
-        return json.load(f)
+def run_one(ranks, out, extra, reuse, sawtooth=False):
+    """The full scene (output times), or (sawtooth) 0.2 ms recorded at every wave step; its summary."""
+    if not (reuse and os.path.exists(os.path.join(out, "summary.json"))):
+        record = ({"final_time": "%.6g" % (max(PERIOD_ENDS) * 1.00005), "output_times": "%g" % max(PERIOD_ENDS),
+                   "crack_state_every": 1, "probe_every": 1} if sawtooth else
+                  {"output_times": TIMES, "crack_state_every": 0})
+        try:
+            vt.run_scene(os.path.join(vt.ROOT, "options", "paper.opts"), dict(record, **vt.launch.option_dict(extra)),
+                         out, ranks=ranks, overwrite=True)
+        except vt.RunFailed as failed:
+            sys.exit("scripts/convergence: %s failed:\n%s" % (out, failed.stderr[-3000:]))
+    return vt.load(out).summary
 
 
 def measure(out, summary, alpha, rho_c, width, height):

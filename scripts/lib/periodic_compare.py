@@ -2,7 +2,6 @@
 (-periodic_min_continued 1e9: the same quantized wave step, no continuation): the
 figures issue 24 asks for. Used by tests/scene/test_periodic_continuation.py,
 scripts/convergence --study periodic and scripts/bench periodic."""
-import json
 import os
 import signal
 import subprocess
@@ -10,12 +9,12 @@ import time
 
 import numpy as np
 
-from run_data import read_csv
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+import vibrotherm as vt
 
 
 def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return vt.load(out).summary
 
 
 def relative(a, b):
@@ -23,9 +22,9 @@ def relative(a, b):
 
 
 def probe_rows(out, probe):
-    p = read_csv(os.path.join(out, "probes.csv"))
-    keep = (p["probe"] == probe) & np.isfinite(p["temperature"])
-    return p["t"][keep], p["temperature"][keep]
+    p = vt.load(out).probes(probe)
+    p = p[p["temperature"].notna()]
+    return p["t"].to_numpy(), p["temperature"].to_numpy()
 
 
 def at_period_ends(out, ref, probe, period, t0, t1):
@@ -73,11 +72,11 @@ def check_restart_inside_continuation(check, exe, args, tmp):
     ladder long enough to catch, e.g. camera windows) restarts from its checkpoint and ends
     identical to the run never stopped: energy.csv, probes.csv, periodic.csv, summary figures."""
     whole, stopped = os.path.join(tmp, "whole"), os.path.join(tmp, "stopped")
-    r = subprocess.run([exe] + args + ["-output_dir", whole], capture_output=True, text=True)
+    r = subprocess.run([exe] + args + ["-overwrite", "-output_dir", whole], capture_output=True, text=True)
     check(r.returncode == 0, "%s: %s" % (whole, r.stderr[-1500:]))
     if r.returncode != 0:
         return
-    p = subprocess.Popen([exe] + args + ["-output_dir", stopped], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    p = subprocess.Popen([exe] + args + ["-overwrite", "-output_dir", stopped], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True)
     for line in p.stdout:
         if line.startswith("Periodic at"):

@@ -3,21 +3,21 @@
 (a) the crack's friction power averaged over each source period (from energy.csv's
     dissipated energy) against time: build-up, the simulated periods, the continued
     stretches (shaded, from summary.json "periodic"), the ring-down; log time;
-(b) the temperature rise over seconds: the crack centre (probe) and the camera's
-    peak pixel per frame, with the NETD and the detection threshold.
+(b) the temperature rise over seconds: the crack centre (a crack probe, 2D) or the hottest
+    point probe (3D has no crack probes), the specimen's hottest point at each output time
+    (fields.h5) and the camera's peak pixel per frame, with the NETD and the detection threshold.
 Skipped for a run without continuation."""
-import os
-
 import matplotlib.pyplot as plt
 import numpy as np
 
-from run_data import Skip
+import package  # noqa: F401  (scripts/vibrotherm of this checkout)
+from vibrotherm import MissingOutput as Skip
 
 
 def friction_power(run):
     """(t, power [W/m]) averaged between consecutive energy.csv rows at least a source period apart."""
     e = run.table("energy.csv")
-    period = 1.0 / float(run.summary["option_values"]["-source_frequency"]["value"])
+    period = run.period
     t, W = e["t"], e["dissipated"]
     times, power, last = [], [], 0
     for i in range(1, len(t)):
@@ -29,14 +29,36 @@ def friction_power(run):
 
 
 def camera_peaks(run):
-    path = run.path("camera.h5")
-    if not os.path.exists(path):
+    """(window centres, peak noise-free pixel of each frame), or None without a camera."""
+    if not run.has("camera.h5"):
         return None
-    import h5py
-    with h5py.File(path, "r") as f:
-        times = np.array(f["camera/time"])[:, 0]  # (centre, start, end) of each frame's window
-        peaks = np.array([np.max(f["camera/clean_%d" % k]) for k in range(len(times))])
-    return times, peaks
+    clean = run.camera()["clean"]
+    return clean["time"].values, clean.max(dim=("y", "x")).values
+
+
+def hottest_probe(run, probes):
+    """(t, rise, label) of the crack centre's probe (2D), else of the point probe that rose most."""
+    T0 = run.number("heat_T0", 293.15)
+    crack = [index for index, xi in run.crack_probes().values() if abs(xi - 0.5) < 1e-9]
+    if crack:
+        index, label = crack[0], "crack centre"
+    else:
+        rises = {int(k): v for k, v in run.summary.get("probe_max_temperature_rise", {}).items()}
+        if not rises or max(rises.values()) <= 0:
+            return None
+        index = max(rises, key=rises.get)
+        label = "hottest probe, %s" % run.probe_labels.get(index, index)
+    rows = (probes["probe"] == index) & np.isfinite(probes["temperature"])
+    return probes["t"][rows], probes["temperature"][rows] - T0, label
+
+
+def field_peaks(run):
+    """(output times, the specimen's largest temperature rise at each) from fields.h5, or None."""
+    try:
+        rise = run.field("heat", "temperature_rise")
+    except Skip:
+        return None
+    return rise["time"].values, rise.max(dim=rise.dims[1]).values
 
 
 def figure(run):
@@ -51,18 +73,19 @@ def figure(run):
         a.axvspan(s["suspended"], s["resumed"], color="C0", alpha=0.12, label="continued" if k == 0 else None)
         a.axvline(s["detected"], color="C2", ls=":", lw=1, label="found periodic" if k == 0 else None)
     a.set_xlabel("t [s]")
-    a.set_ylabel("friction power [W/m]")
+    a.set_ylabel("friction power [%s]" % ("W" if run.dimension == 3 else "W/m"))
     a.set_title("(a) the crack's friction: build-up, continuation (%d periods not simulated), ring-down"
                 % sum(s["periods_continued"] for s in segments), fontsize=10)
     a.legend(fontsize=8)
     a.grid(True, which="both", alpha=0.3)
-    probes = run.table("probes.csv")
-    crack = [index for index, xi in run.crack_probes().values() if abs(xi - 0.5) < 1e-9]
-    T0 = 293.15
-    if crack:
-        rows = (probes["probe"] == crack[0]) & np.isfinite(probes["temperature"])
-        rise = probes["temperature"][rows] - T0
-        b.loglog(probes["t"][rows][rise > 0], rise[rise > 0], color="C3", lw=1, label="crack centre")
+    probe = hottest_probe(run, run.table("probes.csv"))
+    if probe is not None:
+        t, rise, label = probe
+        b.loglog(t[rise > 0], rise[rise > 0], color="C3", lw=1, label=label)
+    fields = field_peaks(run)
+    if fields is not None:
+        t, peak = fields
+        b.loglog(t[peak > 0], peak[peak > 0], "s", ms=5, color="C4", label="hottest point of the specimen (fields.h5)")
     camera = camera_peaks(run)
     if camera is not None:
         ct, peak = camera

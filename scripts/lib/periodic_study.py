@@ -8,14 +8,15 @@ error against its peak), the camera's peak pixel, and the wall-time ratio.
 Writes DIR/periodic.{csv,md} and DIR/periodic_work_precision.png."""
 import csv
 import os
-import subprocess
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import package  # noqa: E402,F401  (scripts/vibrotherm of this checkout)
 import periodic_compare  # noqa: E402
+import vibrotherm as vt  # noqa: E402
 
 TOLERANCES = [1e-2, 3e-3, 1e-3, 3e-4]
 SCENES = {"paper": ("paper.opts", 1e-5), "thermosonic": ("thermosonic.opts", 1.0 / 62080.43257)}
@@ -23,30 +24,29 @@ ERRORS = [("dissipated", "dissipated energy"), ("heat_content", "heat content"),
           ("crack_probe", "crack-centre temperature at period ends"), ("camera_peak", "camera peak pixel")]
 
 
-def scene_options(root, scene, duration):
+def scene_options(scene, duration):
     opts, _ = SCENES[scene]
-    return ["-options_file", os.path.join(root, "options", opts), "-source_duration", repr(duration),
+    return ["-options_file", os.path.join(vt.ROOT, "options", opts), "-source_duration", repr(duration),
             "-final_time", repr(duration * 1.05), "-output_times", repr(duration), "-camera", "-camera_fps", "1000",
             "-camera_netd", "0.02", "-probe_every", "20", "-crack_state_every", "0", "-checkpoint_every_s", "0"]
 
 
-def run_one(root, build_dir, ranks, out, options, env, reuse):
+def run_one(ranks, out, options, reuse):
     if reuse and os.path.exists(os.path.join(out, "summary.json")):
         return
-    cmd = ["mpiexec", "-n", str(ranks), os.path.join(build_dir, "vibrotherm")] + options + ["-output_dir", out]
-    print("run:", " ".join(cmd[3:]), flush=True)
-    subprocess.run(cmd, env=env, check=True, stdout=subprocess.DEVNULL, cwd=root)  # options files include others by relative path
+    print("run:", " ".join(options), flush=True)
+    vt.run_scene(None, vt.launch.option_dict(options), out, ranks=ranks, overwrite=True)
 
 
-def study(root, build_dir, ranks, output, env, duration, reuse):
+def study(ranks, output, duration, reuse):
     rows = []
     for scene, (_, period) in SCENES.items():
-        base = scene_options(root, scene, duration)
+        base = scene_options(scene, duration)
         ref = os.path.join(output, "periodic", scene, "resolved")
-        run_one(root, build_dir, ranks, ref, base + ["-periodic_min_continued", "1000000000"], env, reuse)
+        run_one(ranks, ref, base + ["-periodic_min_continued", "1000000000"], reuse)
         for tol in TOLERANCES:
             out = os.path.join(output, "periodic", scene, "tol_%g" % tol)
-            run_one(root, build_dir, ranks, out, base + ["-periodic_tol", repr(tol)], env, reuse)
+            run_one(ranks, out, base + ["-periodic_tol", repr(tol)], reuse)
             c = periodic_compare.compare(out, ref, crack_probe=5, period=period)
             c.update(scene=scene, tol=tol)
             rows.append(c)

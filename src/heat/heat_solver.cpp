@@ -56,6 +56,7 @@ HeatSolver::~HeatSolver() {
   (void)TSDestroy(&free_ts_);
   for (Mat* m : {&M_, &K_}) (void)MatDestroy(m);
   for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) (void)VecDestroy(v);
+  for (Vec* v : {&partial_, &partial_load_, &partial_step_}) (void)VecDestroy(v);
 }
 
 PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
@@ -265,6 +266,7 @@ PetscErrorCode HeatSolver::PostStep(TS ts) {
   PetscCall(TSGetTime(ts, &t));
   self->last_step_ = t - self->time_;
   PetscCall(self->Account(self->last_step_));
+  if (self->partial_) PetscCall(self->AdvancePartial());
   self->time_ = t;
   if (self->on_step) PetscCall(self->on_step(*self));
   if (self->stop_requested_) PetscCall(TSSetConvergedReason(ts, TS_CONVERGED_USER));

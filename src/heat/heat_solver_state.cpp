@@ -1,7 +1,7 @@
 // The heat solver in checkpoints (taken while the waves run: the coupled TS,
 // fixed steps): θ per owned dof keyed by its origin, time, steps, the accounts,
 // and the shift its Jacobian was factored with, so that a restart solves with
-// the very same factors.
+// the very same factors. The partial rise (EnablePartialRise) is kept the same way.
 #include "vibrotherm/heat/heat_solver.hpp"
 
 namespace vibrotherm::heat {
@@ -14,6 +14,12 @@ PetscErrorCode HeatSolver::Save(store::Checkpoint& checkpoint, const mesh::Point
   PetscCall(VecGetArrayRead(theta_, &theta));
   checkpoint.PutKeyed("heat/theta", keys, 1, std::vector<double>(theta, theta + keys.size()));
   PetscCall(VecRestoreArrayRead(theta_, &theta));
+  if (partial_) {
+    const PetscScalar* p;
+    PetscCall(VecGetArrayRead(partial_, &p));
+    checkpoint.PutKeyed("heat/partial", keys, 1, std::vector<double>(p, p + keys.size()));
+    PetscCall(VecRestoreArrayRead(partial_, &p));
+  }
   PetscInt ts_steps;
   PetscReal dt;
   Mat J;
@@ -60,6 +66,13 @@ PetscErrorCode HeatSolver::Restore(const store::Checkpoint& checkpoint, const me
   std::copy(theta.begin(), theta.end(), x);
   PetscCall(VecRestoreArray(theta_, &x));
   PetscCall(VecCopy(theta_, theta_prev_));
+  if (partial_ && checkpoint.Has("heat/partial")) {
+    std::vector<double> partial;
+    PetscCall(checkpoint.GetKeyed("heat/partial", keys, 1, &partial));
+    PetscCall(VecGetArray(partial_, &x));
+    std::copy(partial.begin(), partial.end(), x);
+    PetscCall(VecRestoreArray(partial_, &x));
+  }
   time_ = clock[0];
   steps_ = static_cast<PetscInt>(clock[1]);
   deposited_ = clock[4];

@@ -41,9 +41,16 @@ PetscErrorCode ReadParameter(MPI_Comm comm, PetscOptionItems* PetscOptionsObject
 PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p) {
   PetscFunctionBeginUser;
   PetscCall(RejectRenamedOptions(comm));
+  // vibrotherm-contact's one cell starts at -contact_a0; a crack's faces start at -crack_a0 and its
+  // profile (interface/approach_profile): one name here, the other refused, not silently ignored.
+  PetscBool cell_a0 = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-contact_a0", &cell_a0));
+  PetscCheck(!cell_a0, comm, PETSC_ERR_USER_INPUT,
+             "-contact_a0 is vibrotherm-contact's (one contact cell); the crack faces' initial approach in vibrotherm "
+             "is -crack_a0 [m] (with -crack_a0_profile)");
   PetscOptionsBegin(comm, nullptr, "Crack contact law (PHYSICS.md section 3)", nullptr);
   for (const contact::ContactParameter& parameter : contact::contact_parameters())
-    PetscCall(ReadParameter(comm, PetscOptionsObject, parameter, p));
+    if (parameter.spec.name != "-contact_a0") PetscCall(ReadParameter(comm, PetscOptionsObject, parameter, p));
   PetscOptionsEnd();
   VibrothermCallCpp(comm, (void)contact::create_crack_law(p));  // validates; reads table files
   PetscFunctionReturn(0);

@@ -97,10 +97,12 @@ void CameraFrames::Reopen(const std::string& h5_path, const CameraGrid& grid, in
   if (file_ < 0) throw std::runtime_error("-restart: cannot resume '" + store::AtomicFile::partial_name(h5_path) + "'");
   group_ = H5Gopen2(file_, "camera", H5P_DEFAULT);
   if (group_ < 0) throw std::runtime_error(h5_path + ": no group /camera");
+  defect_ = H5Lexists(group_, "defect_0", H5P_DEFAULT) > 0;
   // Frames the interrupted run wrote after its checkpoint are written again.
   for (int k = kept;; ++k) {
     bool found = false;
-    for (const std::string& name : {"frame_" + std::to_string(k), "clean_" + std::to_string(k)})
+    for (const std::string& name :
+         {"frame_" + std::to_string(k), "clean_" + std::to_string(k), "defect_" + std::to_string(k)})
       if (H5Lexists(group_, name.c_str(), H5P_DEFAULT) > 0) found = H5Ldelete(group_, name.c_str(), H5P_DEFAULT) >= 0;
     if (!found) break;
   }
@@ -113,6 +115,13 @@ void CameraFrames::Write(int k, double start, double end, const std::vector<doub
   WriteArray("frame_" + std::to_string(k), noisy, grid_.rows, grid_.cols, "K", when);
   WriteArray("clean_" + std::to_string(k), clean, grid_.rows, grid_.cols, "K", when);
   times_.insert(times_.end(), {centre, start, end});
+  Flush();
+}
+
+void CameraFrames::WriteDefect(int k, double start, double end, const std::vector<double>& defect) {
+  const std::map<std::string, double> when = {{"time", 0.5 * (start + end)}, {"window_start", start}, {"window_end", end}};
+  WriteArray("defect_" + std::to_string(k), defect, grid_.rows, grid_.cols, "K", when);
+  defect_ = true;
   Flush();
 }
 
@@ -148,8 +157,11 @@ void CameraFrames::WriteXdmf() const {
       << grid_.x0 << "</DataItem>\n"
       << "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"3\">" << grid_.pixel << " "
       << grid_.pixel << " " << grid_.pixel << "</DataItem>\n    </Geometry>\n";
-    for (const char* name : {"frame", "clean"})
-      s << "    <Attribute Name=\"" << (std::string(name) == "frame" ? "temperature_rise" : "temperature_rise_clean")
+    std::vector<std::pair<std::string, std::string>> attributes = {{"frame", "temperature_rise"},
+                                                                   {"clean", "temperature_rise_clean"}};
+    if (defect_) attributes.push_back({"defect", "temperature_rise_defect"});
+    for (const auto& [name, title] : attributes)
+      s << "    <Attribute Name=\"" << title
         << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
         << "     <DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"1 " << grid_.rows << " "
         << grid_.cols << "\">" << file << ":/camera/" << name << "_" << k << "</DataItem>\n    </Attribute>\n";

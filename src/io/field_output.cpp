@@ -22,6 +22,7 @@ PetscErrorCode FieldFile::Open(MPI_Comm comm, const std::string& h5_path, XdmfLa
   const std::string partial = store::AtomicFile::partial_name(h5_path);
   PetscCheck(!append || std::filesystem::exists(partial), comm, PETSC_ERR_FILE_OPEN,
              "-restart: cannot resume '%s': missing", partial.c_str());
+  const WritingFile writing(partial);  // PETSc's HDF5 errors do not name the file
   PetscCall(PetscViewerHDF5Open(comm, partial.c_str(), append ? FILE_MODE_APPEND : FILE_MODE_WRITE, &viewer_));
   PetscFunctionReturn(0);
 }
@@ -112,6 +113,7 @@ PetscErrorCode FieldFile::AddGrid(const std::string& name, Grid g, PetscInt corn
   order_.push_back(name);
 
   if (index_only_) PetscFunctionReturn(0);
+  const WritingFile writing(store::AtomicFile::partial_name(path_));
   PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + name).c_str()));
   IS topology;
   PetscCall(ISCreateGeneral(comm_, static_cast<PetscInt>(cells.size()), cells.data(), PETSC_COPY_VALUES, &topology));
@@ -143,6 +145,7 @@ PetscErrorCode FieldFile::Write(const Dataset& d, const std::vector<PetscInt>& r
   PetscCall(VecAssemblyBegin(out));
   PetscCall(VecAssemblyEnd(out));
   PetscCall(PetscObjectSetName((PetscObject)out, name.c_str()));
+  const WritingFile writing(store::AtomicFile::partial_name(path_));
   PetscCall(PetscViewerHDF5PushGroup(viewer_, ("/" + d.grid).c_str()));
   PetscCall(PetscViewerHDF5SetBaseDimension2(viewer_, PETSC_TRUE));  // scalars as N × 1
   PetscCall(VecView(out, viewer_));
@@ -165,6 +168,7 @@ PetscErrorCode FieldFile::Index(Grid& g, const Dataset& d, const std::string& na
 PetscErrorCode FieldFile::Flush() {
   PetscFunctionBeginUser;
   if (!viewer_) PetscFunctionReturn(0);
+  const WritingFile writing(store::AtomicFile::partial_name(path_));
   hid_t file;
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
   PetscCheck(H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0, comm_, PETSC_ERR_FILE_WRITE, "%s: cannot flush the file",
@@ -254,7 +258,10 @@ PetscErrorCode FieldFile::WriteCellValues(const std::string& grid, const std::st
 PetscErrorCode FieldFile::Finish() {
   PetscFunctionBeginUser;
   if (!viewer_) PetscFunctionReturn(0);
-  PetscCall(PetscViewerDestroy(&viewer_));
+  {
+    const WritingFile writing(store::AtomicFile::partial_name(path_));  // closing flushes what HDF5 holds
+    PetscCall(PetscViewerDestroy(&viewer_));
+  }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank != 0) PetscFunctionReturn(0);

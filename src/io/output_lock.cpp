@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "vibrotherm/util/root_task.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::io {
 namespace {
@@ -103,9 +104,14 @@ std::string Take(const std::string& dir, const std::string& content) {
 
 }  // namespace
 
-OutputLock::~OutputLock() {
+OutputLock::~OutputLock() { Release(); }
+
+void OutputLock::Release() {
+  if (held_) stop_signals::SetLock("");
+  held_ = false;
   // Only our own: a lock some other run took over after ours was judged stale stays.
   if (!path_.empty() && ReadText(path_) == content_) std::remove(path_.c_str());
+  path_.clear();
 }
 
 PetscErrorCode OutputLock::CheckFree(MPI_Comm comm, const std::string& dir) {
@@ -120,6 +126,9 @@ PetscErrorCode OutputLock::Acquire(MPI_Comm comm, const std::string& dir) {
   std::string note;
   const std::string content = OurContent();
   PetscCall(RunOnRoot(comm, [&] { note = Take(dir, content); }));
+  // A process ended at once by a signal or a runtime failure removes it too (every rank: any may end first).
+  held_ = true;
+  stop_signals::SetLock(LockPath(dir));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {

@@ -1,5 +1,7 @@
 #include "vibrotherm/io/run_summary.hpp"
 
+#include <cmath>
+
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/io/json_writer.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -21,10 +23,18 @@ void WriteHeatView(JsonWriter& json, const RunSummary& s) {
   if (c.frames == 0) return;
   json.value("camera_peak_snr", c.peak_snr).value("camera_detectable", c.detectable);
   json.value("camera_detection_time", c.detection_time);
+  json.value("camera_defect_contrast", c.contrast);  // null: no background heat at all
   json.begin_object("camera");
   json.value("frames", c.frames).value("rows", c.rows).value("cols", c.cols).value("netd", c.netd);
   json.value("peak_rise", c.peak_rise).value("peak_frame", c.peak_frame).value("peak_time", c.peak_time);
-  json.value("detect_snr", c.detect_snr);
+  json.begin_array("peak_at").value(nullptr, c.peak_at[0]).value(nullptr, c.peak_at[1]).end_array();
+  json.value("peak_on_defect", c.peak_on_defect).value("total_peak_snr", c.total_peak_snr);
+  json.value("defect_share", c.defect_share);
+  json.value("defect_peak_rise", c.defect_peak_rise).value("defect_peak_frame", c.defect_peak_frame);
+  json.value("defect_peak_time", c.defect_peak_time);
+  json.begin_array("defect_peak_at").value(nullptr, c.defect_peak_at[0]).value(nullptr, c.defect_peak_at[1]).end_array();
+  json.value("background_peak_rise", c.background_peak_rise);
+  json.value("detect_snr", c.detect_snr).value("detect_contrast", c.detect_contrast);
   json.end_object();
 }
 
@@ -71,7 +81,8 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
   for (const auto& [name, rule] : s.derived_rules) json.value(name.c_str(), rule);
   json.end_object();
   const char* energy = s.mesh.dimension == 3 ? "J" : "J/m";  // 2D: per metre of depth
-  const std::pair<const char*, const char*> units[] = {
+  const char* power = s.mesh.dimension == 3 ? "W" : "W/m";
+  const std::pair<const char*, std::string> units[] = {
       {"wall_time_s", "s"}, {"stages", "s"}, {"physics_time", "s"}, {"dissipated_energy", energy},
       {"dissipated_energy_by_crack", energy},
       {"heat_deposited", energy}, {"heat_content", energy}, {"heat_boundary_loss", energy},
@@ -82,9 +93,15 @@ void WriteRecord(JsonWriter& json, const RunSummary& s) {
       {"derived.wave_stable_dt", "s"},
       {"derived.couple_dt", "s"}, {"derived.heat_dt", "s"}, {"derived.final_time", "s"}, {"modes.frequency", "Hz"},
       {"field_max_temperature_rise", "K"}, {"field_max_temperature_rise_at", "t in s, x, y (and z in 3D) in m"},
-      {"camera.peak_rise", "K"}, {"camera.netd", "K"}, {"camera.peak_time", "s"}, {"camera_peak_snr", "1"}};
+      {"camera.peak_rise", "K"}, {"camera.netd", "K"}, {"camera.peak_time", "s"}, {"camera_peak_snr", "1"},
+      {"camera.peak_at", "m (the camera's x, y)"}, {"camera.defect_peak_rise", "K"}, {"camera.defect_peak_time", "s"},
+      {"camera.defect_peak_at", "m (the camera's x, y)"}, {"camera.background_peak_rise", "K"},
+      {"camera_defect_contrast", "1"},
+      {"input_power", power}, {"friction_power", power}, {"thermosonic_efficiency", "1"},
+      {"source_power", std::string("t_start, t_end in s, frequency in Hz, amplitude in m (displacement) or Pa "
+                                   "(traction), powers in ") + power}};
   json.begin_object("units");
-  for (const auto& [key, unit] : units) json.value(key, std::string(unit));
+  for (const auto& [key, unit] : units) json.value(key, unit);
   json.end_object();
 }
 
@@ -119,6 +136,30 @@ void WritePeriodic(JsonWriter& json, const RunSummary& s) {
         .value("change", p.change)
         .value("friction_drift", p.drift)
         .value("drift_projected", p.projected)
+        .end_object();
+  json.end_array();
+}
+
+/// The source's powers per steady stretch; the last stretch's at the top level.
+void WriteSourcePower(JsonWriter& json, const RunSummary& s) {
+  if (s.source_power.empty()) return;
+  const SourcePowerRow& last = s.source_power.back().power;
+  json.value("input_power", last.input).value("friction_power", last.friction);
+  json.value("thermosonic_efficiency", last.input > 0.0 ? last.efficiency() : std::nan(""));
+  json.begin_array("source_power");
+  for (const SourcePowerSummary& p : s.source_power)
+    json.begin_object()
+        .value("t_start", p.power.t_start)
+        .value("t_end", p.power.t_end)
+        .value("periods", p.power.periods)
+        .value("frequency", p.power.frequency)
+        .value("amplitude", p.power.amplitude)
+        .value("input_power", p.power.input)
+        .value("friction_power", p.power.friction)
+        .value("damping_power", p.power.damping)
+        .value("radiated_power", p.power.radiated)
+        .value("efficiency", p.power.input > 0.0 ? p.power.efficiency() : std::nan(""))
+        .value("steady", p.steady)
         .end_object();
   json.end_array();
 }
@@ -178,6 +219,7 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
         json.end_array();
       }
       WritePeriodic(json, s);
+      WriteSourcePower(json, s);
       json.begin_object("stages");
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();

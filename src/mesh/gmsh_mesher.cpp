@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -20,6 +21,22 @@ using namespace gmsh_support;
 void set_size_field(const SpecimenGeometry& g, const std::vector<double>& crack_curves) {
   const int points = crack_curves.empty() ? 0 : static_cast<int>(std::max(100.0, 4.0 * g.cracks.front().length / g.h_crack));
   set_graded_size(crack_curves, {g.h_crack, g.h, g.h_crack, g.h_crack + (g.h - g.h_crack) / g.grading, points});
+}
+
+/// gmsh's 2D mesher; its own errors (it throws strings) become one line naming the mesh options.
+void generate_2d(const SpecimenGeometry& g) {
+  try {
+    gmsh::model::mesh::generate(2);
+  } catch (const std::exception&) {
+    throw;
+  } catch (...) {
+    char text[400];
+    std::snprintf(text, sizeof(text),
+                  "gmsh could not mesh the specimen with -mesh_h %g, -mesh_h_crack %g, -mesh_grading %g (its "
+                  "recombination into quads failed): change -mesh_h_crack or -mesh_grading, or use -mesh_cell tri",
+                  g.h, g.h_crack, g.grading);
+    throw std::invalid_argument(text);
+  }
 }
 
 }  // namespace
@@ -59,7 +76,7 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // blossom
   }
-  gmsh::model::mesh::generate(2);
+  generate_2d(g);
   if (g.quads && has_triangles()) {
     // Strong grading can leave triangles after recombination: mesh at twice the
     // size and subdivide every element into quads (back to the requested size).
@@ -69,7 +86,7 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     gmsh::model::mesh::clear();
     set_size_field(coarse, all_crack_curves);
     gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
-    gmsh::model::mesh::generate(2);
+    generate_2d(g);
   }
 
   return collect_rectangle_mesh(g, crack_curves, "gmsh");

@@ -55,8 +55,10 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
                                nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
   PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
                             m->refinements, &m->refinements, &refine_given));
-  PetscCall(PetscOptionsBool("-force", "Run even when the memory estimate exceeds the memory available", nullptr,
-                             m->force, &m->force, nullptr));
+  PetscCall(PetscOptionsBool("-force",
+                             "Run even when a memory estimate exceeds the memory available (the scene's; MUMPS's for "
+                             "-modes and -wave_start harmonic)",
+                             nullptr, m->force, &m->force, nullptr));
   PetscOptionsEnd();
   // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
   PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
@@ -270,6 +272,18 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(s->wave_cracks.Setup(s->wave, ncracks));
   PetscCall(s->heat_cracks.Setup(s->heat, ncracks));
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FinestRequestedElement(MPI_Comm comm, double* h) {
+  PetscFunctionBeginUser;
+  *h = 0.0;
+  MeshSource source;
+  PetscCall(ReadMeshSource(comm, &source));
+  if (source.from_file) PetscFunctionReturn(0);
+  SpecimenGeometry geometry;
+  PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  *h = std::ldexp(std::min(geometry.h, geometry.h_crack), -static_cast<int>(source.refinements));
   PetscFunctionReturn(0);
 }
 

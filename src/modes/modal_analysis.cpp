@@ -8,7 +8,9 @@
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/io/field_output.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
+#include "vibrotherm/options/petsc/option_choice.hpp"
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
@@ -31,6 +33,11 @@ PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double 
   PetscCall(PetscOptionsBool("-force", "Factor even when MUMPS's estimate exceeds the limit", nullptr, force, &force,
                              nullptr));
   o->force = force;
+  PetscInt crack = o->contact ? 1 : 0;
+  PetscCall(OptionsChoice(PetscOptionsObject, "-modes_crack",
+                          "The crack in the modes: open (faces free) or contact (linearised at -crack_a0, as the "
+                          "harmonic start)", {"open", "contact"}, &crack, nullptr));
+  o->contact = crack == 1;
   PetscOptionsEnd();
   PetscCheck(o->n >= 1, comm, PETSC_ERR_USER_INPUT, "-modes_n must be >= 1, got %" PetscInt_FMT, o->n);
   PetscCheck(o->target_frequency > 0.0 && std::isfinite(o->target_frequency), comm, PETSC_ERR_USER_INPUT,
@@ -40,6 +47,18 @@ PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double 
              "-modes_defect_radius must be >= 0 and finite, got %g", o->defect_radius);
   PetscCheck(o->memory_limit_gb >= 0.0 && std::isfinite(o->memory_limit_gb), comm, PETSC_ERR_USER_INPUT,
              "-modes_memory_limit must be >= 0 GB and finite, got %g", o->memory_limit_gb);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalAnalysis::AddStiffness(const ExtraStiffness& extra, Vec mass, Mat K) const {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> rows, cols;
+  std::vector<double> values;
+  PetscCall(extra(space_, mass, &rows, &cols, &values));
+  PetscCall(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(MatSetValue(K, rows[k], cols[k], values[k], ADD_VALUES));
+  PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 
@@ -94,7 +113,7 @@ std::vector<std::vector<Direction>> FreeDirections(int D, PetscInt nodes,
 }  // namespace
 
 PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
-                                    const wave::Excitation& excitation) {
+                                    const wave::Excitation& excitation, const ExtraStiffness& extra) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave_dm);
   material_ = material;
@@ -131,6 +150,7 @@ PetscErrorCode ModalAnalysis::Setup(DM wave_dm, PetscInt degree, const wave::Ela
   // K_r = Pᵀ K P (K as AIJ: PtAP of a block matrix with a scalar P is not offered); M_r likewise.
   Mat K_aij, M_full;
   PetscCall(MatConvert(K, MATAIJ, MAT_INITIAL_MATRIX, &K_aij));
+  if (extra) PetscCall(AddStiffness(extra, mass, K_aij));
   PetscCall(MatPtAP(K_aij, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &K_));
   PetscCall(MatCreateAIJ(comm, n_full, n_full, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &M_full));
   PetscCall(MatDiagonalSet(M_full, mass, INSERT_VALUES));
@@ -225,8 +245,13 @@ PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDist
   PetscCall(KSPGetOptionsPrefix(ksp, &factor_prefix));
   PetscCall(wave::CheckFactorMemory(K_, factor_prefix,
                                     {"Modes", "-modes_memory_limit", options.memory_limit_gb, options.force}));
+  PetscCall(PetscPrintf(comm, "Modes: shift-invert about %g Hz (MUMPS factors the stiffness), %" PetscInt_FMT
+                              " modes sought\n", options.target_frequency, options.n));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));
-  PetscCall(EPSSolve(eps));
+  {
+    const Heartbeat beat(comm, "Modes: solving");  // MUMPS and SLEPc say nothing for minutes on a 3D box
+    PetscCall(EPSSolve(eps));
+  }
   PetscCall(PetscLogEventEnd(solve_event, 0, 0, 0, 0));
   PetscInt converged;
   PetscCall(EPSGetConverged(eps, &converged));

@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
+
+#include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::modes {
 namespace {
@@ -44,6 +49,23 @@ PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, Cr
   PetscFunctionReturn(0);
 }
 
+/// The crack's contact linearised at its initial state (interface::CrackInterface::TangentStiffness,
+/// as the harmonic start): nothing for a law without contact or a specimen without a crack.
+ModalAnalysis::ExtraStiffness LinearisedContact(const mesh::Specimen& specimen, const coupling::Scene& scene) {
+  return [&specimen, &scene](const fe::LagrangeSpace& space, Vec mass, std::vector<PetscInt>* rows,
+                             std::vector<PetscInt>* cols, std::vector<double>* values) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    MPI_Comm comm = PetscObjectComm((PetscObject)space.dm());
+    std::unique_ptr<contact::CrackLaw> law;
+    VibrothermCallCpp(comm, law = contact::create_crack_law(scene.contact));
+    if (specimen.cracks.empty() || !law->has_contact()) PetscFunctionReturn(0);
+    interface::CrackInterface crack;
+    PetscCall(crack.Setup(space, specimen.wave_cracks, mass, std::move(law), scene.a0));
+    PetscCall(crack.TangentStiffness(rows, cols, values));
+    PetscFunctionReturn(0);
+  };
+}
+
 }  // namespace
 
 PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::Scene& scene, io::RunSummary* summary) {
@@ -60,11 +82,13 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
   PetscCall(PetscLogStageRegister("Modes", &stage));
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(stage));
-  PetscCall(analysis_.Setup(specimen.wave, wave_options.degree, material, excitation));
+  ModalAnalysis::ExtraStiffness contact;
+  if (options_.contact) contact = LinearisedContact(specimen, scene);
+  PetscCall(analysis_.Setup(specimen.wave, wave_options.degree, material, excitation, contact));
   PetscCall(PetscPrintf(comm, "Modes: %" PetscInt_FMT " free dofs (degree %" PetscInt_FMT "), %" PetscInt_FMT
-                        " modes near %g Hz, defect radius %g m\n",
+                        " modes near %g Hz, defect radius %g m, the crack %s\n",
                         analysis_.dofs(), wave_options.degree, options_.n, options_.target_frequency,
-                        options_.defect_radius));
+                        options_.defect_radius, options_.contact ? "in contact (linearised at -crack_a0)" : "open"));
   PetscCall(analysis_.Solve(options_, crack_distance));
   PetscCall(PetscLogStagePop());
   summary->stages["modes"] = MPI_Wtime() - t0;

@@ -4,7 +4,18 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "vibrotherm/util/write_failure.hpp"
+
 namespace vibrotherm::store {
+namespace {
+
+/// "write error on 'path': <why>" (a full disk named as such).
+std::string WriteError(const std::string& path) {
+  const std::string reason = WriteFailureReason(path);
+  return "write error on '" + path + "'" + (reason.empty() ? "" : ": " + reason);
+}
+
+}  // namespace
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), out_(partial_name(path_)) {
   if (!out_) throw std::runtime_error("cannot write '" + partial_name(path_) + "'");
@@ -27,7 +38,7 @@ AtomicFile::AtomicFile(std::string path, long long resume_bytes) : path_(std::mo
 
 long long AtomicFile::bytes() {
   out_.flush();
-  if (!out_) throw std::runtime_error("write error on '" + partial_name(path_) + "'");
+  if (!out_) throw std::runtime_error(WriteError(partial_name(path_)));
   return static_cast<long long>(std::filesystem::file_size(partial_name(path_)));
 }
 
@@ -50,7 +61,7 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::commit() {
   out_.flush();
-  if (!out_) throw std::runtime_error("write error on '" + (published_ ? path_ : partial_name(path_)) + "'");
+  if (!out_) throw std::runtime_error(WriteError(published_ ? path_ : partial_name(path_)));
   out_.close();
   if (!published_) publish(path_);
   committed_ = true;
@@ -58,7 +69,7 @@ void AtomicFile::commit() {
 
 void AtomicFile::publish_open() {
   out_.flush();
-  if (!out_) throw std::runtime_error("write error on '" + partial_name(path_) + "'");
+  if (!out_) throw std::runtime_error(WriteError(partial_name(path_)));
   publish(path_);
   published_ = committed_ = true;  // nothing under the .partial name to remove any more
 }

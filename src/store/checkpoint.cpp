@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/util/all_gather.hpp"
+#include "vibrotherm/util/write_failure.hpp"
 
 namespace vibrotherm::store {
 namespace {
@@ -219,9 +221,12 @@ PetscErrorCode Checkpoint::Write(const std::string& path) const {
     if (ok) ok = std::rename(partial.c_str(), path.c_str()) == 0;
     else std::remove(partial.c_str());
   }
+  char reason[256] = "";  // why rank 0 could not write it, for every rank's line
+  if (rank == 0 && !ok) std::snprintf(reason, sizeof(reason), "%s", WriteFailureReason(path).c_str());
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
-  PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "cannot write the checkpoint %s (disk full or not writable?)",
-             path.c_str());
+  PetscCallMPI(MPI_Bcast(reason, sizeof(reason), MPI_CHAR, 0, comm_));
+  PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "cannot write the checkpoint %s%s%s", path.c_str(),
+             reason[0] ? ": " : "", reason);
   PetscFunctionReturn(0);
 }
 

@@ -1,9 +1,13 @@
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 #include <dlfcn.h>
 #include <hdf5.h>
 
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -16,7 +20,25 @@ namespace {
 struct HandlerContext {
   std::string program;
   bool debug = false;  ///< -debug: PETSc's trace after the line, MPI_Abort's banner, HDF5's diagnostics
+  std::string writing;  ///< the output file being written (WritingFile), "" when none
 };
+
+HandlerContext g_context;  // the one handler's context: WritingFile and the handler share it
+
+/// A runtime failure's line: the file being written and why it failed, when known.
+std::string RuntimeFailure(const char* mess) {
+  const std::string what = mess ? mess : "(no message)";
+  std::string file = g_context.writing;
+  if (file.empty()) {  // elsewhere (a CSV, our own HDF5 writers name their file): is the output's disk full?
+    const std::string lock = stop_signals::LockPath();
+    file = lock.empty() ? "" : lock;
+    const std::string reason = file.empty() ? "" : WriteFailureReason(file);
+    const bool full = reason.rfind("no space", 0) == 0 && what.find("no space") == std::string::npos;
+    return full ? what + "; " + reason + " in " + std::filesystem::path(file).parent_path().string() : what;
+  }
+  const std::string reason = WriteFailureReason(file);
+  return "writing " + file + (reason.empty() ? "" : ": " + reason) + " (" + what + ")";
+}
 
 bool IsUserError(PetscErrorCode n) { return n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN; }
 
@@ -88,6 +110,7 @@ std::string UnknownTypeOption(const char* mess) {
 /// MPI_Abort calls after the banner, kills the job the same way without it. Looked
 /// up at run time, so other MPI libraries get their MPI_Abort.
 [[noreturn]] void EndJob(int code, bool debug) {
+  stop_signals::RemoveLockNow();  // the next run into the directory needs no takeover
   using Abort = int (*)(MPI_Comm, int);
   const auto quiet = reinterpret_cast<Abort>(dlsym(RTLD_DEFAULT, "ompi_mpi_abort"));
   if (quiet && !debug) quiet(MPI_COMM_WORLD, code);
@@ -115,7 +138,7 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
     // then the whole job ends; outputs stay under their .partial names (a
     // checkpoint's restart needs them).
     if (p == PETSC_ERROR_INITIAL) {
-      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", program, mess ? mess : "(no message)", fun ? fun : "?",
+      std::fprintf(stderr, "%s: error: %s (%s, %s:%d)\n", program, RuntimeFailure(mess).c_str(), fun ? fun : "?",
                    file ? file : "?", line);
       std::fflush(stderr);
       EndJob(1, context.debug);
@@ -141,7 +164,7 @@ PetscErrorCode UserErrorHandler(MPI_Comm comm, int line, const char* fun, const 
 
 PetscErrorCode PushUserErrorHandler(const char* program) {
   PetscFunctionBeginUser;
-  static HandlerContext context;  // PETSc keeps the context pointer for the whole run
+  HandlerContext& context = g_context;  // PETSc keeps the context pointer for the whole run
   context.program = program;
   PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
   PetscBool debug = PETSC_FALSE;  // read under the handler: a bad value is one line, exit 2
@@ -163,5 +186,10 @@ int ExitCode(PetscErrorCode ierr) {
   if (ierr == 0) return 0;
   return IsUserError(ierr) ? 2 : 1;
 }
+
+WritingFile::WritingFile(const std::string& path) : previous_(g_context.writing) { g_context.writing = path; }
+
+WritingFile::~WritingFile() { g_context.writing = previous_; }
+
 
 }  // namespace vibrotherm

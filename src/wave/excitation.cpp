@@ -3,6 +3,7 @@
 #include "vibrotherm/options/petsc/option_choice.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -29,10 +30,34 @@ void Envelope(const SourceTimeFunction& f, double t, double* a, double* da, doub
 
 }  // namespace
 
-double SourceTimeFunction::ramp_time() const { return std::min(ramp_cycles / frequency, 0.5 * duration); }
+double SourceTimeFunction::ramp_time() const {
+  const double slowest = sweeping() ? std::min(sweep_from, sweep_to) : frequency;
+  return std::min(ramp_cycles / slowest, 0.5 * duration);
+}
+
+double SourceTimeFunction::cycles(double t) const {
+  if (!sweeping()) return frequency * t;
+  return sweep_from * t + 0.5 * (sweep_to - sweep_from) * t * t / duration;
+}
+
+double SourceTimeFunction::frequency_at(double t) const {
+  return sweeping() ? sweep_from + (sweep_to - sweep_from) * t / duration : frequency;
+}
+
+double SourceTimeFunction::time_of_cycle(double n) const {
+  if (!sweeping()) return n / frequency;
+  // c(t) = n: the root of (F2 − F1)/(2T) t² + F1 t − n = 0 with t ≥ 0, in the form that
+  // stays exact when F2 → F1.
+  const double a = 0.5 * (sweep_to - sweep_from) / duration, b = sweep_from;
+  return 2.0 * n / (b + std::sqrt(std::max(0.0, b * b + 4.0 * a * n)));
+}
 double SourceTimeFunction::blend_time() const { return std::max(ramp_cycles, 1.0) / frequency; }
 
 bool SourceTimeFunction::steady_stretch(double t, double* start, double* end) const {
+  if (sweeping()) {  // a sweep never repeats itself
+    *start = *end = 0.0;
+    return false;
+  }
   double from = running_at_start ? 0.0 : ramp_time();
   for (const Step& step : schedule) {
     if (t < step.t) break;
@@ -48,23 +73,43 @@ bool SourceTimeFunction::steady_stretch(double t, double* start, double* end) co
   return t >= from && t <= to && to > from;
 }
 
-void SourceTimeFunction::evaluate(double t, double* g, double* dg, double* ddg) const {
-  *g = *dg = *ddg = 0.0;
-  if (t <= 0.0 || t >= duration) return;
-  const double w = 2.0 * M_PI * frequency;
+void SourceTimeFunction::window(double t, double* win, double* dwin, double* ddwin) const {
+  *win = 1.0, *dwin = *ddwin = 0.0;
+  if (t <= 0.0 || t >= duration) {
+    *win = 0.0;
+    return;
+  }
+  // sin²(π τ / (2 T_r)), τ the time from the nearer end.
   const double ramp = ramp_time();
-  // Window w(t) and its derivatives: sin²(π τ / (2 T_r)), τ the time from the nearer end.
-  double win = 1.0, dwin = 0.0, ddwin = 0.0;
   if (ramp > 0.0 && ((t < ramp && !running_at_start) || t > duration - ramp)) {
     const bool on = t < ramp;
     const double tau = on ? t : duration - t, sign = on ? 1.0 : -1.0, k = M_PI / (2.0 * ramp);
-    win = std::sin(k * tau) * std::sin(k * tau);
-    dwin = sign * k * std::sin(2.0 * k * tau);
-    ddwin = 2.0 * k * k * std::cos(2.0 * k * tau);
+    *win = std::sin(k * tau) * std::sin(k * tau);
+    *dwin = sign * k * std::sin(2.0 * k * tau);
+    *ddwin = 2.0 * k * k * std::cos(2.0 * k * tau);
   }
-  // g = A · (s · win): the carrier times the window, then the amplitude's product rule.
-  const double s = std::sin(w * t), c = std::cos(w * t);
-  const double h = s * win, dh = w * c * win + s * dwin, ddh = -w * w * s * win + 2.0 * w * c * dwin + s * ddwin;
+}
+
+double SourceTimeFunction::envelope(double t) const {
+  double win, dwin, ddwin, a, da, dda;
+  window(t, &win, &dwin, &ddwin);
+  Envelope(*this, t, &a, &da, &dda);
+  return a * win;
+}
+
+void SourceTimeFunction::evaluate(double t, double* g, double* dg, double* ddg) const {
+  *g = *dg = *ddg = 0.0;
+  if (t <= 0.0 || t >= duration) return;
+  double win, dwin, ddwin;
+  window(t, &win, &dwin, &ddwin);
+  // g = A · (s · win): the carrier sin(φ), φ = 2π cycles(t), times the window, then the
+  // amplitude's product rule (a sweep's φ'' = 2π (F2 − F1) / T; a constant frequency's 0).
+  // (A constant frequency keeps the product w · t: its outputs stay bit for bit what they were.)
+  const double w = 2.0 * M_PI * frequency_at(t), phase = sweeping() ? 2.0 * M_PI * cycles(t) : w * t;
+  const double dw = sweeping() ? 2.0 * M_PI * (sweep_to - sweep_from) / duration : 0.0;
+  const double s = std::sin(phase), c = std::cos(phase);
+  const double h = s * win, dh = w * c * win + s * dwin;
+  const double ddh = (dw * c - w * w * s) * win + 2.0 * w * c * dwin + s * ddwin;
   double a, da, dda;
   Envelope(*this, t, &a, &da, &dda);
   *g = a * h;
@@ -93,12 +138,34 @@ PetscErrorCode SetSchedule(MPI_Comm comm, const std::vector<double>& values, Sou
   PetscFunctionReturn(0);
 }
 
+/// -source_sweep F1,F2: both frequencies positive and different; the highest sets
+/// -source_frequency's roles (coupling interval, mesh checks); no amplitude schedule with it.
+PetscErrorCode SetSweep(MPI_Comm comm, const std::vector<double>& values, bool no_schedule, SourceTimeFunction* f) {
+  PetscFunctionBeginUser;
+  if (values.empty()) PetscFunctionReturn(0);
+  PetscCheck(values.size() == 2, comm, PETSC_ERR_USER_INPUT, "-source_sweep needs two frequencies F1,F2 [Hz] (got %zu values)",
+             values.size());
+  for (double v : values)
+    PetscCheck(std::isfinite(v) && v > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-source_sweep %g,%g: both frequencies must be finite and > 0", values[0], values[1]);
+  PetscCheck(values[0] != values[1], comm, PETSC_ERR_USER_INPUT,
+             "-source_sweep %g,%g: the two frequencies are equal (a constant frequency is -source_frequency)", values[0],
+             values[1]);
+  PetscCheck(no_schedule, comm, PETSC_ERR_USER_INPUT,
+             "-source_sweep with -source_schedule: a sweep takes one amplitude (-source_amplitude)");
+  PetscCheck(f->duration > 0.0, comm, PETSC_ERR_USER_INPUT, "-source_sweep needs -source_duration > 0");
+  f->sweep_from = values[0];
+  f->sweep_to = values[1];
+  f->frequency = std::max(values[0], values[1]);
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscFunctionBeginUser;
   PetscInt type = e->type == SourceType::Displacement ? 0 : 1, component = e->component == SourceComponent::Tangential ? 0 : 1;
-  std::vector<double> schedule;
+  std::vector<double> schedule, sweep;
   PetscOptionsBegin(comm, nullptr, "Excitation on the source edge", nullptr);
   PetscCall(OptionsChoice(PetscOptionsObject, "-source_type", "Source on the source edge", {"displacement", "traction"},
                           &type, nullptr));
@@ -115,12 +182,16 @@ PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscCall(OptionsRealList(PetscOptionsObject, "-source_schedule",
                             "Amplitude steps t1,A1,t2,A2,...: from t_i [s] on amplitude A_i (blended over "
                             "max(-source_ramp_cycles, 1) cycles)", &schedule, nullptr));
+  PetscCall(OptionsRealList(PetscOptionsObject, "-source_sweep",
+                            "A frequency sweep F1,F2 [Hz], linear in time over -source_duration (replaces "
+                            "-source_frequency)", &sweep, nullptr));
   PetscOptionsEnd();
   e->type = type == 0 ? SourceType::Displacement : SourceType::Traction;
   e->component = component == 0 ? SourceComponent::Tangential : SourceComponent::Normal;
   PetscCheck(e->signal.frequency > 0.0, comm, PETSC_ERR_USER_INPUT, "-source_frequency must be > 0");
   PetscCheck(e->signal.duration >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_duration must be >= 0");
   PetscCheck(e->signal.ramp_cycles >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_ramp_cycles must be >= 0");
+  PetscCall(SetSweep(comm, sweep, schedule.empty(), &e->signal));
   PetscCall(SetSchedule(comm, schedule, &e->signal));
   PetscFunctionReturn(0);
 }

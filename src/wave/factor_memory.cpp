@@ -7,6 +7,7 @@
 #include <string>
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
+#include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 
 namespace vibrotherm::wave {
@@ -37,7 +38,10 @@ PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLi
   PetscCall(PetscOptionsGetString(nullptr, prefix, "-pc_factor_mat_solver_type", solver, sizeof solver, nullptr));
   if (std::string(solver) != MATSOLVERMUMPS) PetscFunctionReturn(0);  // another solver: no MUMPS estimate
   double needed;
-  PetscCall(MumpsFactorMemory(A, prefix, &needed));
+  {
+    const Heartbeat beat(comm, std::string(options.who) + ": MUMPS's analysis (its memory estimate)");
+    PetscCall(MumpsFactorMemory(A, prefix, &needed));
+  }
   double limit = options.limit_gb * 1e9;
   if (!(limit > 0.0)) {
     limit = mesh::AvailableMemory();

@@ -16,6 +16,7 @@
 // work at t = 0, which keeps the energy budget closed.
 #include <cmath>
 
+#include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
@@ -139,7 +140,14 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
                               {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
                                force == PETSC_TRUE}));
-  PetscCall(KSPSolve(ksp, rhs, U));
+  PetscInt n_dofs;
+  PetscCall(MatGetSize(Z, &n_dofs, nullptr));
+  PetscCall(PetscPrintf(comm, "Harmonic start: factoring and solving the %" PetscInt_FMT " doubled dofs (MUMPS)\n",
+                        n_dofs));
+  {
+    const Heartbeat beat(comm, "Harmonic start: factoring");  // minutes on a 3D box, with no word from MUMPS
+    PetscCall(KSPSolve(ksp, rhs, U));
+  }
   // u(0) = Im U, v(0) = ω Re U.
   Vec u, v;
   PetscCall(GetFields(&u, &v));

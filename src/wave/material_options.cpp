@@ -4,7 +4,7 @@ namespace vibrotherm::wave {
 
 PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* m) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "Elastic material (plane strain)", nullptr);
+  PetscOptionsBegin(comm, nullptr, "Elastic material (2D: plane strain; 3D: the box)", nullptr);
   PetscCall(PetscOptionsReal("-material_density", "Density [kg/m^3]", nullptr, m->density, &m->density, nullptr));
   PetscCall(PetscOptionsReal("-material_E", "Young's modulus [Pa]", nullptr, m->E, &m->E, nullptr));
   PetscCall(PetscOptionsReal("-material_nu", "Poisson ratio", nullptr, m->nu, &m->nu, nullptr));

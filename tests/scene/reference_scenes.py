@@ -40,7 +40,7 @@ def run(build, root, mpiexec, name):
     if name == "contact_app":
         return
     command = ([mpiexec, "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []) + \
-              [os.path.join(build, "vibrotherm")] + args + ["-output_dir", out]
+              [os.path.join(build, "vibrotherm")] + args + ["-overwrite", "-output_dir", out]
     r = subprocess.run(command, capture_output=True, text=True)
     if r.returncode:
         sys.exit("%s: exit %d: %s" % (name, r.returncode, r.stderr[-2000:]))

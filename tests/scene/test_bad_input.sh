@@ -119,6 +119,17 @@ expect_error "-heat_T0 must be > 0 K and finite, got inf" $box $crack -heat_T0 i
 expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_target_frequency inf
 expect_error "-crack_probe_crack must be >= 1" $box $crack -crack_probe 0.5 -crack_probe_crack 0
 expect_error "-probe_points needs x,y pairs, got 3 numbers" $box $crack -probe_points 0.01,0.01,0.02
+# Issue 43, item 5: values that ran to "complete" with a useless result, and the checks
+# that came after meshing (item 6: a frequency no mesh of these sizes can carry, the camera face).
+expect_error "-source_duration must be > 0" $box $crack -source_duration 0
+expect_error "-source_ramp_cycles 1e+06: a switch-on longer than the whole excitation" $box $crack -source_ramp_cycles 1e6
+expect_error "Hz: 0.001 cycles in -source_duration 0.001 s; at least one whole cycle" $box $crack -source_frequency 1 -final_time 1e-3
+expect_error "is longer than the run (0.001 s, -final_time)" $box $crack -source_frequency 1 -source_duration 2 \
+  -final_time 1e-3
+expect_error "-source_amplitude 0: nothing drives the waves" $box $crack -source_amplitude 0
+expect_error "-camera_netd must be > 0" $box $crack -camera_netd 0
+expect_error "-camera_face inside: unknown face" $box $crack -mesh_only -specimen_depth 0.01 -camera_face inside
+expect_error "no mesh of these sizes can carry these waves" $box $crack -source_frequency 1e300
 
 # Options files (issue 27): PETSc reads them inside PetscInitialize, where its own
 # errors were a 20-line trace, MPI_ABORT's banner and exit 83 or 62.
@@ -129,6 +140,11 @@ printf -- '-specimen_width 0.05 -specimen_height 0.1\n' >"$work/two_per_line.opt
 expect_error "line 1: several options on one line" -options_file "$work/two_per_line.opts"
 printf -- '-options_file %s\n' "$work/two_per_line.opts" >"$work/nested.opts"
 expect_error "-options_file $work/two_per_line.opts line 1: several options" -options_file "$work/nested.opts"
+# Issue 43, item 8: an include is found beside the including file; a missing one names the including file.
+mkdir -p "$work/scene"
+printf -- '-options_file missing_base.opts\n' >"$work/scene/includes_missing.opts"
+expect_error "-options_file $work/scene/includes_missing.opts line 1: -options_file $work/scene/missing_base.opts: cannot open" \
+  -options_file "$work/scene/includes_missing.opts"
 expect_error "-options_file: needs a file name" $box $crack -options_file
 
 echo "bad input: $passed passed, $failed failed"

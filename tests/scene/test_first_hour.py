@@ -88,7 +88,11 @@ with tempfile.TemporaryDirectory() as tmp:
     for name in ("fields.h5", "fields.xmf", "probes.csv", "crack_state.csv", "probes.csv.partial"):
         open(os.path.join(stale, name), "w").write("from an earlier run\n")
     open(os.path.join(stale, "notes.txt"), "w").write("the user's own file\n")
+    # Issue 43: an earlier run's outputs are never removed without -overwrite.
     r = run(paper + small + ["-mesh_only", "-output_dir", stale], tmp)
+    check(r.returncode == 2 and "-overwrite" in r.stderr and len(os.listdir(stale)) == 6,
+          "run into an old directory without -overwrite: refused, nothing removed (%s)" % r.stderr[-300:])
+    r = run(paper + small + ["-mesh_only", "-overwrite", "-output_dir", stale], tmp)
     check(r.returncode == 0, "run into an old directory: %s" % r.stderr[-500:])
     left = sorted(os.listdir(stale))
     check(left == ["mesh.h5", "mesh.xmf", "notes.txt", "summary.json", "vibrotherm.log"],

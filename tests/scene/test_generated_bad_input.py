@@ -69,8 +69,8 @@ ALLOWED = {
     "-crack_angle": {"-1", "0"},
     # Initial approach: "> 0: pre-closed, < 0: gap" -- any sign.
     "-crack_a0": {"-1", "0"}, "-crack_a0_max": {"-1", "0"}, "-contact_a0": {"-1", "0"},
-    # A signed amplitude (the phase) and 0 (no excitation).
-    "-source_amplitude": {"-1", "0"},
+    # A signed amplitude (the phase); 0 drives nothing (refused, issue 43).
+    "-source_amplitude": {"-1"},
     # ">= 0" in -help: friction-free, adiabatic edges, no crack power, no dissipation-quiet test.
     "-contact_mu": {"0"}, "-heat_h": {"0"}, "-heat_crack_power": {"0"}, "-wave_quiet_fraction": {"0"},
     "-modes_defect_radius": {"0"},
@@ -80,12 +80,12 @@ ALLOWED = {
     "-output_times": {"0"},
     # Poisson ratio in (-1, 0.5): 0 is valid.
     "-material_nu": {"0"},
+    # "0: no damping" (-help).
+    "-material_loss_factor": {"0"},
     # No thermoelastic coupling (-help: "(-thermoelastic)"; the heat reader wants >= 0).
     "-material_expansion": {"0"},
     # "0: a 2D plane-strain specimen" (-help).
     "-specimen_depth": {"0"},
-    # The wave reader declares -source_duration >= 0: 0 is a run without excitation.
-    "-source_duration": {"0"},
     # Abrupt switch-on; uniform element size.
     "-source_ramp_cycles": {"0"}, "-mesh_grading": {"0"}, "-heat_mesh_grading": {"0"},
     # Booleans: 0 is false; a bare flag ("") is true.
@@ -94,8 +94,6 @@ ALLOWED = {
     # The camera switch and -force are booleans; any integer seeds the noise; 0 fps: no camera.
     "-camera": {"0", ""}, "-force": {"0", ""}, "-camera_seed": {"-1", "0"}, "-camera_fps": {"0"},
     "-debug": {"0", ""}, "-overwrite": {"0", ""},
-    # NETD 0: a noise-free camera (the clean frames).
-    "-camera_netd": {"0"},
     # 0: checkpoints only when a signal stops the run.
     "-checkpoint_every_s": {"0"},
     # 0: the waves run again only where the source changes; the drift is reported only.

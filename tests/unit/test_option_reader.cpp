@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include "input_error_message.hpp"
@@ -68,6 +69,31 @@ TEST(OptionReader, OptionsFilesInsertAtTheirPlaceAndNest) {
   EXPECT_EQ(error_of({"-options_file", bad}),
             "-options_file " + bad + " line 1: expected '-name value' or '-name', got '-contact_mu 1 2'");
   EXPECT_EQ(error_of({"-options_file"}), "-options_file: needs a file name");
+}
+
+// Issue 43: a file's includes are found beside it, not in the directory one runs from (scripts/run
+// from elsewhere, options/thermosonic.opts including paper.opts), and an error inside an include
+// names the including file and line.
+TEST(OptionReader, IncludesAreRelativeToTheIncludingFile) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "includes";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "base.opts") << "-contact_mu 0.25\n";
+  std::ofstream(dir / "scenes" / "plate.opts") << "# the shared base, one directory up\n-options_file ../base.opts\n";
+  const std::vector<std::string> tokens = expand_options_files({"-options_file", (dir / "scenes" / "plate.opts").string(), "-x", "1"});
+  EXPECT_EQ(tokens, (std::vector<std::string>{"-contact_mu", "0.25", "-x", "1"}));
+  std::ofstream(dir / "scenes" / "broken.opts") << "-contact_mu 0.5\n-options_file missing.opts\n";
+  const std::string broken = (dir / "scenes" / "broken.opts").string();
+  EXPECT_EQ(options_file_error({"-options_file", broken}),
+            "-options_file " + broken + " line 2: -options_file " + (dir / "scenes" / "missing.opts").string() +
+                ": cannot open the file");
+  // Files written when includes were relative to the working directory still read from there.
+  const fs::path before = fs::current_path();
+  fs::current_path(dir);
+  std::ofstream(dir / "scenes" / "old_style.opts") << "-options_file base.opts\n";
+  EXPECT_EQ(expand_options_files({"-options_file", "scenes/old_style.opts"}),
+            (std::vector<std::string>{"-contact_mu", "0.25"}));
+  fs::current_path(before);
 }
 
 TEST(OptionReader, DefaultsAreTheDeclaredValues) {

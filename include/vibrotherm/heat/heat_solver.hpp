@@ -78,6 +78,15 @@ class HeatSolver {
   PetscErrorCode SetLabelledCrackPower(const std::vector<double>& power_by_crack);
   /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
   PetscErrorCode SetSourceLoad(Vec load);
+  /// A second rise field stepped with θ's own steps (the same linear system, its own load Q_p,
+  /// no film source G): by linearity, the share of θ that Q_p causes (the camera's defect
+  /// signal is the friction heat's share, heat_component.hpp). Zero until loaded; SetPartialLoad
+  /// before each step, like SetSourceLoad. Needs a theta-family integrator (backward Euler,
+  /// Crank–Nicolson): a step of another type is refused, naming -heat_free_ts_type. Collective.
+  PetscErrorCode EnablePartialRise();
+  PetscErrorCode SetPartialLoad(Vec load);
+  /// The partial rise (null unless enabled): a global vector of the heat DM (read only).
+  Vec partial_rise() const { return partial_; }
   /// Fixes the probe points (x, y pairs; x, y, z triples on a 3D mesh). Collective.
   PetscErrorCode SetProbePoints(const std::vector<double>& xy);
   /// Temperatures [K] at the probe points, on every rank. Collective.
@@ -116,6 +125,10 @@ class HeatSolver {
   PetscErrorCode TemperatureAt(const double* point, double* T) const;
   /// Heat content ∫ρ c_p (T − T0) [J/m] (collective).
   PetscErrorCode HeatContent(double* content) const;
+  /// The load Q of the next step [W/m per dof] (read only).
+  Vec load() const { return Q_; }
+  /// Whether convective edges to an ambient T_ext ≠ T0 heat or cool the specimen (a source G ≠ 0).
+  bool film_source() const { return film_total_ != 0.0; }
   /// Energy injected by the sources so far [J/m].
   double deposited() const { return deposited_; }
   /// Energy that left through sink and convective edges so far [J/m].
@@ -157,6 +170,8 @@ class HeatSolver {
   /// J = K + shift M with the sink rows (identity rows and columns). Collective.
   PetscErrorCode FillJacobian(double shift, Mat J) const;
   PetscErrorCode Account(double h);
+  /// The partial rise through the step just taken (partial_rise.cpp).
+  PetscErrorCode AdvancePartial();
   /// w of a theta-family TS (1: backward Euler, 1/2: Crank-Nicolson); family = false (w = 1) for others.
   static PetscErrorCode ThetaWeight(TS ts, bool* family, double* w);
   // Setup's parts: M and K (lumped M: row sums), the convective film into K, H, G.
@@ -175,6 +190,7 @@ class HeatSolver {
   Mat M_ = nullptr, K_ = nullptr;  ///< K includes the convective film H
   Vec theta_ = nullptr, theta_prev_ = nullptr, Q_ = nullptr, G_ = nullptr, H_ = nullptr, work_ = nullptr;
   Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
+  Vec partial_ = nullptr, partial_load_ = nullptr, partial_step_ = nullptr;  ///< EnablePartialRise
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   std::vector<fe::LocatedPoint> probes_;
   PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);

@@ -2,6 +2,8 @@
 // Layout (every dataset has a string attribute `units`):
 //   /camera/frame_k   rows × cols [K]: temperature rise the camera reads (with NETD noise)
 //   /camera/clean_k   rows × cols [K]: the same frame without noise
+//   /camera/defect_k  rows × cols [K]: the defect's own share of clean_k (the crack's friction heat
+//                     alone), written when other heat shares the frame or none is the defect's
 //                     both with attributes `time` (window centre), `window_start`, `window_end` [s]
 //   /camera/time      frames × 3 [s]: centre, start, end of each frame's integration window
 //   /camera/x, /y     pixel centres [m] (cols, rows); row 0 is the bottom row (y ascending)
@@ -40,6 +42,8 @@ class CameraFrames {
   const std::vector<double>& times() const { return times_; }
   /// Frame k integrated over [start, end]: clean and noisy values, rows × cols row-major.
   void Write(int k, double start, double end, const std::vector<double>& clean, const std::vector<double>& noisy);
+  /// The defect's share of frame k (after Write).
+  void WriteDefect(int k, double start, double end, const std::vector<double>& defect);
   /// Flushes everything written to disk (after each frame).
   void Flush();
   /// Writes the time table, closes and renames the .h5, then writes the .xmf.
@@ -54,6 +58,7 @@ class CameraFrames {
   hid_t file_ = -1, group_ = -1;
   CameraGrid grid_;
   std::vector<double> times_;  ///< centre, start, end per frame
+  bool defect_ = false;        ///< defect_k written
 };
 
 }  // namespace vibrotherm::io

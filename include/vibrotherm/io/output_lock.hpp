@@ -27,12 +27,15 @@ class OutputLock {
   /// Takes dir's lock (the directory exists), taking over a stale one; refuses
   /// like CheckFree. Collective.
   PetscErrorCode Acquire(MPI_Comm comm, const std::string& dir);
+  /// Removes the lock if this run holds it (what the destructor does).
+  void Release();
 
   static constexpr const char* kFileName = "vibrotherm.lock";
 
  private:
   std::string path_;  ///< the lock this run holds (rank 0), "" when none
   std::string content_;
+  bool held_ = false;  ///< this run holds it (every rank)
 };
 
 }  // namespace vibrotherm::io

@@ -3,11 +3,13 @@
 
 #include <petscsys.h>
 
+#include <array>
 #include <map>
 #include <utility>
 #include <string>
 #include <vector>
 
+#include "vibrotherm/io/source_power_log.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
 
 namespace vibrotherm::io {
@@ -17,15 +19,26 @@ struct OptionRecord {
   std::string name, value, source;  ///< source: "command line", "options file" or "default"
 };
 
-/// The IR camera's record (coupling/heat_camera): frames, the best frame, detectability.
+/// The IR camera's record (coupling/heat_camera): frames, the hottest frame, and the verdict
+/// about the defect (coupling/exchange/camera_verdict.hpp). Places are pixel centres in the
+/// camera's axes (camera.h5 x, y).
 struct CameraSummary {
-  long long frames = 0, rows = 0, cols = 0, peak_frame = 0;
-  double netd = 0.0, detect_snr = 0.0;
-  double peak_rise = 0.0;  ///< largest pixel of the noise-free frames [K]
+  long long frames = 0, rows = 0, cols = 0, peak_frame = 0, defect_peak_frame = 0;
+  double netd = 0.0, detect_snr = 0.0, detect_contrast = 0.0;
+  std::string defect_share;  ///< whole (only the crack heats), partial, none (nothing heats at the crack)
+  double peak_rise = 0.0;  ///< largest pixel of the noise-free frames, all heat [K]
   double peak_time = 0.0;  ///< centre of that frame's window [s]
-  double peak_snr = 0.0;   ///< peak_rise / NETD
-  bool detectable = false; ///< peak_snr >= -camera_detect_snr
-  double detection_time = -1.0;  ///< end of the first frame whose clean peak reaches the SNR [s] (-1: none)
+  std::array<double, 2> peak_at{};  ///< that pixel [m]
+  bool peak_on_defect = false;       ///< the defect makes at least half of that pixel's rise
+  double total_peak_snr = 0.0;       ///< peak_rise / NETD (any heat)
+  double defect_peak_rise = 0.0;     ///< the defect's own largest signal [K]
+  double defect_peak_time = 0.0;     ///< centre of its frame [s]
+  std::array<double, 2> defect_peak_at{};  ///< its pixel [m]
+  double background_peak_rise = 0.0;  ///< the background's largest pixel in that frame [K]
+  double peak_snr = 0.0;   ///< defect_peak_rise / NETD
+  double contrast = 0.0;   ///< defect_peak_rise / background_peak_rise (+inf: no background)
+  bool detectable = false; ///< a frame with snr >= -camera_detect_snr and contrast >= -camera_detect_contrast
+  double detection_time = -1.0;  ///< end of the first such frame [s] (-1: none)
 };
 
 /// One periodic continuation (coupling/periodic_continuation): when the run was found periodic,
@@ -37,6 +50,12 @@ struct PeriodicSegment {
   double change = 0.0;             ///< the detector's change when it was found periodic
   double drift = 0.0;              ///< the friction per period's relative change per source period then
   double projected = 0.0;          ///< half the drift over the periods continued: the frozen heat's error if it went on
+};
+
+/// The source's mean powers over a steady stretch's last periods (coupling/observe/source_power.hpp).
+struct SourcePowerSummary {
+  SourcePowerRow power;
+  bool steady = true;  ///< false: the run's last periods, not in a steady state (a sweep, a short run)
 };
 
 /// The largest rise over every heat dof at every heat step, when and where.
@@ -82,6 +101,9 @@ struct RunSummary {
   /// -modes: (frequency [Hz], defect participation) of each mode found.
   std::vector<std::pair<double, double>> modes;
   std::vector<PeriodicSegment> periodic;  ///< the periodic continuations (summary.json "periodic")
+  /// Per steady stretch of the source, its last periods' powers (summary.json source_power; the last
+  /// one also as input_power, friction_power, thermosonic_efficiency).
+  std::vector<SourcePowerSummary> source_power;
   mesh::MeshSummary mesh;
 };
 

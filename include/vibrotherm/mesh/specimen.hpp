@@ -59,6 +59,10 @@ PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
 /// refuses, naming the options, one beyond the memory available unless -force.
 PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length);
 
+/// The finest wave element edge the options ask for before meshing [m]: the least of
+/// -mesh_h and -mesh_h_crack, halved per -dm_refine; 0 for a -mesh_file (known once read).
+PetscErrorCode FinestRequestedElement(MPI_Comm comm, double* h);
+
 /// Reads the generated-specimen options into geometry (used by SpecimenCreate);
 /// check: refuse a specimen that cannot be meshed (false: declare them only).
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry, bool check = true);

@@ -4,6 +4,11 @@
 //                     open crack, which is also the contact linearised at
 //                     a0 = 0 for laws with N(0) = N'(0) = 0, e.g. Biwa's),
 //
+// or (-modes_crack contact) with the crack's contact linearised at its initial state
+// added to K, as the harmonic start (-wave_start harmonic) does: K_c = the tangent
+// stiffness of every contact cell (normal and stuck tangential springs at a0), so a
+// pre-closed crack's modes are those its small vibrations resonate at (a kissing
+// delamination's layer rides on these springs: its LDR lies above the open one's);
 // with the wave solver's own K and lumped M, so the frequencies are those the
 // explicit wave solver resonates at. Edges: roller, antisymmetric, fixed and
 // the prescribed component of a displacement source are constraints; absorbing
@@ -35,6 +40,7 @@ struct ModesOptions {
   double defect_radius = 0.0;     ///< -modes_defect_radius [m] (default: half the longest crack)
   double memory_limit_gb = 0.0;   ///< -modes_memory_limit [GB] for the factorisation (0: 0.9 x the memory available)
   bool force = false;             ///< -force: factor even above that
+  bool contact = false;           ///< -modes_crack contact: the contact linearised at a0 (else open)
 };
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
 
@@ -53,9 +59,13 @@ class ModalAnalysis {
   ModalAnalysis(const ModalAnalysis&) = delete;
   ModalAnalysis& operator=(const ModalAnalysis&) = delete;
   ~ModalAnalysis();
-  /// Assembles the reduced K and M on the wave mesh. Collective.
+  /// Stiffness entries added to K (global dof rows, columns, values) from the space and lumped mass.
+  using ExtraStiffness = std::function<PetscErrorCode(const fe::LagrangeSpace& space, Vec mass,
+                                                      std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
+                                                      std::vector<double>* values)>;
+  /// Assembles the reduced K (plus `extra`: the linearised contact) and M on the wave mesh. Collective.
   PetscErrorCode Setup(DM wave_dm, PetscInt degree, const wave::ElasticMaterial& material,
-                       const wave::Excitation& excitation);
+                       const wave::Excitation& excitation, const ExtraStiffness& extra = nullptr);
   /// Solves for the modes nearest the target; the distance to the cracks gives each
   /// mode's participation (none: no crack, no participation).
   PetscErrorCode Solve(const ModesOptions& options, const CrackDistance& crack_distance);
@@ -65,6 +75,8 @@ class ModalAnalysis {
   PetscInt dofs() const { return reduced_dofs_; }
 
  private:
+  /// K += the extra stiffness (assembled; its new nonzeros allocated). Collective.
+  PetscErrorCode AddStiffness(const ExtraStiffness& extra, Vec mass, Mat K) const;
   /// Per local bulk cell (space order): whether its centroid lies within radius of a crack.
   PetscErrorCode CellsNearCracks(const CrackDistance& crack_distance, double radius, std::vector<bool>* near) const;
   /// Share of the strain energy of φ (full displacement) in the cells marked near.

@@ -2,9 +2,14 @@
 // "-name" alone, "-options_file FILE" inserting a file's options (one
 // "-name [value]" per line, '#' comments) at its place; a later occurrence of
 // a name overrides an earlier one. A token is a value unless it starts with
-// '-' followed by a letter or '_' ("-1e-9", "-.5", "-nan" are values).
+// '-' followed by a letter or '_' ("-1e-9", "-.5", "-nan" are values). A file
+// included by another is found relative to the including file's directory (or,
+// for files written before that rule, relative to the working directory when
+// only that holds it); an error in it names the including file and line too.
 //
-// Used by vibrotherm-contact, which must run where PETSc is not installed.
+// Used by vibrotherm-contact, which must run where PETSc is not installed, and
+// by vibrotherm to expand its options files before PETSc reads the command line
+// (PETSc resolves includes relative to the working directory).
 #pragma once
 
 #include <map>
@@ -28,8 +33,6 @@ class OptionDatabase {
   const std::vector<std::string>& names() const { return order_; }
 
  private:
-  void insert_tokens(const std::vector<std::string>& tokens, int depth);
-  void insert_file(const std::string& path, int depth);
   void set(const std::string& name, const std::string& value);
 
   std::map<std::string, std::string> values_;
@@ -38,6 +41,11 @@ class OptionDatabase {
 
 /// True for "-name" tokens (option names), false for values such as "-1".
 bool is_option_name(const std::string& token);
+
+/// The command line (without the program name) with every -options_file FILE replaced
+/// by FILE's options, in place, nested files too (keep_yaml: YAML files, PETSc's, are left
+/// as they are). InputError naming the file (and the including file and line).
+std::vector<std::string> expand_options_files(const std::vector<std::string>& args, bool keep_yaml = true);
 
 /// The first problem with the -options_file files of a command line (args
 /// without the program name; nested files too), "" when they read: a missing

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "vibrotherm/util/write_failure.hpp"
+
 namespace vibrotherm {
 
 /// Installs the handler; call right after PetscInitialize. -debug (read here)
@@ -23,6 +25,19 @@ void PrintOneLineError(const char* program, const std::string& message);
 
 /// The process exit code for the error code a run returned (0 on success).
 int ExitCode(PetscErrorCode ierr);
+
+/// While in scope: the output file being written, which a runtime failure's line names
+/// (a full disk inside PETSc's HDF5 viewer says only "Error in HDF5 call H5Dcreate2()").
+class WritingFile {
+ public:
+  explicit WritingFile(const std::string& path);
+  ~WritingFile();
+  WritingFile(const WritingFile&) = delete;
+  WritingFile& operator=(const WritingFile&) = delete;
+
+ private:
+  std::string previous_;
+};
 
 }  // namespace vibrotherm
 

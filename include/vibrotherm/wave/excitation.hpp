@@ -5,6 +5,11 @@
 // amplitude A(t) = -source_amplitude, stepped by -source_schedule t1,A1,t2,A2,...
 // (from t_i on A_i, reached by a sin² blend over max(ramp, one period)).
 // Between those changes the source is periodic: its steady stretches.
+// -source_sweep F1,F2 instead makes the frequency run linearly from F1 to F2 over
+// the source duration (a chirp, Rahammer et al. 2017): g(t) = A sin(2π c(t)) w(t)
+// with c(t) = F1 t + (F2 − F1) t² / (2 T) the cycles so far; a sweep never repeats
+// (no steady stretch). Its switch-on and -off last -source_ramp_cycles cycles of the
+// lower frequency.
 // A displacement source prescribes the chosen component (tangential or normal
 // to the edge) and leaves the other free; a traction source applies g(t) [Pa]
 // along that direction.
@@ -29,9 +34,22 @@ struct SourceTimeFunction {
   };
   std::vector<Step> schedule;  ///< -source_schedule, by time
   bool running_at_start = false;  ///< no switch-on: the waves start in the source's steady response
+  double sweep_from = 0.0, sweep_to = 0.0;  ///< -source_sweep F1,F2 [Hz] (0: no sweep; frequency = max of both)
+
+  bool sweeping() const { return sweep_from > 0.0; }
+  /// Source cycles completed by time t (the phase over 2π): f t, or the sweep's c(t).
+  double cycles(double t) const;
+  /// The instantaneous frequency dc/dt at t [Hz].
+  double frequency_at(double t) const;
+  /// The time at which `cycles` cycles are complete (the inverse of cycles()).
+  double time_of_cycle(double cycles) const;
 
   /// g, dg/dt, d²g/dt² at time t.
   void evaluate(double t, double* g, double* dg, double* ddg) const;
+  /// The switch-on/off window w(t) and its derivatives (0 outside the source's duration).
+  void window(double t, double* win, double* dwin, double* ddwin) const;
+  /// The amplitude at t with its window and schedule: A(t) w(t) (g's envelope).
+  double envelope(double t) const;
   double ramp_time() const;   ///< length of the switch-on and of the switch-off [s]
   double blend_time() const;  ///< length of a schedule step's blend [s]
   /// The steady stretch (constant amplitude, no ramp) holding t: [*start, *end]; false outside any.
@@ -45,7 +63,7 @@ struct Excitation {
 };
 
 /// -source_type, -source_component, -source_frequency, -source_amplitude,
-/// -source_duration, -source_ramp_cycles.
+/// -source_duration, -source_ramp_cycles, -source_schedule, -source_sweep.
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* excitation);
 
 }  // namespace vibrotherm::wave

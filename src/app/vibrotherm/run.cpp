@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -20,6 +21,7 @@
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/options/petsc/option_audit.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 #include "vibrotherm/util/version.hpp"
 #include "output_directory.hpp"
 #include "restart.hpp"
@@ -50,8 +52,9 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
                                "(the same options; it becomes the output directory)",
                                nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
   PetscCall(PetscOptionsBool("-overwrite",
-                             "Write into an -output_dir that holds an interrupted run's checkpoint, discarding it "
-                             "(without it such a run is refused: continue it with -restart)",
+                             "Write into an -output_dir that holds an earlier run's results or an interrupted run's "
+                             "checkpoint, replacing them (without it such a directory is refused; -restart continues "
+                             "an interrupted run)",
                              nullptr, o->overwrite, &o->overwrite, nullptr));
   PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
                              nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
@@ -116,36 +119,46 @@ PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
 }
 
 /// Before meshing (which may take minutes): no likely typo of a vibrotherm option,
-/// every value there, and an output directory this run may use.
-PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene) {
+/// every value there, and an output directory this run may use. *declared: the options
+/// declared so far (rank 0).
+PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene,
+                                  std::vector<DeclaredOption>* declared, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   PetscCall(DeclareOptions(comm, scene));
-  std::vector<DeclaredOption> declared;
-  OptionAuditDeclared(&declared);
+  OptionAuditDeclared(declared);
   // Likely typos now (PETSc's objects declare their options later); -allow_unknown's warning comes once, after.
-  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, declared, false, true));
-  PetscCall(CheckMissingValues(comm, declared));
-  // Another run there, or an interrupted run's checkpoint, is refused now.
+  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, *declared, false, true));
+  PetscCall(CheckMissingValues(comm, *declared));
+  // A wave no mesh of the requested sizes can carry, refused before meshing with them.
+  if (scene.run.physics != coupling::PhysicsChoice::Heat && !app.modes && !app.mesh_only) {
+    double finest_h;
+    PetscCall(mesh::FinestRequestedElement(comm, &finest_h));
+    PetscCall(coupling::CheckSourceBeforeMeshing(comm, scene, finest_h, summary));
+  }
+  // A file in its place, another run there, an interrupted run's checkpoint, an earlier run's results: refused now.
   PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
   PetscFunctionReturn(0);
 }
 
-/// Builds what the options describe (all input checked, nothing written).
+/// Builds what the options describe (all input checked, nothing written); restarting:
+/// the state will come from the checkpoint.
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree, scene.exchange_length()));
   const double t = MPI_Wtime();
   const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
+  stop_signals::EnterSetup("meshing");
   PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen, lts));
   summary->stages["mesh"] = MPI_Wtime() - t;
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
+  stop_signals::EnterSetup(app.modes ? "the natural modes (-modes)" : "the setup of the solvers");
   if (app.modes && !app.mesh_only) PetscCall(modes_run->Setup(*specimen, scene, summary));
   if (app.modes || app.mesh_only) PetscFunctionReturn(0);
   if (scene.run.physics != coupling::PhysicsChoice::Heat)
     PetscCall(coupling::CheckSourceValidity(comm, scene, summary->mesh.h_max, summary));
-  PetscCall(simulation->Setup(*specimen, scene, summary));
+  PetscCall(simulation->Setup(*specimen, scene, summary, app.restart[0] != '\0'));
   PetscFunctionReturn(0);
 }
 
@@ -157,6 +170,30 @@ std::string RecordedDefault(const std::string& value) {
   const double x = std::strtod(value.c_str(), &end);
   const bool number = end && *end == '\0' && !value.empty();
   return number && x != 0.0 && std::fpclassify(x) == FP_SUBNORMAL ? "unset" : value;
+}
+
+/// Every declared option with its value and source (rank 0 knows the declared options).
+std::vector<io::OptionRecord> OptionRecords(const std::vector<std::string>& command_line,
+                                            const std::vector<DeclaredOption>& declared) {
+  std::vector<io::OptionRecord> records;
+  for (const DeclaredOption& d : declared) {
+    PetscBool given = PETSC_FALSE;
+    PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given);
+    const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
+    records.push_back({d.name, given ? d.value : RecordedDefault(d.value),
+                       typed ? "command line" : given ? "options file" : "default"});
+  }
+  return records;
+}
+
+/// -restart: the checkpoint read and compared with the options known before meshing.
+PetscErrorCode ReadCheckpointEarly(MPI_Comm comm, const AppOptions& app, const std::vector<std::string>& command_line,
+                                   const std::vector<DeclaredOption>& declared, store::Checkpoint* checkpoint) {
+  PetscFunctionBeginUser;
+  std::set<std::string> names;
+  for (const DeclaredOption& d : declared) names.insert(d.name);
+  PetscCall(ReadRestart(comm, app.restart, OptionFingerprint(OptionRecords(command_line, declared)), names, checkpoint));
+  PetscFunctionReturn(0);
 }
 
 /// The run record of summary.json: where and from what, every option with its
@@ -172,13 +209,7 @@ void RecordRun(const std::vector<std::string>& command_line, const std::vector<D
   std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   summary->date = date;
   for (const std::string& word : command_line) summary->command_line += (summary->command_line.empty() ? "" : " ") + word;
-  for (const DeclaredOption& d : declared) {
-    PetscBool given = PETSC_FALSE;
-    PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given);
-    const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
-    summary->option_values.push_back({d.name, given ? d.value : RecordedDefault(d.value),
-                                      typed ? "command line" : given ? "options file" : "default"});
-  }
+  summary->option_values = OptionRecords(command_line, declared);
   summary->derived["final_time"] = scene.final_time;
   summary->derived_rules["final_time"] = scene.run.final_time > 0 ? "-final_time" : "the source duration";
   summary->derived["couple_dt"] = scene.couple_dt;
@@ -213,8 +244,14 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
     PetscCall(OptionAuditEnd(&declared));
     PetscFunctionReturn(io::RunLogClose());
   }
-  PetscCall(CheckBeforeMeshing(comm, app, scene));
   io::RunSummary summary;
+  PetscCall(CheckBeforeMeshing(comm, app, scene, &declared, &summary));
+  // The directory is this run's from now on: a second run started at the same time is refused before it meshes.
+  const std::string dir = app.output_dir;
+  OutputDirectory output;
+  PetscCall(output.Claim(comm, dir));
+  store::Checkpoint checkpoint(comm);
+  if (app.restart[0]) PetscCall(ReadCheckpointEarly(comm, app, command_line, declared, &checkpoint));
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
@@ -226,17 +263,14 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
-  const std::string dir = app.output_dir;
-  store::Checkpoint checkpoint(comm);
   coupling::RunControl control;
-  control.fingerprint = OptionFingerprint(summary);
+  control.fingerprint = OptionFingerprint(summary.option_values);
   if (app.restart[0]) {
-    PetscCall(ReadRestart(comm, dir, control.fingerprint, &checkpoint));
+    PetscCall(CheckRestartOptions(comm, dir, control.fingerprint, checkpoint));
     control.restart = &checkpoint;
     summary.restarted_from = dir + "/checkpoint.h5";
   }
-  io::OutputLock lock;  // the directory is this run's until Run returns
-  PetscCall(MakeOutputDirectory(comm, dir, control.restart != nullptr, &lock));
+  PetscCall(output.Prepare(comm, control.restart != nullptr));
   PetscCall(io::RunLogOpen(comm, dir + "/vibrotherm.log"));
   PetscLogStage output_stage;
   PetscCall(PetscLogStageRegister("Output", &output_stage));

@@ -20,6 +20,8 @@ const std::map<std::string, FaceAxes>& Faces() {
 
 }  // namespace
 
+bool IsCameraFace(const std::string& name) { return Faces().count(name) > 0; }
+
 PetscErrorCode CameraFace::Setup(DM dm, const std::string& face) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "vibrotherm/coupling/exchange/camera_face.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
 
 namespace vibrotherm::coupling {
@@ -14,12 +15,17 @@ PetscErrorCode CheckCameraOptions(MPI_Comm comm, const CameraOptions& o) {
                                                     {"-camera_pixel", o.pixel},
                                                     {"-camera_netd", o.netd},
                                                     {"-camera_integration", o.integration},
-                                                    {"-camera_detect_snr", o.detect_snr}};
+                                                    {"-camera_detect_snr", o.detect_snr},
+                                                    {"-camera_detect_contrast", o.detect_contrast}};
   for (const auto& [option, value] : finite)
     PetscCheck(std::isfinite(value), comm, PETSC_ERR_USER_INPUT, "%s must be finite, got %g", option, value);
   PetscCheck(o.fps >= 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_fps must be >= 0 (0: no camera), got %g", o.fps);
   PetscCheck(o.pixel > 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_pixel must be > 0, got %g", o.pixel);
-  PetscCheck(o.netd >= 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_netd must be >= 0, got %g", o.netd);
+  PetscCheck(o.netd > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-camera_netd must be > 0 (every camera has noise: detectability is the peak rise over it; the noise-free "
+             "frames are in camera.h5 as clean_k), got %g", o.netd);
+  PetscCheck(o.face.empty() || IsCameraFace(o.face), comm, PETSC_ERR_USER_INPUT,
+             "-camera_face %s: unknown face (front, back, top, bottom, left, right)", o.face.c_str());
   PetscCheck(o.integration > 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_integration must be > 0, got %g",
              o.integration);
   PetscCheck(o.fps == 0.0 || o.integration <= (1.0 / o.fps) * (1 + 1e-12), comm, PETSC_ERR_USER_INPUT,
@@ -28,6 +34,8 @@ PetscErrorCode CheckCameraOptions(MPI_Comm comm, const CameraOptions& o) {
   PetscCheck(o.samples >= 1 && o.samples <= 64, comm, PETSC_ERR_USER_INPUT,
              "-camera_pixel_samples must be in [1, 64], got %" PetscInt_FMT, o.samples);
   PetscCheck(o.detect_snr > 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_detect_snr must be > 0, got %g", o.detect_snr);
+  PetscCheck(o.detect_contrast >= 0.0, comm, PETSC_ERR_USER_INPUT, "-camera_detect_contrast must be >= 0, got %g",
+             o.detect_contrast);
   if (!o.window.empty()) {
     const std::vector<double>& w = o.window;
     PetscCheck(w.size() == 4, comm, PETSC_ERR_USER_INPUT, "-camera_window needs 4 values x0,y0,x1,y1, got %zu",
@@ -43,7 +51,7 @@ PetscErrorCode CheckCameraOptions(MPI_Comm comm, const CameraOptions& o) {
 PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o) {
   PetscFunctionBeginUser;
   PetscBool on = o->on ? PETSC_TRUE : PETSC_FALSE, on_set = PETSC_FALSE;
-  PetscBool given[9] = {};
+  PetscBool given[10] = {};
   char face[64] = "";
   PetscOptionsBegin(comm, nullptr, "IR camera (README \"IR camera\")", nullptr);
   PetscCall(PetscOptionsBool("-camera", "Film the specimen's face with an IR camera: camera.h5/xmf (any -camera_* "
@@ -61,8 +69,11 @@ PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o) {
   PetscCall(PetscOptionsInt("-camera_pixel_samples", "Camera: n x n points per pixel for its area average", nullptr,
                             o->samples, &o->samples, &given[5]));
   PetscCall(PetscOptionsInt("-camera_seed", "Camera: seed of the NETD noise", nullptr, o->seed, &o->seed, &given[6]));
-  PetscCall(PetscOptionsReal("-camera_detect_snr", "Camera: peak SNR (peak rise / NETD) from which the heating "
-                             "counts as detectable", nullptr, o->detect_snr, &o->detect_snr, &given[7]));
+  PetscCall(PetscOptionsReal("-camera_detect_snr", "Camera: the defect's peak SNR (its own rise / NETD) from which "
+                             "it counts as detectable", nullptr, o->detect_snr, &o->detect_snr, &given[7]));
+  PetscCall(PetscOptionsReal("-camera_detect_contrast", "Camera: the defect's peak rise over the background "
+                             "heating's peak (damping, thermoelastic) from which the defect stands out (0: any)",
+                             nullptr, o->detect_contrast, &o->detect_contrast, &given[9]));
   PetscCall(PetscOptionsString("-camera_face", "Camera (3D specimens): the face it films, front|back|top|bottom|left|"
                                "right (front: z = max)", nullptr, face, face, sizeof(face), &given[8]));
   PetscOptionsEnd();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -15,6 +16,12 @@
 namespace vibrotherm::coupling {
 namespace {
 constexpr double kMaxSamplePoints = 2e7;  ///< sub-sample points located at setup, at most
+
+std::string Format(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
 }
 
 HeatCamera::~HeatCamera() {
@@ -23,6 +30,7 @@ HeatCamera::~HeatCamera() {
   (void)VecDestroy(&previous_);
   (void)VecDestroy(&integral_);
   (void)VecDestroy(&on_root_);
+  for (Vec* v : {&defect_current_, &defect_previous_, &defect_integral_}) (void)VecDestroy(v);
   (void)VecScatterDestroy(&to_root_);
 }
 
@@ -51,6 +59,10 @@ PetscErrorCode HeatCamera::Setup(const fe::LagrangeSpace& space, const CameraOpt
     PetscCall(VecDuplicate(current_, &previous_));
     PetscCall(VecDuplicate(current_, &integral_));
     PetscCall(VecZeroEntries(integral_));
+    for (Vec* v : {&defect_current_, &defect_previous_, &defect_integral_}) {
+      PetscCall(VecDuplicate(current_, v));
+      PetscCall(VecZeroEntries(*v));
+    }
     PetscCall(VecScatterCreateToZero(current_, &to_root_, &on_root_));
     random_.seed(static_cast<std::uint64_t>(options_.seed));
   }
@@ -194,8 +206,11 @@ PetscErrorCode HeatCamera::Sample(const heat::HeatSolver& heat) {
   PetscCall(PetscLogEventBegin(event_, 0, 0, 0, 0));
   const double t = heat.time();
   PetscCall(MatMult(S_, heat.rise(), current_));
+  const bool partial = share_ == DefectShare::Partial && heat.partial_rise();
+  if (partial) PetscCall(MatMult(S_, heat.partial_rise(), defect_current_));
   if (t_prev_ >= 0.0 && t > t_prev_) PetscCall(Integrate(t_prev_, t));
   PetscCall(VecCopy(current_, previous_));
+  if (partial) PetscCall(VecCopy(defect_current_, defect_previous_));
   t_prev_ = t;
   PetscCall(PetscLogEventEnd(event_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -213,6 +228,8 @@ PetscErrorCode HeatCamera::Integrate(double tp, double t) {
       const double w_prev = ((t - lo) * (t - lo) - (t - hi) * (t - hi)) / (2 * h);
       const double w_now = ((hi - tp) * (hi - tp) - (lo - tp) * (lo - tp)) / (2 * h);
       PetscCall(VecAXPBYPCZ(integral_, w_prev, w_now, 1.0, previous_, current_));
+      if (share_ == DefectShare::Partial)
+        PetscCall(VecAXPBYPCZ(defect_integral_, w_prev, w_now, 1.0, defect_previous_, defect_current_));
     }
     if (t < b - 1e-9 * options_.integration) break;  // the window goes on
     PetscCall(EmitFrame());
@@ -221,32 +238,49 @@ PetscErrorCode HeatCamera::Integrate(double tp, double t) {
   PetscFunctionReturn(0);
 }
 
-/// The window's mean to rank 0, NETD noise added there, both written.
-PetscErrorCode HeatCamera::EmitFrame() {
+PetscErrorCode HeatCamera::GatherMean(Vec integral, std::vector<double>* mean) {
   PetscFunctionBeginUser;
-  PetscCall(VecScale(integral_, 1.0 / options_.integration));
-  PetscCall(VecScatterBegin(to_root_, integral_, on_root_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(to_root_, integral_, on_root_, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecZeroEntries(integral_));
+  PetscCall(VecScale(integral, 1.0 / options_.integration));
+  PetscCall(VecScatterBegin(to_root_, integral, on_root_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(to_root_, integral, on_root_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecZeroEntries(integral));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
-  std::vector<double> clean, noisy;
+  mean->clear();
   if (rank == 0) {
     const PetscScalar* a;
     PetscInt n;
     PetscCall(VecGetLocalSize(on_root_, &n));
     PetscCall(VecGetArrayRead(on_root_, &a));
-    clean.assign(a, a + n);
+    mean->assign(a, a + n);
     PetscCall(VecRestoreArrayRead(on_root_, &a));
+  }
+  PetscFunctionReturn(0);
+}
+
+/// The window's mean to rank 0, NETD noise added there, both written; the defect's share beside it.
+PetscErrorCode HeatCamera::EmitFrame() {
+  PetscFunctionBeginUser;
+  std::vector<double> clean, noisy, defect;
+  PetscCall(GatherMean(integral_, &clean));
+  if (share_ == DefectShare::Partial) PetscCall(GatherMean(defect_integral_, &defect));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  const double a = start(frame_);
+  if (rank == 0) {
     std::normal_distribution<double> noise(0.0, options_.netd);
     noisy = clean;
     if (options_.netd > 0.0)
       for (double& v : noisy) v += noise(random_);
     peak_clean_.push_back(*std::max_element(clean.begin(), clean.end()));
     peak_noisy_.push_back(*std::max_element(noisy.begin(), noisy.end()));
+    if (share_ == DefectShare::None) defect.assign(clean.size(), 0.0);
+    verdicts_.push_back(Judge(a + options_.integration, clean, share_ == DefectShare::Whole ? nullptr : &defect));
   }
-  const double a = start(frame_);
-  PetscCall(RunOnRoot(comm_, [&] { file_.Write(static_cast<int>(frame_), a, a + options_.integration, clean, noisy); }));
+  PetscCall(RunOnRoot(comm_, [&] {
+    file_.Write(static_cast<int>(frame_), a, a + options_.integration, clean, noisy);
+    if (share_ != DefectShare::Whole) file_.WriteDefect(static_cast<int>(frame_), a, a + options_.integration, defect);
+  }));
   PetscFunctionReturn(0);
 }
 
@@ -272,21 +306,76 @@ PetscErrorCode HeatCamera::Finish(io::RunSummary* summary) {
   c.cols = static_cast<long long>(grid_.cols);
   c.netd = options_.netd;
   c.detect_snr = options_.detect_snr;
-  double best[2] = {-std::numeric_limits<double>::infinity(), 0.0};  // peak clean rise, its frame
-  for (std::size_t k = 0; k < peak_clean_.size(); ++k)
-    if (peak_clean_[k] > best[0]) best[0] = peak_clean_[k], best[1] = static_cast<double>(k);
-  PetscCallMPI(MPI_Bcast(best, 2, MPI_DOUBLE, 0, comm_));
-  c.peak_rise = frames_ > 0 ? best[0] : std::numeric_limits<double>::quiet_NaN();
-  c.peak_frame = static_cast<long long>(best[1]);
-  c.peak_time = start(c.peak_frame) + 0.5 * options_.integration;
-  c.peak_snr = options_.netd > 0.0 ? best[0] / options_.netd : std::numeric_limits<double>::infinity();
-  c.detectable = c.peak_snr >= options_.detect_snr;
-  double first = -1.0;  // the first frame the camera would see the crack in
-  for (std::size_t k = 0; k < peak_clean_.size() && first < 0.0; ++k)
-    if (options_.netd > 0.0 && peak_clean_[k] / options_.netd >= options_.detect_snr)
-      first = start(static_cast<PetscInt>(k)) + options_.integration;
-  PetscCallMPI(MPI_Bcast(&first, 1, MPI_DOUBLE, 0, comm_));
-  c.detection_time = first;
+  c.detect_contrast = options_.detect_contrast;
+  c.defect_share = share_ == DefectShare::Whole ? "whole" : share_ == DefectShare::None ? "none" : "partial";
+  PetscCall(SummariseVerdict(&c));
+  PetscCall(SayVerdict(c));
+  PetscFunctionReturn(0);
+}
+
+std::array<double, 2> HeatCamera::PixelCentre(double pixel) const {
+  const std::size_t p = static_cast<std::size_t>(pixel), row = p / grid_.cols, col = p % grid_.cols;
+  return {grid_.x0 + (col + 0.5) * grid_.pixel, grid_.y0 + (row + 0.5) * grid_.pixel};
+}
+
+/// The verdict about the defect (camera_verdict.hpp) from rank 0's frames, on every rank.
+PetscErrorCode HeatCamera::SummariseVerdict(io::CameraSummary* c) const {
+  PetscFunctionBeginUser;
+  const CameraCriteria criteria{options_.netd, options_.detect_snr, options_.detect_contrast};
+  const DefectVerdict v = Summarise(verdicts_, criteria);
+  const FrameVerdict none;
+  const FrameVerdict& hot = verdicts_.empty() ? none : verdicts_[v.total_frame];
+  const FrameVerdict& seen = verdicts_.empty() ? none : verdicts_[v.peak_frame];
+  const auto at = PixelCentre(hot.total_pixel), defect_at = PixelCentre(seen.defect_pixel);
+  const double mid = 0.5 * options_.integration;
+  double values[17] = {hot.total_peak, static_cast<double>(v.total_frame), hot.t_end - mid, at[0], at[1],
+                       v.peak_on_defect ? 1.0 : 0.0, seen.defect_peak, seen.t_end - mid, defect_at[0], defect_at[1],
+                       seen.background_peak, v.peak_snr, v.contrast, v.detectable ? 1.0 : 0.0, v.detection_time,
+                       static_cast<double>(v.peak_frame), hot.defect_at_total_peak};
+  PetscCallMPI(MPI_Bcast(values, 17, MPI_DOUBLE, 0, comm_));
+  c->peak_rise = frames_ > 0 ? values[0] : std::numeric_limits<double>::quiet_NaN();
+  c->peak_frame = static_cast<long long>(values[1]);
+  c->peak_time = values[2];
+  c->peak_at = {values[3], values[4]};
+  c->peak_on_defect = values[5] != 0.0;
+  c->defect_peak_rise = values[6];
+  const bool signal = values[6] > 0.0, nan = std::numeric_limits<double>::quiet_NaN();  // no signal: nowhere
+  c->defect_peak_time = signal ? values[7] : nan;
+  c->defect_peak_at = {signal ? values[8] : nan, signal ? values[9] : nan};
+  c->background_peak_rise = values[10];
+  c->peak_snr = values[11];
+  c->contrast = values[12];
+  c->detectable = values[13] != 0.0;
+  c->detection_time = values[14];
+  c->defect_peak_frame = static_cast<long long>(values[15]);
+  c->total_peak_snr = options_.netd > 0.0 ? values[0] / options_.netd : std::numeric_limits<double>::infinity();
+  PetscFunctionReturn(0);
+}
+
+/// The verdict in words (the console's last lines of a run with a camera).
+PetscErrorCode HeatCamera::SayVerdict(const io::CameraSummary& c) const {
+  PetscFunctionBeginUser;
+  const std::string contrast = std::isfinite(c.contrast)
+                                   ? Format("%.3g", c.contrast) + "x the background's hottest pixel (needed " +
+                                         Format("%g", c.detect_contrast) + ")"
+                                   : "no background heat";
+  std::string line;
+  if (c.detectable)
+    line = "the defect is detectable from t = " + Format("%.4g", c.detection_time) + " s (its own rise " +
+           Format("%.3g", c.defect_peak_rise) + " K: SNR " + Format("%.3g", c.peak_snr) + ", needed " +
+           Format("%g", c.detect_snr) + "; " + contrast + ")";
+  else if (c.defect_share == "none")
+    line = "the defect is not detectable: nothing heats at the crack (its faces neither rub nor slip: see -crack_law, "
+           "-crack_a0 and the drive)";
+  else
+    line = "the defect is not detectable: its own rise " + Format("%.3g", c.defect_peak_rise) + " K is SNR " +
+           Format("%.3g", c.peak_snr) + " (needed " + Format("%g", c.detect_snr) + "); " + contrast;
+  PetscCall(PetscPrintf(comm_, "Camera: %s\n", line.c_str()));
+  if (!c.peak_on_defect && c.peak_rise > 0.0)
+    PetscCall(PetscPrintf(comm_, "Camera: its hottest pixel (%s K at %s, %s m, t = %s s) is background heat (material "
+                                 "damping, thermoelastic or film heat), not the defect\n",
+                          Format("%.3g", c.peak_rise).c_str(), Format("%.4g", c.peak_at[0]).c_str(),
+                          Format("%.4g", c.peak_at[1]).c_str(), Format("%.4g", c.peak_time).c_str()));
   PetscFunctionReturn(0);
 }
 

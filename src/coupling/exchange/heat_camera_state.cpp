@@ -1,7 +1,8 @@
 // The IR camera in checkpoints: where it is in its frames, the open window's
 // running integral and the last sample (per pixel, keyed by the pixel index),
 // the noise generator and the peaks so far (rank 0), and camera.h5 reopened
-// where the checkpoint left it.
+// where the checkpoint left it; the defect's share of the open window and the
+// frames' verdicts (camera_verdict.hpp) too.
 #include <sstream>
 
 #include "vibrotherm/coupling/exchange/heat_camera.hpp"
@@ -26,6 +27,15 @@ PetscErrorCode HeatCamera::Save(store::Checkpoint& checkpoint) const {
   const std::vector<long long> keys = OwnedPixels(previous_);
   PetscCall(store::PutOwnedValues(checkpoint, "camera/previous", keys, previous_));
   PetscCall(store::PutOwnedValues(checkpoint, "camera/integral", keys, integral_));
+  if (share_ == DefectShare::Partial) {
+    PetscCall(store::PutOwnedValues(checkpoint, "camera/defect_previous", keys, defect_previous_));
+    PetscCall(store::PutOwnedValues(checkpoint, "camera/defect_integral", keys, defect_integral_));
+  }
+  std::vector<double> verdicts;
+  for (const FrameVerdict& f : verdicts_)
+    verdicts.insert(verdicts.end(), {f.t_end, f.total_peak, f.total_pixel, f.defect_peak, f.defect_pixel,
+                                     f.background_peak, f.defect_at_total_peak});
+  checkpoint.PutShared("camera/verdicts", verdicts);
   // Rank 0 holds these: the checkpoint keeps rank 0's copy of shared items.
   std::ostringstream noise;
   noise << random_;
@@ -45,6 +55,17 @@ PetscErrorCode HeatCamera::Restore(const store::Checkpoint& checkpoint, const st
   const std::vector<long long> keys = OwnedPixels(previous_);
   PetscCall(store::GetOwnedValues(checkpoint, "camera/previous", keys, previous_));
   PetscCall(store::GetOwnedValues(checkpoint, "camera/integral", keys, integral_));
+  if (share_ == DefectShare::Partial && checkpoint.Has("camera/defect_integral")) {
+    PetscCall(store::GetOwnedValues(checkpoint, "camera/defect_previous", keys, defect_previous_));
+    PetscCall(store::GetOwnedValues(checkpoint, "camera/defect_integral", keys, defect_integral_));
+  }
+  std::vector<double> v;
+  verdicts_.clear();
+  if (checkpoint.Has("camera/verdicts")) {
+    PetscCall(checkpoint.GetShared("camera/verdicts", &v));
+    for (std::size_t i = 0; i + FrameVerdict::kValues <= v.size(); i += FrameVerdict::kValues)
+      verdicts_.push_back({v[i], v[i + 1], v[i + 2], v[i + 3], v[i + 4], v[i + 5], v[i + 6]});
+  }
   std::string noise;
   PetscCall(checkpoint.GetText("camera/noise", &noise));
   std::istringstream(noise) >> random_;

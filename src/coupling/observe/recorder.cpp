@@ -51,6 +51,13 @@ PetscErrorCode Recorder::Open(const RecordingOptions& options, const std::string
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Recorder::MeterSource(const wave::SourceTimeFunction& signal, PetscInt window,
+                                     const store::Checkpoint* resume) {
+  PetscFunctionBeginUser;
+  PetscCall(source_power_.Open(comm_, signal, window, dir_ + "/source_power.csv", resume));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Recorder::RecordCrack(const wave::WaveSolver& w) {
   PetscFunctionBeginUser;
   if (!crack_) PetscFunctionReturn(0);
@@ -253,6 +260,7 @@ PetscErrorCode Recorder::Finish(io::RunSummary* summary) {
   PetscCall(probes_.Finish());
   PetscCall(energy_.Finish());
   PetscCall(crack_state_.Finish());
+  PetscCall(source_power_.Finish(summary));
   PetscCall(fields_.Finish());
   summary->max_budget_error = energy_.max_budget_error();
   if (heat_views_) field_peak_.Summarise(summary);

@@ -44,6 +44,7 @@ PetscErrorCode Recorder::Save(store::Checkpoint& checkpoint) const {
   const io::FieldPeakSummary& p = field_peak_.peak();
   checkpoint.PutShared("recorder/field_peak", {p.known ? 1.0 : 0.0, p.rise, p.t, p.x, p.y, p.z});
   if (camera_) PetscCall(camera_->Save(checkpoint));
+  PetscCall(source_power_.Save(checkpoint));
   PetscFunctionReturn(0);
 }
 
@@ -81,6 +82,7 @@ void Recorder::Keep() {
   probes_.Keep();
   energy_.Keep();
   crack_state_.Keep();
+  source_power_.Keep();
 }
 
 }  // namespace vibrotherm::coupling

@@ -11,7 +11,10 @@
 namespace vibrotherm::coupling {
 
 HeatComponent::HeatComponent() = default;
-HeatComponent::~HeatComponent() { (void)VecDestroy(&load_); }
+HeatComponent::~HeatComponent() {
+  (void)VecDestroy(&load_);
+  (void)VecDestroy(&defect_load_);
+}
 
 PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
                                     io::RunSummary* summary) {
@@ -54,6 +57,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
     sources_.push_back(std::move(damping));
   }
   PetscCall(DMCreateGlobalVector(specimen.heat, &load_));
+  PetscCall(SetupDefectShare(scene));
   for (double s : scene.run.crack_probes) {
     const auto p = specimen.heat_cracks.line(scene.run.crack_probe_crack - 1).At(s);
     crack_probe_xy_.insert(crack_probe_xy_.end(), {p[0], p[1]});
@@ -89,16 +93,44 @@ PetscErrorCode HeatComponent::SetupThermoelastic(const Scene& scene, WaveCompone
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode HeatComponent::SetupDefectShare(const Scene& scene) {
+  PetscFunctionBeginUser;
+  const bool background = solver_.film_source() || std::any_of(sources_.begin(), sources_.end(), [this](const auto& s) {
+                            return s.get() != friction_;
+                          });
+  const bool crack_heats = friction_ != nullptr || scene.run.physics == PhysicsChoice::Heat;
+  defect_share_ = !crack_heats ? DefectShare::None : background ? DefectShare::Partial : DefectShare::Whole;
+  if (defect_share_ != DefectShare::Partial) PetscFunctionReturn(0);
+  PetscCall(solver_.EnablePartialRise());
+  PetscCall(VecDuplicate(load_, &defect_load_));
+  PetscCall(VecSet(defect_load_, 0.0));
+  if (!friction_) PetscCall(solver_.SetPartialLoad(solver_.load()));  // -physics heat: the crack's given power
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatComponent::LoadSources(double t, bool averaged) {
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(load_, 0.0));
+  if (defect_load_) PetscCall(VecSet(defect_load_, 0.0));
+  // Summed in the sources' order, the defect's share added where the friction's load falls.
+  for (auto& source : sources_) {
+    const bool defect = source.get() == friction_ && defect_load_;
+    Vec into = defect ? defect_load_ : load_;
+    if (averaged) PetscCall(source->AddAverageLoad(into));
+    else PetscCall(source->AddLoad(t, t - solver_.time(), into));
+    if (defect) PetscCall(VecAXPY(load_, 1.0, defect_load_));
+  }
+  if (defect_load_ && friction_) PetscCall(solver_.SetPartialLoad(defect_load_));
+  PetscCall(solver_.SetSourceLoad(load_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode HeatComponent::StepTo(double t, bool sample_probes) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   if (!sources_.empty()) {
-    PetscCall(VecSet(load_, 0.0));
-    for (auto& source : sources_) {
-      PetscCall(source->AddLoad(t, t - solver_.time(), load_));
-      deposited_by_source_[source->name()] = source->deposited();
-    }
-    PetscCall(solver_.SetSourceLoad(load_));
+    PetscCall(LoadSources(t, false));
+    for (auto& source : sources_) deposited_by_source_[source->name()] = source->deposited();
   }
   PetscCall(solver_.AdvanceInSteps(t, 1));
   if (sample_probes) PetscCall(SampleProbes());
@@ -125,6 +157,7 @@ PetscErrorCode HeatComponent::StopSources(const std::string& dir) {
   friction_ = nullptr;
   PetscCall(VecSet(load_, 0.0));  // nothing heats any more
   PetscCall(solver_.SetSourceLoad(load_));
+  if (defect_load_) PetscCall(solver_.SetPartialLoad(load_));
   PetscFunctionReturn(0);
 }
 
@@ -204,9 +237,7 @@ PetscErrorCode HeatComponent::Replay(ReplayMode mode) {
 PetscErrorCode HeatComponent::StepAveraged(double t) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
-  PetscCall(VecSet(load_, 0.0));
-  for (auto& source : sources_) PetscCall(source->AddAverageLoad(load_));
-  PetscCall(solver_.SetSourceLoad(load_));
+  PetscCall(LoadSources(t, true));
   PetscCall(solver_.AdvanceInSteps(t, 1));
   seconds_ += MPI_Wtime() - t0;
   PetscFunctionReturn(0);

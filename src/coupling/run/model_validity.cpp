@@ -1,5 +1,6 @@
 #include "vibrotherm/coupling/run/model_validity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -77,10 +78,50 @@ PetscErrorCode CheckStrain(MPI_Comm comm, const Scene& scene, io::RunSummary* su
 
 }  // namespace
 
+PetscErrorCode ResponseStrain::Check(const wave::WaveSolver& waves, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  Vec u, v;
+  PetscReal speed;
+  PetscCall(waves.GetFields(&u, &v));
+  PetscCall(VecNorm(v, NORM_INFINITY, &speed));
+  PetscCall(waves.RestoreFields(&u, &v));
+  const double strain = speed / shear_speed_;
+  peak_ = std::max(peak_, strain);
+  const double limits[2] = {kYieldStrain, kSmallStrain};
+  while (warned_ < 2 && strain > limits[warned_]) {
+    const char* meaning = warned_ == 0 ? "metals yield near 0.001, beyond which this linear elastic model overstates "
+                                         "the waves and the heat"
+                                       : "beyond small-strain elasticity (~0.01): the waves and heat here mean nothing; "
+                                         "lower -source_amplitude";
+    PetscCall(WarnValidity(PetscObjectComm((PetscObject)waves.space().dm()),
+                           Format("the response strains the specimen by about %.3g at t = %.4g s (peak velocity %.3g "
+                                  "m/s over the shear speed %.4g m/s)",
+                                  strain, waves.time(), speed, shear_speed_)
+                               + ": " + meaning,
+                           summary));
+    ++warned_;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckSourceBeforeMeshing(MPI_Comm comm, const Scene& scene, double finest_h, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  // First: at 1 GHz the mesh is the real problem. Even the finest elements asked for cannot carry
+  // the waves: no mesh of these sizes can (the coarsest elements are checked once meshed).
+  const double f = scene.excitation.signal.frequency, degree = static_cast<double>(scene.wave.degree);
+  const double wavelength = scene.material.cs() / f;
+  PetscCheck(!(finest_h > 0.0) || wavelength / (finest_h / degree) >= kUnresolved, comm, PETSC_ERR_USER_INPUT, "%s",
+             Format("-source_frequency %g Hz: the shear wavelength %.3g m is shorter than two node spacings of the "
+                    "finest elements asked for (%.3g m, degree %g): no mesh of these sizes can carry these waves; "
+                    "lower -source_frequency or refine -mesh_h and -mesh_h_crack",
+                    f, wavelength, finest_h, degree).c_str());
+  PetscCall(CheckStrain(comm, scene, summary));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CheckSourceValidity(MPI_Comm comm, const Scene& scene, double h_max, io::RunSummary* summary) {
   PetscFunctionBeginUser;
-  PetscCall(CheckResolution(comm, scene, h_max, summary));  // first: at 1 GHz the mesh is the real problem
-  PetscCall(CheckStrain(comm, scene, summary));
+  PetscCall(CheckResolution(comm, scene, h_max, summary));
   PetscFunctionReturn(0);
 }
 

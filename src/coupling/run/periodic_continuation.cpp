@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "vibrotherm/coupling/run/recording.hpp"
 
@@ -56,10 +57,13 @@ PetscErrorCode PeriodicContinuation::AfterInterval(Recorder& recorder, const io:
     if (phase_ == Phase::kRecord && heat_) PetscCall(heat_->StopRecording());
     phase_ = Phase::kWatch;
     detector_.Reset();
+    outlook_.Reset();
+    recorder.progress().SetOutlook(-1.0, 0, "");
     PetscFunctionReturn(0);
   }
   PetscInt multiple;
   PetscCall(detector_.Sample(*waves_, row, &multiple));
+  PetscCall(Outlook(recorder, t, end));
   if (phase_ == Phase::kWatch && multiple > 0) PetscCall(StartRecording(t, multiple, row));
   else if (phase_ == Phase::kRecord && t >= record_end_ - 0.5 * heat_dt_) {
     if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(recorder, t, row, continued));
@@ -69,6 +73,59 @@ PetscErrorCode PeriodicContinuation::AfterInterval(Recorder& recorder, const io:
     }
   }
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::Outlook(Recorder& recorder, double t, double stretch_end) {
+  PetscFunctionBeginUser;
+  outlook_.Add(t / period_, detector_.last_change());
+  const double change = outlook_.change(), tol = scene_->periodic.tol;
+  if (!std::isfinite(change)) PetscFunctionReturn(0);  // the detector cannot compare whole windows yet
+  const double to_go = outlook_.PeriodsToTolerance(tol), left = (stretch_end - t) / period_;
+  char note[256];
+  if (!outlook_.predictable()) {  // too few changes for a trend yet
+    std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g)", change, tol);
+    recorder.progress().SetOutlook(-1.0, 0, note);
+    PetscFunctionReturn(0);
+  }
+  if (to_go < left) {
+    const wave::WaveSolver& solver = waves_->solver();
+    const double watch = to_go + scene_->periodic.window + 1.0;  // then a window recorded, and compared once more
+    const double resolved = watch * period_ / solver.dt() + TailSteps(stretch_end, outlook_.watched() + watch);
+    std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g), ~%.0f periods to go", change,
+                  tol, to_go);
+    recorder.progress().SetOutlook(resolved, solver.steps(), note);
+    PetscFunctionReturn(0);
+  }
+  std::snprintf(note, sizeof(note), "not periodic yet: change %.2g per period (tolerance %.2g)%s", change, tol,
+                std::isfinite(to_go) ? ", shrinking too slowly for this stretch" : ", not shrinking");
+  recorder.progress().SetOutlook(-1.0, 0, note);
+  constexpr double kAdviseAfter = 100.0;  // periods watched before saying so
+  if (outlook_.watched() < kAdviseAfter || advised_ == stretch_end) PetscFunctionReturn(0);
+  advised_ = stretch_end;
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)waves_->solver().space().dm()),
+                        "vibrotherm: note: not periodic after %.0f periods (t = %.6g s): the change per period is %.2g, "
+                        "-periodic_tol %.2g, and %s; the waves are resolved to t = %.6g s unless it becomes periodic. "
+                        "What may help: a looser -periodic_tol (1e-3 is about 1 %% in the thermosonic scene, "
+                        "docs/MEASUREMENTS.md), -wave_start harmonic when damping builds the response up slowly, "
+                        "-periodic_max_multiple when it repeats over more periods; periodic.csv has every period's "
+                        "change\n",
+                        outlook_.watched(), t, change, tol,
+                        std::isfinite(to_go) ? "at its rate it would take longer than the stretch" : "it does not shrink",
+                        stretch_end));
+  PetscFunctionReturn(0);
+}
+
+double PeriodicContinuation::TailSteps(double stretch_end, double watched) const {
+  const wave::SourceTimeFunction& signal = scene_->excitation.signal;
+  const double dt = waves_->solver().dt();
+  double steps = std::max(0.0, scene_->waves_expected_end() - stretch_end) / dt;
+  for (const wave::SourceTimeFunction::Step& step : signal.schedule) {  // later stretches: watched as long, continued
+    double start, end;
+    if (step.t < stretch_end || !signal.steady_stretch(step.t + signal.blend_time() * (1 + 1e-9), &start, &end)) continue;
+    const double continued = std::min(end, scene_->final_time) - start - watched * period_;
+    if (continued > scene_->periodic.min_continued * period_) steps -= continued / dt;
+  }
+  return std::max(0.0, steps);
 }
 
 PetscErrorCode PeriodicContinuation::StartRecording(double t, PetscInt multiple, const io::EnergyRow& row) {
@@ -97,6 +154,7 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
   if (n * multiple_ < scene_->periodic.min_continued) {  // not worth it: simulate the rest of this stretch
     skip_stretch_ = end;
     detector_.Reset();
+    outlook_.Reset();
     PetscFunctionReturn(0);
   }
   double drift, projected;
@@ -160,6 +218,7 @@ PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, Pet
                         t2, detector_.last_change(), multiple_, P, ladder_.end, n));
   kept_ = std::make_unique<store::Checkpoint>(comm);
   PetscCall(waves_->Snapshot(*specimen_, kept_.get()));
+  recorder.progress().Start(comm, "periodic", t2, ladder_.end, 0.0, true);  // heat steps from here, not wave steps
   if (heat_) {
     const PetscInt fine = std::min<PetscInt>(scene_->periodic.fine_periods, n);
     PetscCall(PhaseResolved(recorder, t2, fine, fine < n));
@@ -193,6 +252,7 @@ PetscErrorCode PeriodicContinuation::FinishInterrupted(Recorder& recorder, bool*
   if (heat_) heat_->RestartNearField();
   phase_ = Phase::kWatch;
   detector_.Reset();
+  outlook_.Reset();
   *continued = true;
   PetscFunctionReturn(0);
 }
@@ -296,7 +356,9 @@ PetscErrorCode PeriodicContinuation::Observe(Recorder& recorder, double t, bool 
   PetscCall(recorder.OnHeatStep(heat));
   if (interval) {
     PetscCall(RecordTemperature(recorder, *heat_, false));
-    PetscCall(RecordEnergy(recorder, WaveRow(t), heat_));
+    const io::EnergyRow row = WaveRow(t);
+    recorder.OnInterval(row);
+    PetscCall(RecordEnergy(recorder, row, heat_));
     PetscCall(recorder.progress().Update(t, heat.steps()));
   }
   if (recorder.OutputDue(t)) PetscCall(WriteFields(recorder, t, nullptr, heat_));

@@ -153,12 +153,16 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
   if (interface::CrackInterface* crack = waves.crack())
     for (const interface::ContactCell& c : crack->cells()) weights.push_back(c.weight);
   last_change_ = INFINITY;
-  for (std::size_t m = 1; m <= static_cast<std::size_t>(options_.max_multiple) && m < samples_.size(); ++m) {
+  // A statistically steady state (mean) has no period: windows of single periods, their means only.
+  const std::size_t longest = options_.mean ? 1 : static_cast<std::size_t>(options_.max_multiple);
+  for (std::size_t m = 1; m <= longest && m < samples_.size(); ++m) {
     double parts[4];
     PetscCall(Change(m, weights, parts));
     // The contact's cell by cell quantities against their own tolerance (their noise floor is higher).
     const double scale = options_.tol / options_.tol_cells;
-    const double change = std::max({parts[0], parts[1] * scale, parts[3], parts[2] * scale});
+    if (options_.mean) parts[3] = MeanChange();
+    const double change = options_.mean ? parts[3]
+                                        : std::max({parts[0], parts[1] * scale, parts[3], parts[2] * scale});
     last_change_ = std::min(last_change_, change);
     if (file_)
       file_->stream() << samples_.back().t << ',' << m << ',' << change << ',' << parts[0] << ',' << parts[1] << ','
@@ -169,6 +173,28 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
     }
   }
   PetscFunctionReturn(0);
+}
+
+double PeriodicDetector::MeanChange() const {
+  const std::size_t n = static_cast<std::size_t>(options_.window), k = samples_.size() - 1;
+  if (n < 2 || k < 2 * n) return INFINITY;
+  double change = 0.0;
+  for (double io::EnergyRow::*column : {&io::EnergyRow::dissipated, &io::EnergyRow::damped}) {
+    double sum[2] = {0.0, 0.0}, squares = 0.0;  // the older and the last window's per-period values
+    for (std::size_t j = 0; j < 2 * n; ++j) {
+      const double x = samples_[k - j].energy.*column - samples_[k - j - 1].energy.*column;
+      sum[j < n ? 1 : 0] += x;
+      squares += x * x;
+    }
+    const double mean = (sum[0] + sum[1]) / (2.0 * n);
+    if (mean <= 0.0) continue;  // nothing of this kind heats
+    const double variance = std::max(0.0, squares / (2.0 * n) - mean * mean) * (2.0 * n) / (2.0 * n - 1.0);
+    const double error = std::sqrt(variance / n);  // of one window's mean
+    const double last = sum[1] / n, before = sum[0] / n;
+    const double trend = error > 0.0 ? std::abs(last - before) / (3.0 * std::sqrt(2.0) * error) : 0.0;
+    change = std::max({change, error / std::abs(last), options_.tol * trend});
+  }
+  return change;
 }
 
 void PeriodicDetector::FrictionDrift(PetscInt m, double* slope, double* error) const {

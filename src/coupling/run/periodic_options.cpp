@@ -37,6 +37,11 @@ PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
   PetscCall(PetscOptionsReal("-periodic_drift_tol", "Largest projected error of a continuation from the measured drift "
                              "of the friction per period (half the drift over the periods continued); above it the waves "
                              "run on (0: report the drift only)", nullptr, o->drift_tol, &o->drift_tol, nullptr));
+  PetscInt mode = o->mean ? 1 : 0;
+  PetscCall(OptionsChoice(PetscOptionsObject, "-periodic_mode",
+                          "What repeats: state (waves and contact period by period) or mean (a statistically steady "
+                          "state: the windows' friction, damping and work)", {"state", "mean"}, &mode, nullptr));
+  o->mean = mode == 1;
   PetscOptionsEnd();
   o->on = o->choice != PeriodicChoice::Off;
   PetscCheck(o->tol > 0.0 && o->tol < 1.0, comm, PETSC_ERR_USER_INPUT, "-periodic_tol must be in (0, 1), got %g", o->tol);

@@ -14,6 +14,10 @@ double Scene::exchange_length() const {
   return std::sqrt(heat.material.diffusivity() * couple_dt / static_cast<double>(run.heat_substeps));
 }
 
+double Scene::waves_expected_end() const {
+  return std::min(final_time, excitation.signal.duration + 8.0 / excitation.signal.frequency);
+}
+
 namespace {
 
 /// Values every reader accepted but no run can use: infinities, and wave TS types
@@ -56,23 +60,69 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
   PetscFunctionReturn(0);
 }
 
-/// A periodic continuation compares and replays whole source periods: the wave step must divide
-/// the heat step, which must divide the period. Off (said once) when the coupling cannot.
+/// Values every reader accepts but that can only give a useless run (a source that
+/// never drives, a switch-on longer than the excitation, a heat step longer than the
+/// run, a camera without noise): refused naming the option, or said when a default is cut.
+PetscErrorCode CheckUsefulValues(MPI_Comm comm, const Scene& s) {
+  PetscFunctionBeginUser;
+  const wave::SourceTimeFunction& g = s.excitation.signal;
+  if (s.run.physics != PhysicsChoice::Heat) {
+    PetscCheck(g.duration > 0.0, comm, PETSC_ERR_USER_INPUT,
+               "-source_duration must be > 0 (the waves are driven only while the source runs), got %g", g.duration);
+    PetscCheck(g.duration * g.frequency >= 1.0, comm, PETSC_ERR_USER_INPUT,
+               "-source_frequency %g Hz: %.3g cycles in -source_duration %g s; at least one whole cycle is needed "
+               "(raise -source_frequency or -source_duration)",
+               g.frequency, g.duration * g.frequency, g.duration);
+    PetscCheck(g.amplitude != 0.0 || !g.schedule.empty(), comm, PETSC_ERR_USER_INPUT,
+               "-source_amplitude 0: nothing drives the waves (give an amplitude, or a -source_schedule)");
+    // The switch-on and the switch-off each take at most half the excitation: a longer ramp is cut
+    // (said), and one longer than the whole excitation is no ramp anyone meant (refused).
+    const double fit = 0.5 * g.duration * g.frequency;  // cycles
+    PetscCheck(g.ramp_cycles <= 2.0 * fit * (1 + 1e-12), comm, PETSC_ERR_USER_INPUT,
+               "-source_ramp_cycles %g: a switch-on longer than the whole excitation (-source_duration %g s: %.4g "
+               "cycles at %g Hz); the switch-on and the switch-off take at most %.4g cycles each",
+               g.ramp_cycles, g.duration, 2.0 * fit, g.frequency, fit);
+    if (g.ramp_cycles > fit * (1 + 1e-12))
+      PetscCall(PetscPrintf(comm, "vibrotherm: warning: -source_ramp_cycles %g does not fit twice in -source_duration %g "
+                                  "s (%.4g cycles): the switch-on and the switch-off take %.4g cycles each\n",
+                            g.ramp_cycles, g.duration, 2.0 * fit, fit));
+  }
+  const double heat_dt = s.couple_dt / static_cast<double>(s.run.heat_substeps);
+  const bool heat_may_run = s.run.physics == PhysicsChoice::All && s.run.heat != HeatChoice::Off;
+  PetscCheck(!heat_may_run || heat_dt <= s.final_time * (1 + 1e-12), comm, PETSC_ERR_USER_INPUT,
+             "a heat step of %g s (the coupling interval %g s%s, / -heat_substeps %" PetscInt_FMT ") is longer than the "
+             "run (%g s, -final_time): set -couple_dt or raise -final_time",
+             heat_dt, s.couple_dt, s.run.couple_dt > 0.0 ? "" : ", 1/8 of the source period", s.run.heat_substeps,
+             s.final_time);
+  PetscFunctionReturn(0);
+}
+
+/// A periodic continuation compares and replays whole source periods, and the source's power is
+/// measured over whole periods: the wave step must divide the heat step, which must divide the
+/// period. The steps are quantized so whenever the coupling allows it (the continuation is off,
+/// said once, when it cannot be).
 PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   const bool heat_may_run = s->run.physics == PhysicsChoice::All && s->run.heat != HeatChoice::Off;
   if (s->periodic.choice == PeriodicChoice::Auto && !heat_may_run) s->periodic.on = false;
-  if (!s->periodic.on) PetscFunctionReturn(0);
+  if (s->periodic.on && s->excitation.signal.sweeping()) {
+    s->periodic.on = false;
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: a frequency sweep (-source_sweep) never "
+                                "repeats itself; it is simulated in full\n"));
+  }
   const double period = 1.0 / s->excitation.signal.frequency, heat_dt = s->couple_dt / s->run.heat_substeps;
   const double per_period = period / heat_dt;
-  if (std::abs(per_period - std::round(per_period)) > 1e-9 * per_period || s->wave.dt > 0.0) {
+  const bool divides = std::abs(per_period - std::round(per_period)) <= 1e-9 * per_period;
+  // Only for a continuation: quantizing shrinks the step (a run without one keeps its own CFL step;
+  // the source's power between rows that miss a period boundary is then interpolated).
+  if (divides && s->wave.dt <= 0.0 && s->periodic.on)
+    s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
+  if (s->periodic.on && s->wave.step_quantum <= 0.0) {
     s->periodic.on = false;
     PetscCall(PetscPrintf(comm, "vibrotherm: note: periodic continuation off: %s\n",
                           s->wave.dt > 0.0 ? "-wave_dt fixes the wave step (it must divide the heat step)"
                                            : "-couple_dt / -heat_substeps does not divide the source period"));
-    PetscFunctionReturn(0);
   }
-  s->wave.step_quantum = s->wave.lts.step_quantum = period / std::round(per_period);
   PetscFunctionReturn(0);
 }
 
@@ -84,8 +134,13 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(ReadDriverOptions(comm, &s->run));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material));
   PetscCall(wave::ReadExcitation(comm, &s->excitation));
-  PetscCall(wave::ReadMaterialDamping(comm, s->excitation.signal.frequency, &s->material));
+  // A sweep's loss factor holds at its centre frequency (mass-proportional damping: η ∝ 1/f across the band).
+  const wave::SourceTimeFunction& signal = s->excitation.signal;
+  const double damping_frequency = signal.sweeping() ? 0.5 * (signal.sweep_from + signal.sweep_to) : signal.frequency;
+  PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  PetscCheck(!(s->wave.harmonic_start && signal.sweeping()), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start harmonic with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)");
   s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
   PetscCall(ReadContactOptions(comm, s->contact));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0));
@@ -96,6 +151,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscCall(RestrictToDimension(comm, s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
   s->couple_dt = CouplingInterval(s->run, s->excitation.signal.frequency);
+  PetscCall(CheckUsefulValues(comm, *s));
   PetscCall(QuantizeForPeriodicity(comm, s));
   s->heat.coupled_step = s->couple_dt / static_cast<double>(s->run.heat_substeps);
   // Output times after the end would never be written: say so, and drop them.

@@ -6,13 +6,15 @@
 #include "vibrotherm/coupling/run/recording.hpp"
 #include "vibrotherm/coupling/exchange/heat_camera.hpp"
 #include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
 
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
-PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                                 bool restarting) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
   scene_ = &scene;
@@ -28,7 +30,8 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
   PetscCall(PetscLogStageRegister("Heat steps", &heat_stage_));
   if (run.physics != PhysicsChoice::Heat) {
     waves_ = std::make_unique<WaveComponent>();
-    PetscCall(waves_->Setup(specimen, scene, summary));
+    PetscCall(waves_->Setup(specimen, scene, summary, restarting));
+    strain_ = std::make_unique<ResponseStrain>(scene.material.cs());
   }
   const bool can_heat = waves_ && ((waves_->crack() && waves_->crack()->dissipative()) ||
                                    run.thermoelastic != ThermoelasticChoice::Off || scene.material.damping_heat);
@@ -55,6 +58,7 @@ PetscErrorCode Simulation::SetupCamera(const Scene& scene) {
   PetscFunctionBeginUser;
   if (!scene.camera.on) PetscFunctionReturn(0);
   camera_ = std::make_unique<HeatCamera>();
+  camera_->SetDefectShare(heat_->defect_share());
   PetscInt frames;
   PetscCall(camera_->Setup(heat_->solver(), scene.camera, scene.final_time, &frames));
   if (frames == 0) camera_.reset();
@@ -65,6 +69,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscFunctionBeginUser;
   dir_ = dir;
   control_ = control;
+  summary_ = summary;
   const fe::LagrangeSpace& probe_space = waves_ ? waves_->solver().space() : heat_->solver().space();
   PetscCall(schedule_.Start(PetscObjectComm((PetscObject)probe_space.dm()), scene_->run.checkpoint_every_s));
   PetscCall(CanCheckpoint(&checkpoints_));
@@ -72,6 +77,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscCall(recorder.Open(scene_->run, dir, probe_space, waves_ ? waves_->crack() : nullptr,
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
+  if (waves_) PetscCall(recorder.MeterSource(scene_->excitation.signal, scene_->periodic.window, control.restart));
   if (heat_ && !control.restart) {  // t = 0
     PetscCall(RecordTemperature(recorder, *heat_, waves_ != nullptr));
     PetscCall(recorder.OnHeatStep(heat_->solver()));
@@ -108,9 +114,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
   const double heat_dt = scene_->couple_dt / per_interval;
   const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
-  // The waves are expected to be over about 8 source periods after the source (quiet rule; 7.2 in the paper scene).
-  const double expected_end =
-      std::min(final_time, scene_->excitation.signal.duration + 8.0 / scene_->excitation.signal.frequency);
+  const double expected_end = scene_->waves_expected_end();
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
@@ -133,6 +137,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   io::EnergyRow row;
   PetscCall(waves_->Energy(&row));
   if (!control_.restart) {  // t = 0
+    recorder.OnInterval(row);
     PetscCall(RecordEnergy(recorder, row, heat_.get()));
     if (recorder.OutputDue(0.0)) PetscCall(WriteFields(recorder, 0.0, waves_.get(), heat_.get()));
   }
@@ -190,6 +195,8 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
     PetscCall(PetscLogStagePop());
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
+  PetscCall(strain_->Check(solver, summary_));
+  recorder.OnInterval(*row);
   if (heat_) {
     PetscCall(RecordTemperature(recorder, *heat_, true));
     PetscCall(RecordEnergy(recorder, *row, heat_.get()));
@@ -241,6 +248,10 @@ PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& la
   recorder.FlushProbes();
   recorder.StopWaves(last);
   summary->wave_energy_left = mechanical_left_;
+  summary->derived["response_strain"] = strain_->peak();
+  summary->derived_rules["response_strain"] =
+      "max |v| / c_s over the specimen and the coupling intervals: the strain the waves reached (a plane wave's; "
+      "warned about above 1e-3 and 1e-2)";
   summary->work_thermal = last.work_thermal;
   if (solver.time() < scene_->final_time * (1 - 1e-12))
     PetscCall(PetscPrintf(comm, "Waves quiet at t = %.6g s: wave solver stopped%s\n", solver.time(),
@@ -286,12 +297,13 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   }
   heat.on_step = nullptr;
   if (interrupted_by_ && heat_alone_from_ >= 0.0)
-    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping (-restart <output dir> "
-                                "resumes at t = %.6g s, where the waves stopped, and repeats this phase)\n",
-                          SignalName(interrupted_by_), heat.time(), heat_alone_from_));
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping; -restart %s resumes "
+                                "from its checkpoint at t = %.6g s, where the waves stopped, and repeats this phase\n",
+                          stop_signals::Name(interrupted_by_), heat.time(), dir_.c_str(), heat_alone_from_));
   else if (interrupted_by_)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping, without a checkpoint "
-                                "(this scene has none): the run is lost\n", SignalName(interrupted_by_), heat.time()));
+                                "(this scene has none): the run is lost\n", stop_signals::Name(interrupted_by_), heat.time()));
+  if (interrupted_by_) stop_signals::Stopping();
   summary->stages["heat_free"] = MPI_Wtime() - t0;
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());

@@ -5,6 +5,7 @@
 #include "vibrotherm/coupling/run/recording.hpp"
 #include "vibrotherm/coupling/run/periodic_continuation.hpp"
 #include "vibrotherm/coupling/run/simulation.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -30,19 +31,28 @@ PetscErrorCode Simulation::CheckpointIfDue(Recorder& recorder, bool quiet) {
   // Always where the waves stop (the checkpoint says so): a stop while the heat
   // runs alone resumes from there, repeating only that phase.
   const bool stopping_waves = quiet && heat_ && !interrupted_by_;
+  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   if ((due || stopping_waves) && checkpoints_) {
+    if (schedule_.warned())
+      PetscCall(PetscPrintf(comm, "vibrotherm: SIGCONT at t = %.6g s: a checkpoint, in case a stop follows (Open MPI's "
+                                  "mpiexec sends it before SIGTERM)\n", waves_->solver().time()));
     PetscCall(PetscLogEventBegin(schedule_.event(), 0, 0, 0, 0));
     PetscCall(WriteCheckpoint(recorder, quiet));
     PetscCall(PetscLogEventEnd(schedule_.event(), 0, 0, 0, 0));
-    schedule_.Written();
+    schedule_.Written(waves_->solver().time(), dir_);
     if (stopping_waves) heat_alone_from_ = waves_->solver().time();
   }
   if (!signal) PetscFunctionReturn(0);
   interrupted_by_ = signal;
-  MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
-  PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: %s\n", SignalName(signal), waves_->solver().time(),
-                        checkpoints_ ? "checkpoint written, stopping (continue with -restart <output dir>)"
-                                     : "stopping without a checkpoint"));
+  if (checkpoints_) {
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: stopping; -restart %s resumes from its checkpoint at t = "
+                                "%.6g s\n", stop_signals::Name(signal), waves_->solver().time(), dir_.c_str(),
+                          waves_->solver().time()));
+    stop_signals::Stopping();
+  }
+  else
+    PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s: stopping without a checkpoint (this scene has none)\n",
+                          stop_signals::Name(signal), waves_->solver().time()));
   PetscFunctionReturn(0);
 }
 
@@ -60,6 +70,7 @@ PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder, bool waves_quiet)
   std::vector<double> quiet = {peak_mechanical_, mechanical_left_};
   for (const Sample& s : recent_) quiet.insert(quiet.end(), {s.t, s.energy, s.dissipated, s.damped, s.radiated});
   checkpoint.PutShared("run/quiet_rule", quiet);
+  checkpoint.PutShared("run/response_strain", strain_->state());
   PetscCall(checkpoint.Write(dir_ + "/checkpoint.h5"));
   PetscFunctionReturn(0);
 }
@@ -82,6 +93,11 @@ PetscErrorCode Simulation::Resume(const store::Checkpoint& checkpoint, Recorder&
   for (std::size_t i = 2; i + 4 < quiet.size(); i += 5)
     recent_.push_back({quiet[i], quiet[i + 1], quiet[i + 2], quiet[i + 3], quiet[i + 4]});
   waves_quiet_at_restart_ = checkpoint.Has("run/waves_quiet");
+  if (checkpoint.Has("run/response_strain")) {  // older checkpoints: the peak since the restart
+    std::vector<double> strain;
+    PetscCall(checkpoint.GetShared("run/response_strain", &strain, 2));
+    strain_->Restore(strain);
+  }
   PetscCall(PetscPrintf(comm, "Restarted from the checkpoint at t = %.6g s (wave step %" PetscInt_FMT ")\n",
                         waves_->solver().time(), waves_->solver().steps()));
   PetscFunctionReturn(0);

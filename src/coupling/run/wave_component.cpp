@@ -7,6 +7,7 @@
 
 #include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/util/stop_signals.hpp"
 #include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
@@ -70,7 +71,8 @@ void ReportLevels(const wave::LtsStepper& lts, io::RunSummary* summary) {
 
 }  // namespace
 
-PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary) {
+PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                                    bool restarting) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
   TimedStage stage;
@@ -97,7 +99,10 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
                "-wave_start harmonic: the crack is not pre-closed (-crack_a0 %g): the linearized contact of an "
                "unloaded crack lets its faces pass through each other; start at rest or pre-close it (-crack_a0 > 0)",
                global);
-    PetscCall(solver_->StartHarmonic());
+    if (!restarting) {  // a restart's state is the checkpoint's
+      stop_signals::EnterSetup("the harmonic start");
+      PetscCall(solver_->StartHarmonic());
+    }
   }
   PetscCall(stage.End(&summary->stages["wave_setup"]));
   PetscCall(solver_->ViewLts());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include "vibrotherm/options/option_database.hpp"
@@ -14,6 +15,8 @@ namespace {
 struct Capture {
   bool active = false, echo = false, added_help = false;
   bool in_help_line = false;  ///< a help line printed in pieces (PETSc's type lists) is not finished
+  bool in_viewers = false;    ///< echoing a section of PETSc's viewer options (not echoed)
+  std::set<std::string> echoed;  ///< options whose help line was shown (shown once)
   std::string text;
   PetscErrorCode (*original)(MPI_Comm, const char[], ...) = nullptr;
   PetscErrorCode (*original_vfprintf)(FILE*, const char[], va_list) = nullptr;
@@ -21,6 +24,17 @@ struct Capture {
 Capture& TheCapture() {
   static Capture capture;
   return capture;
+}
+
+/// Whether a piece of help is shown: not PETSc's sections of viewer options (ascii, binary,
+/// draw, ... for every -*_view), and an option read by two modules (-material_nu by the
+/// material and the mmd law, -force by the mesh and -modes) once.
+bool ShowHelp(Capture& c, const std::string& piece) {
+  if (piece.rfind("----", 0) == 0) c.in_viewers = piece.find("\nViewer (") != std::string::npos;
+  if (c.in_viewers) return false;
+  if (piece.rfind("  -", 0) != 0) return true;
+  const std::string name = piece.substr(2, piece.find_first_of(" :<", 2) - 2);
+  return c.echoed.insert(name).second;
 }
 
 PetscErrorCode CapturingHelpPrintf(MPI_Comm comm, const char format[], ...) {
@@ -31,7 +45,7 @@ PetscErrorCode CapturingHelpPrintf(MPI_Comm comm, const char format[], ...) {
   va_end(args);
   Capture& c = TheCapture();
   c.text += buffer;
-  if (c.echo && c.original) return (*c.original)(comm, "%s", buffer);
+  if (c.echo && c.original && ShowHelp(c, buffer)) return (*c.original)(comm, "%s", buffer);
   return 0;
 }
 

@@ -16,6 +16,9 @@
 
 namespace vibrotherm::coupling {
 
+/// Whether name is one of the six faces (front, back, top, bottom, left, right).
+bool IsCameraFace(const std::string& name);
+
 class CameraFace {
  public:
   /// face: "" in 2D; in 3D one of the six names ("" = front). InputError-like PETSc error naming

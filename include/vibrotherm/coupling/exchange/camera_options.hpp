@@ -21,7 +21,10 @@ struct CameraOptions {
   std::string face;            ///< -camera_face (3D): front|back|top|bottom|left|right; empty: front (camera_face.hpp)
   PetscInt samples = 6;        ///< -camera_pixel_samples: n × n points per pixel (area average)
   PetscInt seed = 1;           ///< -camera_seed: the noise's random seed
-  double detect_snr = 5.0;     ///< -camera_detect_snr: detectable when the peak SNR reaches it (Rose)
+  double detect_snr = 5.0;     ///< -camera_detect_snr: the defect's signal over NETD that counts (Rose)
+  /// -camera_detect_contrast: the defect's peak rise over the background heating's peak on the
+  /// face (damping, thermoelastic, film heat) from which the defect stands out (camera_verdict.hpp)
+  double detect_contrast = 1.0;
 };
 
 /// Reads and checks -camera*. Collective. A bad value is one line naming the option.

@@ -8,7 +8,9 @@
 // a coupled step). Frame k integrates [k/fps, k/fps + integration]. Rank 0
 // adds seeded Gaussian NETD noise and writes camera.h5 + camera.xmf. In 3D the camera
 // films one face of the box (camera_face.hpp); pixels and -camera_window are in that
-// face's (u, v) coordinates.
+// face's (u, v) coordinates. Beside each frame the camera integrates the defect's own
+// share of the rise the same way (camera_verdict.hpp; /camera/defect_k when it is not the
+// whole frame) and judges from both whether it sees the defect.
 #pragma once
 
 #include <petscmat.h>
@@ -20,6 +22,7 @@
 
 #include "vibrotherm/coupling/exchange/camera_face.hpp"
 #include "vibrotherm/coupling/exchange/camera_options.hpp"
+#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/io/camera_frames.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
@@ -43,6 +46,8 @@ class HeatCamera {
   /// Pixels × heat dofs: a pixel's value is its row times the rise (null before Setup or without frames).
   Mat pixel_matrix() const { return S_; }
   const io::CameraGrid& grid() const { return grid_; }
+  /// What of the rise is the defect's (default: all of it); Partial reads the heat solver's partial rise.
+  void SetDefectShare(DefectShare share) { share_ = share; }
   /// Opens dir/camera.h5 (rank 0). Collective.
   PetscErrorCode Open(const std::string& dir);
   /// After every heat step and at t = 0: integrates the pixel averages; writes each completed frame. Collective.
@@ -64,6 +69,12 @@ class HeatCamera {
                            const std::vector<fe::ReferencePoint>& refs);
   PetscErrorCode Integrate(double t_prev, double t);
   PetscErrorCode EmitFrame();
+  /// A frame's window mean on rank 0 (empty elsewhere); the integral restarts.
+  PetscErrorCode GatherMean(Vec integral, std::vector<double>* mean);
+  /// The pixel's centre in the camera's axes [m].
+  std::array<double, 2> PixelCentre(double pixel) const;
+  PetscErrorCode SummariseVerdict(io::CameraSummary* c) const;
+  PetscErrorCode SayVerdict(const io::CameraSummary& c) const;
   /// Sub-sample point i (row-major pixels, n × n points each) in the body.
   std::array<double, 3> SamplePoint(std::size_t i) const;
   double start(PetscInt k) const { return static_cast<double>(k) / options_.fps; }
@@ -75,11 +86,14 @@ class HeatCamera {
   PetscInt frames_ = 0, frame_ = 0;
   Mat S_ = nullptr;  ///< pixels × heat dofs: area-average weights
   Vec current_ = nullptr, previous_ = nullptr, integral_ = nullptr, on_root_ = nullptr;
+  DefectShare share_ = DefectShare::Whole;
+  Vec defect_current_ = nullptr, defect_previous_ = nullptr, defect_integral_ = nullptr;  ///< Partial only
   VecScatter to_root_ = nullptr;
   double t_prev_ = -1.0;
   io::CameraFrames file_;
   std::mt19937_64 random_;
   std::vector<double> peak_clean_, peak_noisy_;  ///< per frame [K] (rank 0)
+  std::vector<FrameVerdict> verdicts_;           ///< per frame (rank 0)
   PetscLogEvent event_ = 0;
 };
 

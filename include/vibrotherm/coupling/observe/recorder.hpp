@@ -12,6 +12,7 @@
 
 #include "vibrotherm/coupling/observe/recording_options.hpp"
 #include "vibrotherm/coupling/observe/field_peak.hpp"
+#include "vibrotherm/coupling/observe/source_power.hpp"
 #include "vibrotherm/coupling/observe/wave_energy_row.hpp"
 #include "vibrotherm/coupling/exchange/heat_camera.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
@@ -43,6 +44,13 @@ class Recorder {
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const wave::WaveSolver* waves, const heat::HeatSolver* heat);
   /// The run stops for a restart: the files stay as .partial, as the checkpoint describes them.
   void Keep();
+  /// The source's power per period from the energy rows (source_power.csv, summary.json source_power):
+  /// for a run with waves, after Open. window: the periods of a steady stretch it reports. Collective.
+  PetscErrorCode MeterSource(const wave::SourceTimeFunction& signal, PetscInt window,
+                             const store::Checkpoint* resume = nullptr);
+  /// At t = 0 and after every coupling interval while the waves run (or are continued): the wave
+  /// columns of an energy row at the interval's end (the source's power per period).
+  void OnInterval(const io::EnergyRow& row) { source_power_.OnEnergyRow(row); }
   /// After every accepted wave step: probe rows (held), energy rows (without heat), crack state.
   PetscErrorCode OnWaveStep(const wave::WaveSolver& w, bool energy_rows);
   /// Appends an energy row (wave and heat columns filled by the caller); stops an unstable run.
@@ -68,6 +76,7 @@ class Recorder {
   void StopWaves(const io::EnergyRow& last) {
     crack_ = nullptr;
     waves_at_stop_ = last;
+    source_power_.Stop();
   }
   const io::EnergyRow& waves_at_stop() const { return waves_at_stop_; }
   PetscErrorCode Finish(io::RunSummary* summary);
@@ -86,6 +95,7 @@ class Recorder {
   io::EnergyLog energy_;
   MPI_Comm comm_ = MPI_COMM_NULL;  ///< the probes' (and waves') communicator
   io::CrackStateLog crack_state_;
+  SourcePowerMeter source_power_;
   io::Progress progress_;
   io::FieldFile fields_;
   FieldPeak field_peak_;

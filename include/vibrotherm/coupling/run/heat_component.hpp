@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
 #include "vibrotherm/coupling/exchange/heat_sources.hpp"
 #include "vibrotherm/coupling/observe/probe_temperatures.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"
@@ -34,6 +35,10 @@ class HeatComponent {
   /// temperature probes (point probes, then crack probes on the crack line).
   PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
                        io::RunSummary* summary);
+  /// What of the heat field is the defect's own (the camera's verdict, heat_camera.hpp): all of it
+  /// (only the crack heats), none (nothing heats at the crack), or the partial rise the solver
+  /// steps beside θ with the friction heat alone (damping, thermoelastic or film heat as well).
+  DefectShare defect_share() const { return defect_share_; }
   heat::HeatSolver& solver() { return solver_; }
   const heat::HeatSolver& solver() const { return solver_; }
   /// One heat step to t, loaded with what every source deposited since the last step
@@ -82,12 +87,18 @@ class HeatComponent {
  private:
   /// -thermoelastic: the heating (one_way, two_way) and the thermal stress on the waves (two_way).
   PetscErrorCode SetupThermoelastic(const Scene& scene, WaveComponent* waves);
+  /// Which DefectShare; the partial rise enabled when needed.
+  PetscErrorCode SetupDefectShare(const Scene& scene);
+  /// load_ = every source's load for the step to t (averaged: a continuation's averaged twin);
+  /// the friction's alone into the solver's partial load when it steps one.
+  PetscErrorCode LoadSources(double t, bool averaged);
   heat::HeatSolver solver_;
   std::vector<std::unique_ptr<HeatSource>> sources_;
   std::unique_ptr<ThermalStress> thermal_stress_;  ///< -thermoelastic two_way: θ back on the waves
   ProbeTemperatures probe_temperatures_;          ///< the probes between heat steps
   FrictionHeatSource* friction_ = nullptr;        ///< among sources_, when friction heats
-  Vec load_ = nullptr;
+  Vec load_ = nullptr, defect_load_ = nullptr;
+  DefectShare defect_share_ = DefectShare::Whole;
   std::vector<double> crack_probe_xy_;
   std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go
   double seconds_ = 0.0;

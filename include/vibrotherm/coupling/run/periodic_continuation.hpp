@@ -39,6 +39,7 @@
 
 #include "vibrotherm/coupling/run/heat_component.hpp"
 #include "vibrotherm/coupling/run/periodic_detector.hpp"
+#include "vibrotherm/coupling/run/periodic_outlook.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/coupling/run/wave_component.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
@@ -82,6 +83,13 @@ class PeriodicContinuation {
  private:
   enum class Phase { kWatch, kRecord, kLadder };
   bool AtPeriodBoundary(double t) const;
+  /// The progress line's outlook while watching (issue 43): the change per period against the
+  /// tolerance, the periods its trend still needs, the steps the run then resolves; once per
+  /// stretch, when the change does not shrink toward the tolerance in time, what would help.
+  PetscErrorCode Outlook(Recorder& recorder, double t, double stretch_end);
+  /// Wave steps resolved after the steady stretch ending at stretch_end: to the waves' expected
+  /// end, less what later stretches continue when each is watched `watched` periods.
+  double TailSteps(double stretch_end, double watched) const;
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
   PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
@@ -118,6 +126,8 @@ class PeriodicContinuation {
   double record_start_ = 0.0, record_end_ = 0.0;
   double skip_stretch_ = -1.0;  ///< end of a steady stretch too short to continue (watch no more in it)
   double drift_said_ = -1.0;    ///< end of the steady stretch whose drift held the waves on (said once)
+  PeriodicOutlook outlook_;     ///< the change per period's trend: the progress line's ETA
+  double advised_ = -1.0;       ///< end of the steady stretch whose slow periodicity was said (once)
   std::vector<double> accumulated_start_;  ///< the waves' growing accounts at the recording's start (this rank)
   std::vector<double> increments_;         ///< what they grow by over the continuation
   io::EnergyRow row_start_, row_end_;

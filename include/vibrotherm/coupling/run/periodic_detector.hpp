@@ -20,6 +20,13 @@
 // the contact's cell-by-cell quantities have a noise floor of ~0.5 %) is
 // the change of multiple m; summary.json and
 // periodic.csv report it (a scene that never becomes periodic says how close it came).
+// -periodic_mode mean (a statistically steady state, e.g. a chaotically clapping crack: its
+// friction per period scatters by 10-40 %): m = 1, and only what heats, the friction and the
+// damping per period over the last two windows, judged as samples of a stationary process:
+// the last window's mean known to -periodic_tol (its standard error over the mean), and no
+// trend (the two windows' means within 3 standard errors of their difference). The source's
+// work per period swings with the stored energy and is not judged (a continuation books it
+// as the losses). periodic.csv's `energies` column then holds this change.
 #pragma once
 
 #include <petscvec.h>
@@ -82,6 +89,10 @@ class PeriodicDetector {
   PetscErrorCode Take(WaveComponent& waves, const io::EnergyRow& row, Snapshot* s) const;
   /// The change between the last sample and the one m back (state, memory, cells, energies).
   PetscErrorCode Change(std::size_t m, const std::vector<double>& weights, double parts[4]) const;
+  /// -periodic_mode mean: the heat's accounts (friction, damping) per period over the last two
+  /// windows: the larger of the last window's standard error over its mean and the windows'
+  /// difference in units of 3 standard errors (scaled by -periodic_tol); inf before two windows.
+  double MeanChange() const;
   void Free(Snapshot& s) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;

@@ -29,6 +29,12 @@ struct PeriodicOptions {
   /// drifts (a ratcheting crack), half the drift over the continuation, relative, is what the frozen
   /// heat would miss if the drift went on. Above this the waves run on (0: measured and reported only)
   double drift_tol = 0.0;
+  /// -periodic_mode state|mean: state (the waves and the contact repeat period by period), or
+  /// mean: a statistically steady state (a clapping crack can be chaotic: no two periods alike,
+  /// yet every window of -periodic_window periods takes the same friction, damping and work):
+  /// only the windows' energies and the cells' friction per window are compared, against
+  /// -periodic_tol, and the window recorded is replayed as the mean heat (periodic_detector.hpp)
+  bool mean = false;
 };
 
 /// Reads -periodic*, checked, named errors. Collective.

@@ -31,6 +31,9 @@ struct Scene {
 
   /// √(α · heat step): the layer the friction heat of one heat step fills.
   double exchange_length() const;
+  /// Where the waves are expected to be over: 8 source periods after the source (the quiet
+  /// rule stops them once they are; 7.2 in the paper scene), or -final_time.
+  double waves_expected_end() const;
 };
 
 /// Reads and checks every simulation option. Collective.

@@ -32,6 +32,7 @@
 
 #include "vibrotherm/coupling/run/checkpoint_schedule.hpp"
 #include "vibrotherm/coupling/run/heat_component.hpp"
+#include "vibrotherm/coupling/run/model_validity.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/coupling/run/wave_component.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
@@ -55,7 +56,9 @@ class Simulation {
   Simulation();
   ~Simulation();
   /// Builds what the scene needs; all input is checked here, before any output.
-  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  /// restarting: the state will come from a checkpoint (the harmonic start is not solved).
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                       bool restarting = false);
   /// Runs to the final time (or until a signal stops it), writing the outputs into dir.
   PetscErrorCode Run(const std::string& dir, io::RunSummary* summary, const RunControl& control);
   /// The signal that stopped the run (0: it ran to its end).
@@ -94,6 +97,8 @@ class Simulation {
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
   std::unique_ptr<PeriodicContinuation> periodic_;  ///< -periodic: continuation of a periodic state
+  std::unique_ptr<ResponseStrain> strain_;            ///< the waves' strain, once per coupling interval
+  io::RunSummary* summary_ = nullptr;                 ///< Run's (its warnings)
   /// The wave-stop rule: mechanical energy (kinetic + strain + interface) at recent intervals.
   struct Sample {
     double t, energy;                    ///< energy: the mechanical energy left times friction's share of the losses

@@ -19,8 +19,10 @@ namespace vibrotherm::coupling {
 
 class WaveComponent {
  public:
-  /// Builds the solver (stage "Wave setup") and the crack interface when a crack transmits tractions.
-  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary);
+  /// Builds the solver (stage "Wave setup") and the crack interface when a crack transmits tractions;
+  /// restarting: the state comes from a checkpoint, the harmonic start is not solved (its checks are made).
+  PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
+                       bool restarting = false);
   wave::WaveSolver& solver() { return *solver_; }
   const wave::WaveSolver& solver() const { return *solver_; }
   /// The crack contact, or null (no crack, or a law that transmits nothing).

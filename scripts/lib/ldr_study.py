@@ -1,0 +1,255 @@
+"""Which excitation makes a defect visible: the LDR study (scripts/study ldr).
+
+1. modes     the scene's natural modes in the band (-modes; the crack open), each with
+             its defect participation (the share of strain energy near the crack);
+2. candidates the modes of the band ranked by participation, and off-resonance frequencies
+             in the widest gaps between them, spread over the band;
+3. common power the common input power: the scene's own drive's (its frequency and amplitude);
+             each candidate probed at 1 % of the scene's amplitude (the contact stuck: linear,
+             input power ∝ A²), then run over the test time T (harmonic start, continuation)
+             at the amplitude that puts the common power in, rescaled by the exponent
+             measured between its last two runs until within 10 % (a clapping defect takes
+             more power than its stuck linearisation: up to 4 more runs);
+4. verdict   per candidate: input and friction power, efficiency, the defect's own peak rise
+             on the camera's face within T, its SNR, contrast against the background heat,
+             detectable, detection time; the LDR gain = the LDR's efficiency over the best
+             non-LDR candidate's;
+5. thresholds at the best few frequencies (the defect's SNR at the common power): the smallest
+             drive that detects within T, bracketed on real runs from the fitted amplitude law
+             (amplitude_law.py), then verified: 1.25x detects, 0.75x does not.
+Writes study.json and the plots (ldr_plots.py) into the output directory.
+"""
+import json
+import math
+import os
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+from amplitude_law import PowerLaw, threshold_amplitude
+from study_runs import RunFailed
+
+
+def margin(point, criteria):
+    """How far a run is from detection: its SNR and contrast over the needed ones, the smaller (1: just)."""
+    snr = (point["snr"] or 0.0) / criteria[0]
+    contrast = point["contrast"]
+    if contrast is None or criteria[1] <= 0:
+        return snr
+    return min(snr, contrast / criteria[1])
+
+
+POWER_TOLERANCE = 0.1  # a candidate's measured input power within 10 % of the common one
+
+
+class StudyError(RuntimeError):
+    """A study that cannot run as asked (one line, no traceback)."""
+
+
+def read_options(path):
+    """-name value pairs of an options file (and the files it includes), the last one winning."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if not line.startswith("-"):
+                continue
+            parts = line.split(None, 1)
+            name, value = parts[0][1:], parts[1].strip() if len(parts) > 1 else ""
+            if name == "options_file":
+                include = value if os.path.isabs(value) else value
+                for base in (os.path.dirname(path), os.getcwd()):
+                    if os.path.exists(os.path.join(base, include)):
+                        values.update(read_options(os.path.join(base, include)))
+                        break
+                continue
+            values[name] = value
+    return values
+
+
+def modes_in_band(runner, band, log):
+    """(frequency, participation) of the scene's modes in the band, asking SLEPc for more until it is covered."""
+    centre = math.sqrt(band[0] * band[1])
+    n = 24
+    while True:
+        run = runner.run("modes_%d" % n, {"modes": None, "modes_n": n, "modes_target_frequency": centre})
+        found = [(m["frequency"], m["participation"]) for m in run.summary.get("modes", [])]
+        found = [(f, p) for f, p in found if f > 1e-3 * centre and p is not None and math.isfinite(p)]
+        covered = any(f <= band[0] for f, _ in found) and any(f >= band[1] for f, _ in found)
+        if covered or n >= 96 or len(found) < n - 2:
+            modes = sorted((f, p) for f, p in found if band[0] <= f <= band[1])
+            log("modes: %d in the band %g-%g Hz (%d sought near %.0f Hz)" % (len(modes), band[0], band[1], n, centre))
+            return modes
+        n *= 2
+
+
+def candidates(modes, band, n_modes, n_off):
+    """The modes of largest participation, and off-resonance frequencies at the centres of the widest gaps."""
+    chosen = sorted(modes, key=lambda m: -m[1])[:n_modes]
+    picks = [{"frequency": f, "participation": p, "mode": True} for f, p in chosen]
+    edges = [band[0]] + [f for f, _ in modes] + [band[1]]
+    gaps = sorted(((math.log(b / a), math.sqrt(a * b)) for a, b in zip(edges, edges[1:]) if b > a * 1.02),
+                  reverse=True)
+    for _, f in gaps[:n_off]:
+        picks.append({"frequency": round(f, 2), "participation": None, "mode": False})
+    return sorted(picks, key=lambda c: c["frequency"])
+
+
+class LdrStudy:
+    def __init__(self, runner, options, band, duration, log=print, n_modes=5, n_off=4, thresholds=3,
+                 ldr_participation=0.8, power=None):
+        self.runner, self.options, self.band, self.duration, self.log = runner, options, band, duration, log
+        self.n_modes, self.n_off, self.n_thresholds = n_modes, n_off, thresholds
+        self.ldr_participation, self.power = ldr_participation, power
+        self.amplitude = float(options.get("source_amplitude", "1e-7"))
+        self.points = {}  # frequency -> the runs' figures at every amplitude tried
+
+    # --- runs ---------------------------------------------------------------------------
+    def overrides(self, frequency, amplitude):
+        """A candidate's run: the test time T of excitation, the camera's verdict at its end."""
+        T = self.duration
+        return {"source_frequency": frequency, "source_amplitude": amplitude, "source_duration": T,
+                "final_time": T, "output_times": repr(T), "probe_every": 1000, "crack_state_every": 0,
+                "camera": None}
+
+    @staticmethod
+    def name(frequency, amplitude):
+        return "f%.2f_a%.6g" % (frequency, amplitude)
+
+    def figures(self, run, frequency):
+        s = run.summary
+        camera = s.get("camera", {})
+        point = {"frequency": frequency, "amplitude": run.overrides["source_amplitude"],
+                 "input_power": s.get("input_power"), "friction_power": s.get("friction_power"),
+                 "damping_power": (s.get("source_power") or [{}])[-1].get("damping_power"),
+                 "efficiency": s.get("thermosonic_efficiency"), "peak_rise": camera.get("defect_peak_rise"),
+                 "total_peak_rise": camera.get("peak_rise"), "snr": s.get("camera_peak_snr"),
+                 "contrast": s.get("camera_defect_contrast"), "detectable": bool(s.get("camera_detectable")),
+                 "detection_time": s.get("camera_detection_time") if s.get("camera_detectable") else None,
+                 "run": os.path.relpath(run.dir, self.runner.output_dir)}
+        self.points.setdefault(frequency, []).append(point)
+        return point
+
+    def run_all(self, pairs):
+        """(frequency, amplitude) pairs, run `jobs` at a time: their figures."""
+        runs = self.runner.map([(self.name(f, a), self.overrides(f, a)) for f, a in pairs])
+        return [self.figures(run, f) for run, (f, _) in zip(runs, pairs)]
+
+    # --- the study ------------------------------------------------------------------------
+    def common_power(self, picks):
+        """Every candidate at the common input power: probed in the linear regime (1 % of the scene's
+        amplitude: the contact stuck, the harmonic start exact, input power ∝ A²), then run at the
+        amplitude that puts that power in, which the run measures."""
+        if self.power is None:  # the scene's own drive at its own frequency
+            own = float(self.options.get("source_frequency", picks[0]["frequency"]))
+            (reference,) = self.run_all([(own, self.amplitude)])
+            self.power = reference["input_power"]
+        if not self.power or self.power <= 0:
+            raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
+        probe = 0.01 * self.amplitude
+        last = self.run_all([(c["frequency"], probe) for c in picks])
+        exponents = [2.0] * len(picks)  # linear: power ∝ A²; then as measured between the last two runs
+        for _ in range(4):
+            off = [i for i, p in enumerate(last) if abs(p["input_power"] / self.power - 1.0) > POWER_TOLERANCE]
+            if not off:
+                break
+            pairs = [(picks[i]["frequency"], last[i]["amplitude"] * (self.power / last[i]["input_power"]) **
+                      (1.0 / exponents[i])) for i in off]
+            for i, p in zip(off, self.run_all(pairs)):
+                r = math.log(p["input_power"] / last[i]["input_power"]) / math.log(p["amplitude"] / last[i]["amplitude"])
+                exponents[i] = min(max(r, 1.0), 6.0) if math.isfinite(r) else 2.0
+                last[i] = p
+        for c, p in zip(picks, last):
+            c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "peak_rise",
+                                        "snr", "contrast", "detectable", "detection_time", "run",
+                                        "total_peak_rise", "damping_power")})
+            c["power_error"] = p["input_power"] / self.power - 1.0
+        return picks
+
+    def threshold(self, frequency, criteria):
+        """The smallest drive that detects within T at this frequency, bracketed on runs, then verified."""
+        below, above = 0.0, math.inf  # the largest amplitude seen not detecting, the smallest detecting
+        for p in self.points[frequency]:
+            if p["detectable"]:
+                above = min(above, p["amplitude"])
+            else:
+                below = max(below, p["amplitude"])
+        estimate, law = None, {}
+        for _ in range(4):
+            estimate, law = threshold_amplitude(self.points[frequency], *criteria)
+            if estimate is None:
+                break
+            bracketed = below > 0 and math.isfinite(above)
+            if bracketed and not below < estimate < above:  # the law points outside the bracket: halve it (in log)
+                estimate = math.sqrt(below * above)
+            if bracketed and above / below <= 1.25:
+                break
+            (point,) = self.run_all([(frequency, estimate)])
+            if point["detectable"]:
+                above = min(above, estimate)
+            else:
+                below = max(below, estimate)
+            if 0.85 <= margin(point, criteria) <= 1.18:  # the law landed on it: refit once more and stop
+                estimate, law = threshold_amplitude(self.points[frequency], *criteria)
+                break
+        if estimate is None:
+            return {"frequency": frequency, "input_power": None, "amplitude": None, "verified": False,
+                    "p": law.get("p"), "q": law.get("q"),
+                    "note": "no drive detects: the background grows faster than the defect's heat"}
+        used = list(self.points[frequency])
+        low, high = self.run_all([(frequency, 0.75 * estimate), (frequency, 1.25 * estimate)])
+        power = PowerLaw([p["amplitude"] for p in used], [p["input_power"] for p in used], 2.0)
+        friction = PowerLaw([p["amplitude"] for p in used], [p["friction_power"] for p in used], 3.0)
+        # The law against the two runs it did not use.
+        law_error = max((abs(friction(p["amplitude"]) / p["friction_power"] - 1.0) for p in (low, high)
+                         if p["friction_power"]), default=None)
+        return {"frequency": frequency, "amplitude": estimate, "input_power": power(estimate),
+                "verified": bool(high["detectable"] and not low["detectable"]), "p": law.get("p"),
+                "q": law.get("q"), "law_error": law_error, "runs_used": len(used), "at_0.75": low, "at_1.25": high}
+
+    def run(self):
+        began = time.time()
+        modes = modes_in_band(self.runner, self.band, self.log)
+        if not modes:
+            raise StudyError("--band %g,%g holds no mode of the scene: widen it (the scene's modes: -modes)" % tuple(
+                self.band))
+        picks = candidates(modes, self.band, self.n_modes, self.n_off)
+        self.log("candidates: " + ", ".join("%.0f Hz%s" % (c["frequency"], " (mode, %.2f)" % c["participation"]
+                                                            if c["mode"] else "") for c in picks))
+        picks = self.common_power(picks)
+        ldr = self.ldr(picks)
+        best = sorted(picks, key=lambda c: -(c["snr"] or 0.0))[:self.n_thresholds]
+        criteria = self.criteria(picks)
+        self.log("thresholds at " + ", ".join("%.0f Hz" % c["frequency"] for c in best))
+        with ThreadPoolExecutor(max_workers=self.runner.jobs) as pool:
+            thresholds = list(pool.map(lambda c: self.threshold(c["frequency"], criteria), best))
+        return self.record(modes, picks, ldr, thresholds, criteria, time.time() - began)
+
+    def ldr(self, picks):
+        """The LDR (the candidate mode of largest participation, when it is >= ldr_participation) and its gain."""
+        modes = [c for c in picks if c["mode"] and c["participation"] >= self.ldr_participation]
+        for c in picks:
+            c["ldr"] = False
+        if not modes:
+            return {"frequency": None, "gain": None}
+        lead = max(modes, key=lambda c: c["participation"])
+        for c in modes:
+            c["ldr"] = True
+        others = [c["efficiency"] for c in picks if not c["ldr"] and c["efficiency"] is not None]
+        gain = lead["efficiency"] / max(others) if others and max(others) > 0 else None
+        return {"frequency": lead["frequency"], "gain": gain}
+
+    def criteria(self, picks):
+        with open(os.path.join(self.runner.output_dir, picks[0]["run"], "summary.json")) as f:
+            camera = json.load(f).get("camera", {})
+        return camera.get("detect_snr", 5.0), camera.get("detect_contrast", 1.0)
+
+    def record(self, modes, picks, ldr, thresholds, criteria, seconds):
+        keys = ("frequency", "participation", "input_power", "friction_power", "efficiency", "peak_rise", "snr",
+                "detectable", "detection_time", "amplitude", "contrast", "total_peak_rise", "damping_power", "mode",
+                "ldr", "power_error", "run")
+        return {"options_file": self.runner.options_file, "band": list(self.band), "duration": self.duration,
+                "common_input_power": self.power, "detect_snr": criteria[0], "detect_contrast": criteria[1],
+                "modes": [{"frequency": f, "participation": p} for f, p in modes],
+                "candidates": [{k: c.get(k) for k in keys} for c in picks],
+                "ldr_frequency": ldr["frequency"], "ldr_gain": ldr["gain"], "thresholds": thresholds,
+                "runs": self.runner.made, "wall_time_s": seconds}

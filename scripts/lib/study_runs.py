@@ -1,0 +1,73 @@
+"""Runs of one scene for a study: each run in its own directory, its overrides recorded,
+a finished run reused when asked again with the same overrides (an interrupted study
+resumes), several at once on the machine's cores.
+
+    runner = Runner(options_file, output_dir, ranks=1, jobs=2)
+    runs = runner.map([("f12454_a1e-08", {"source_frequency": 12454, "source_amplitude": 1e-8}), ...])
+    run.summary  # summary.json as a dict;  run.dir, run.overrides
+
+A failed run raises RunFailed with vibrotherm's own error line.
+"""
+import json
+import os
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import package  # noqa: F401  (scripts/vibrotherm on the path)
+import vibrotherm as vt
+
+
+class RunFailed(RuntimeError):
+    """A run that did not end complete: its directory and the line that says why."""
+
+
+class Run:
+    def __init__(self, name, directory, overrides, summary):
+        self.name, self.dir, self.overrides, self.summary = name, directory, overrides, summary
+
+    def __repr__(self):
+        return "Run(%s)" % self.name
+
+
+class Runner:
+    def __init__(self, options_file, output_dir, ranks=1, jobs=1, log=print, executable=None):
+        self.options_file = os.path.abspath(options_file)
+        self.output_dir = output_dir
+        self.ranks, self.jobs, self.log = ranks, jobs, log
+        self.executable = executable
+        self.seconds = 0.0  # wall time of the runs made (not reused)
+        self.made = 0
+        self._lock = threading.Lock()
+        self._slots = threading.Semaphore(jobs)  # at most `jobs` runs at once, however they are asked for
+
+    def run(self, name, overrides):
+        """One run (or the finished one already there with the same overrides)."""
+        directory = os.path.join(self.output_dir, name)
+        record = os.path.join(directory, "overrides.json")
+        summary_path = os.path.join(directory, "summary.json")
+        if os.path.exists(record) and os.path.exists(summary_path):
+            with open(record) as f, open(summary_path, errors="replace") as g:
+                old, summary = json.load(f), json.load(g)
+            if old == dict(overrides) and summary.get("complete"):
+                return Run(name, directory, overrides, summary)
+        with self._slots:
+            began = time.time()
+            try:
+                summary = vt.run_scene(self.options_file, overrides, directory, ranks=self.ranks, overwrite=True,
+                                       program=self.executable).summary
+            except vt.RunFailed as failed:
+                raise RunFailed("%s (exit %d): %s" % (directory, failed.returncode, failed.error)) from None
+            seconds = time.time() - began
+        with self._lock:
+            self.seconds += seconds
+            self.made += 1
+        with open(record, "w") as f:
+            json.dump(overrides, f, indent=1)
+        self.log("  %s: %.0f s" % (name, seconds))
+        return Run(name, directory, overrides, summary)
+
+    def map(self, named_overrides):
+        """Runs (name, overrides) pairs, `jobs` at a time; the runs in the same order."""
+        with ThreadPoolExecutor(max_workers=self.jobs) as pool:
+            return list(pool.map(lambda pair: self.run(*pair), named_overrides))

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Requirement (issue 38): `scripts/study ldr` answers which excitation makes the defect visible.
+
+A shortened study of options/ldr_delamination.opts (a 2 mm layer over a 30 mm delamination;
+the test time 10 ms, a camera of NETD 0.5 mK so that the threshold falls in reach; the LDR, the
+plate's next mode and two off-resonance frequencies in 5-14 kHz; the threshold at the best one):
+  - study.json holds the keys scripts rely on, every candidate at the common input power (the
+    second run's measured power within 10 % of it);
+  - the LDR is the layer's fundamental: between 0.85 and 0.95 of the clamped beam's f1 (a real
+    rim is not rigid), and it heats the defect more efficiently than any other candidate at the
+    same input power (LDR gain > 1), which is the LDR's promise, not a property of the script;
+  - the threshold is verified by runs the amplitude law did not use (1.25x detects, 0.75x does
+    not) and the law predicts their friction power within 50 % (a clapping layer's p is not
+    constant over a decade of drive);
+  - a sweep over the same band on the same scene heats most within 5 % of the study's LDR;
+  - 2 ranks = serial on the LDR candidate: the chaotic clapping differs in its last bits, the
+    continued mean does not (efficiency and the defect's SNR within 5 %);
+  - a bad band, an empty band and a scene without a crack are refused in one line.
+
+usage: test_ldr_study.py VIBROTHERM SOURCE_DIR MPIEXEC"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
+from checks import Checks, run_scene
+from run_data import read_csv
+
+exe, src, mpiexec = sys.argv[1:4]
+check = Checks("LDR study")
+study = os.path.join(src, "scripts", "study")
+env = dict(os.environ, VIBROTHERM_BUILD_DIR=os.path.dirname(os.path.abspath(exe)))
+scene = os.path.join(src, "options", "ldr_delamination.opts")
+
+
+def refused(args, *words):
+    r = subprocess.run([study, "ldr"] + args + ["--no-build"], capture_output=True, text=True, env=env)
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    check(r.returncode != 0 and len(lines) == 1 and lines[0].startswith("scripts/study:") and
+          all(w in lines[0] for w in words), "%s refused in one line naming %s: %s" % (args, words, r.stderr[-300:]))
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    refused([scene, "--band", "9000,5000"], "--band")
+    refused([scene, "--band", "5000,x"], "--band")
+    refused([scene, "--band", "100,110", "--output", os.path.join(tmp, "empty")], "--band", "no mode")
+    uncracked = os.path.join(tmp, "uncracked.opts")
+    with open(uncracked, "w") as f:
+        f.write("-specimen_width 0.1\n-specimen_height 0.01\n-source_frequency 1e4\n")
+    refused([uncracked], "no crack")
+
+    options = os.path.join(tmp, "ldr_ci.opts")
+    with open(options, "w") as f:
+        f.write("-options_file %s\n-camera_netd 5e-4\n" % scene)
+    out = os.path.join(tmp, "study")
+    r = subprocess.run([study, "ldr", options, "--band", "5000,14000", "--duration", "0.01", "--modes", "2",
+                        "--off", "2", "--thresholds", "1", "--jobs", "2", "--no-build", "--output", out],
+                       capture_output=True, text=True, env=env)
+    print(r.stdout[-2500:])
+    check(r.returncode == 0, "the study ran: %s" % r.stderr[-1500:])
+    if r.returncode == 0:
+        with open(os.path.join(out, "study.json")) as f:
+            s = json.load(f)
+        for key in ("candidates", "ldr_frequency", "ldr_gain", "duration", "thresholds"):
+            check(key in s, "study.json has %s" % key)
+        for c in s["candidates"]:
+            for key in ("frequency", "participation", "input_power", "friction_power", "efficiency", "peak_rise",
+                        "snr", "detectable", "detection_time"):
+                check(key in c, "candidate %.0f Hz has %s" % (c["frequency"], key))
+            check(abs(c["power_error"]) < 0.1, "%.0f Hz at the common power (%+.3f)" % (c["frequency"], c["power_error"]))
+        E, nu, rho, h, L = 70e9, 0.33, 2700.0, 0.002, 0.03
+        f1 = 4.730 ** 2 / (2 * math.pi) * h / L ** 2 * math.sqrt(E / (12 * rho * (1 - nu ** 2)))
+        check(s["ldr_frequency"] and 0.85 < s["ldr_frequency"] / f1 < 0.95,
+              "the LDR %.0f Hz against the clamped beam's %.0f Hz" % (s["ldr_frequency"] or 0, f1))
+        check(s["ldr_gain"] and s["ldr_gain"] > 1, "the LDR heats best at equal power (gain %r)" % s["ldr_gain"])
+        t = s["thresholds"][0] if s["thresholds"] else {}
+        check(t.get("verified") is True, "threshold verified: 1.25x detects, 0.75x does not (%s)" % t)
+        check(t.get("law_error") is not None and t["law_error"] < 0.5, "the amplitude law against the runs it did "
+                                                                        "not use: %r" % t.get("law_error"))
+        for png in ("heating_spectrum.png", "thresholds.png", "best_camera.png"):
+            check(os.path.getsize(os.path.join(out, png)) > 10000, png)
+
+        # A sweep across the band on the same scene heats most at the LDR.
+        sweep = os.path.join(tmp, "sweep")
+        args = ["-options_file", options, "-source_sweep", "9000,13000", "-source_duration", "0.03", "-final_time",
+                "0.03", "-wave_start", "rest", "-camera", "0", "-output_times", "0.03"]
+        if run_scene(check, exe, args, sweep):
+            p = read_csv(os.path.join(sweep, "source_power.csv"))
+            k = max(range(len(p["frequency"])), key=lambda i: p["friction_power"][i])
+            print("sweep: friction peaks at %.0f Hz (the study's LDR: %.0f Hz)" % (p["frequency"][k], s["ldr_frequency"]))
+            check(abs(p["frequency"][k] / s["ldr_frequency"] - 1) < 0.05, "the sweep's heating peak at the LDR")
+
+        # 2 ranks = serial on the LDR candidate (its study run again on 2 ranks).
+        ldr = [c for c in s["candidates"] if c.get("ldr")][0]
+        with open(os.path.join(out, ldr["run"], "overrides.json")) as f:
+            overrides = json.load(f)
+        words = ["-options_file", options]
+        for name, value in overrides.items():
+            words += ["-" + name] + ([] if value is None else [value if isinstance(value, str) else repr(value)])
+        two = os.path.join(tmp, "two_ranks")
+        if run_scene(check, exe, words, two, mpiexec=mpiexec, ranks=2):
+            with open(os.path.join(two, "summary.json"), errors="replace") as f:
+                b = json.load(f)
+            for key, mine in (("thermosonic_efficiency", ldr["efficiency"]), ("camera_peak_snr", ldr["snr"])):
+                check(abs(b[key] / mine - 1) < 0.05, "2 ranks = serial: %s %.4g against %.4g" % (key, b[key], mine))
+check.finish()
