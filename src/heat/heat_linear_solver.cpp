@@ -154,14 +154,14 @@ PetscErrorCode HeatSolver::ConfigureStepSolver(TS ts, KSP ksp) {
   PetscCall(ReadSolverOptions(prefix));
   auto rungs = std::make_unique<RungSolvers>();
   const std::string own(prefix ? prefix : "");
-  rungs->Setup(
+  PetscCall(rungs->Setup(
       K_, [this](double shift, Mat J) { return FillJacobian(shift, J); },
       [this, own](double shift, KSP rung) {
         PetscFunctionBeginUser;
         PetscCall(KSPSetType(rung, KSPPREONLY));  // the step's KSP iterates; a rung applies its PC once
         PetscCall(ConfigurePc(rung, own.c_str(), shift));
         PetscFunctionReturn(0);
-      });
+      }));
   PetscCall(rungs->AttachAsPreconditioner(ksp));
   rungs_[ts] = std::move(rungs);
   PetscFunctionReturn(0);

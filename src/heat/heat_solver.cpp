@@ -86,7 +86,7 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   // are read, and a bad one refused, before any step.
   PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
   PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
-  responses_.Setup(
+  PetscCall(responses_.Setup(
       K_, [this](double shift, Mat J) { return FillJacobian(shift, J); },
       [this](double shift, KSP ksp) {
         PetscFunctionBeginUser;
@@ -95,7 +95,7 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
         PetscCall(ConfigurePc(ksp, "heat_response_", shift));
         PetscCall(KSPSetFromOptions(ksp));
         PetscFunctionReturn(0);
-      });
+      }));
   PetscFunctionReturn(0);
 }
 

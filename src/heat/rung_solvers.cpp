@@ -13,10 +13,13 @@ RungSolvers::~RungSolvers() {
   }
 }
 
-void RungSolvers::Setup(Mat pattern, Assemble assemble, Configure configure) {
+PetscErrorCode RungSolvers::Setup(Mat pattern, Assemble assemble, Configure configure) {
+  PetscFunctionBeginUser;
   pattern_ = pattern;
   assemble_ = std::move(assemble);
   configure_ = std::move(configure);
+  PetscCall(PetscLogEventRegister("HeatRungSetup", KSP_CLASSID, &setup_event_));  // the same event for every instance
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode RungSolvers::Get(double shift, KSP* ksp) {
@@ -34,6 +37,7 @@ PetscErrorCode RungSolvers::Get(double shift, KSP* ksp) {
     PetscCall(MatDestroy(&oldest->J));
     rungs_.erase(oldest);
   }
+  PetscCall(PetscLogEventBegin(setup_event_, 0, 0, 0, 0));
   Rung r{shift, nullptr, nullptr, calls_};
   PetscCall(MatDuplicate(pattern_, MAT_DO_NOT_COPY_VALUES, &r.J));
   PetscCall(MatSetOption(r.J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
@@ -42,6 +46,7 @@ PetscErrorCode RungSolvers::Get(double shift, KSP* ksp) {
   PetscCall(KSPSetOperators(r.ksp, r.J, r.J));
   PetscCall(configure_(shift, r.ksp));
   PetscCall(KSPSetUp(r.ksp));
+  PetscCall(PetscLogEventEnd(setup_event_, 0, 0, 0, 0));
   ++setups_;
   rungs_.push_back(r);
   *ksp = r.ksp;

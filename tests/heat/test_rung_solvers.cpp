@@ -46,7 +46,7 @@ TEST(RungSolvers, OneSolverPerShiftLeastRecentlyUsedDropped) {
   Mat K, M;
   ASSERT_EQ(Laplacian(20, &K, &M), 0);
   heat::RungSolvers rungs;
-  rungs.Setup(
+  ASSERT_EQ(rungs.Setup(
       K,
       [&](double shift, Mat J) {
         PetscFunctionBeginUser;
@@ -61,7 +61,8 @@ TEST(RungSolvers, OneSolverPerShiftLeastRecentlyUsedDropped) {
         PetscCall(KSPGetPC(ksp, &pc));
         PetscCall(PCSetType(pc, PCLU));
         PetscFunctionReturn(0);
-      });
+      }),
+            0);
   KSP a, b, c;
   ASSERT_EQ(rungs.Get(1.0, &a), 0);
   ASSERT_EQ(rungs.Get(1.0 * (1 + 1e-12), &b), 0);

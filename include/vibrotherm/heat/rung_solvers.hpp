@@ -34,8 +34,9 @@ class RungSolvers {
   RungSolvers& operator=(const RungSolvers&) = delete;
   ~RungSolvers();
 
-  /// pattern: a matrix of J's pattern (duplicated per rung, values not copied).
-  void Setup(Mat pattern, Assemble assemble, Configure configure);
+  /// pattern: a matrix of J's pattern (duplicated per rung, values not copied). Each rung's
+  /// assembly and setup is logged as the event HeatRungSetup (-log_view: count and time).
+  PetscErrorCode Setup(Mat pattern, Assemble assemble, Configure configure);
   /// The solver of this shift: a kept one whose shift is within a relative 1e-10 (as the
   /// TS keeps its Jacobian: equal steps differ in their last bits), else a new one. Collective.
   PetscErrorCode Get(double shift, KSP* ksp);
@@ -62,6 +63,7 @@ class RungSolvers {
   KSP selected_ = nullptr;
   long long calls_ = 0;
   PetscInt setups_ = 0;
+  PetscLogEvent setup_event_ = 0;
 };
 
 }  // namespace vibrotherm::heat
