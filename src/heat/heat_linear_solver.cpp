@@ -34,9 +34,9 @@ PetscErrorCode UserPcType(const char* prefix, std::string* type) {
 /// aggressive coarsening (hypre's advice for 3D problems), and a strong threshold of 0.8,
 /// not hypre's 3D advice of 0.5: the heat grids' layers across a crack plane span the whole
 /// box, cells 3 µm by 2.5 mm, and only a high threshold coarsens along them alone. On
-/// block3d's 110055 heat dofs, CG to 1e-8 took 8, 34, 96, 130 iterations at steps of
-/// 1 µs, 0.1 ms, 10 ms, 1 s with 0.5 and 7, 16, 21, 24 with 0.8, at the same cost a
-/// V-cycle (docs/MEASUREMENTS.md). The user's -<prefix>pc_hypre_boomeramg_* win.
+/// block3d's 110055 heat dofs the cooling rungs took 10-15 V-cycles a step to 1e-8 against
+/// 18-45 with 0.5 to 1e-12 (docs/MEASUREMENTS.md "The cooling phase in 3D").
+/// The user's -<prefix>pc_hypre_boomeramg_* win.
 PetscErrorCode DefaultBoomerAmg3D(const char* prefix) {
   PetscFunctionBeginUser;
   PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_strong_threshold", "0.8"));

@@ -25,7 +25,7 @@ with layers graded across the crack plane) with the friction power of its contac
    CG takes Jacobi; a run that forces BoomerAMG on them (-heat_pc_type hypre, which also
    checks that a user's -heat_free_pc_type jacobi is taken without the 3D BoomerAMG
    defaults being flagged as unused) gives the same crack-centre temperatures (1e-6 of
-   the peak: two preconditioners, each to CG's 1e-8; measured 3e-8).
+   the peak: two preconditioners, each to CG's 1e-8).
 
 usage: test_heat_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
