@@ -6,7 +6,6 @@
     best_camera.png       the best candidate's camera frame at its defect's peak: what the camera
                           sees, and the defect's own share of it, the crack drawn
 """
-import json
 import math
 import os
 
@@ -106,30 +105,32 @@ def _crack_lines(summary):
 
 def best_camera(study, output_dir, path):
     """The camera frame (and the defect's share) of the candidate with the largest defect SNR."""
-    import h5py
+    import package  # noqa: F401  (scripts/vibrotherm on the path)
+    import vibrotherm as vt
 
     plt = _figure_module()
     best = max(study["candidates"], key=lambda c: c["snr"] or 0.0)
-    run = os.path.join(output_dir, best["run"])
-    with open(os.path.join(run, "summary.json")) as f:
-        summary = json.load(f)
+    run = vt.load(os.path.join(output_dir, best["run"]))
+    summary = run.summary
     frame = summary.get("camera", {}).get("defect_peak_frame", 0)
-    with h5py.File(os.path.join(run, "camera.h5"), "r") as h5:
-        g = h5["camera"]
-        clean = g["clean_%d" % frame][:]
-        defect = g["defect_%d" % frame][:] if "defect_%d" % frame in g else clean
-        x, y = g["x"][:], g["y"][:]
+    camera = run.camera()
+    clean = camera["clean"].values[frame]
+    defect = camera["defect"].values[frame] if "defect" in camera else clean
+    x, y = camera["x"].values, camera["y"].values
     p = x[1] - x[0] if len(x) > 1 else 1.0
     extent = [1e3 * (x[0] - p / 2), 1e3 * (x[-1] + p / 2), 1e3 * (y[0] - p / 2), 1e3 * (y[-1] + p / 2)]
+    from camera_plot import temperature_unit
+
+    scale, unit = temperature_unit(float(clean.max()))
     fig, axes = plt.subplots(2, 1, figsize=(9, 5.5))
     for ax, values, title in ((axes[0], clean, "what the camera sees (all heat)"),
                               (axes[1], defect, "the defect's own share (its friction heat)")):
-        im = ax.imshow(values, origin="lower", extent=extent, cmap="inferno", aspect="auto")
+        im = ax.imshow(values * scale, origin="lower", extent=extent, cmap="inferno", aspect="auto")
         for x0, y0, x1, y1 in _crack_lines(summary):
             ax.plot([1e3 * x0, 1e3 * x1], [1e3 * y0, 1e3 * y1], color="c", lw=1.5, label="crack")
         ax.set_title(title, fontsize=9)
         ax.set_ylabel("y [mm]")
-        fig.colorbar(im, ax=ax, label="rise [K]", pad=0.01)
+        fig.colorbar(im, ax=ax, label="rise [%s]" % unit, pad=0.01)
     axes[1].set_xlabel("x [mm]")
     fig.suptitle("Best candidate %.0f Hz at %.3g %s in: frame at t = %.3g s, defect SNR %.3g, %s" % (
         best["frequency"], best["input_power"], study.get("power_unit", "W/m"),

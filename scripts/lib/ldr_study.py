@@ -10,7 +10,8 @@
              at the amplitude that puts the common power in, rescaled by the exponent
              measured between its last two runs until within 10 % (a clapping defect takes
              more power than its stuck linearisation: up to 4 more runs);
-4. verdict   per candidate: input and friction power, efficiency, the defect's own peak rise
+4. verdict   per candidate: input and friction power (means over the test: the energy ledger at
+             T over T; the summary's last-periods figures kept as steady_*), efficiency, the defect's own peak rise
              on the camera's face within T, its SNR, contrast against the background heat,
              detectable, detection time; the LDR gain = the LDR's efficiency over the best
              non-LDR candidate's;
@@ -25,8 +26,9 @@ import os
 import time
 from concurrent.futures import ThreadPoolExecutor
 
+import package  # noqa: F401  (scripts/vibrotherm on the path)
+import vibrotherm as vt
 from amplitude_law import PowerLaw, threshold_amplitude
-from study_runs import RunFailed
 
 
 def margin(point, criteria):
@@ -44,26 +46,6 @@ POWER_TOLERANCE = 0.1  # a candidate's measured input power within 10 % of the c
 class StudyError(RuntimeError):
     """A study that cannot run as asked (one line, no traceback)."""
 
-
-def read_options(path):
-    """-name value pairs of an options file (and the files it includes), the last one winning."""
-    values = {}
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if not line.startswith("-"):
-                continue
-            parts = line.split(None, 1)
-            name, value = parts[0][1:], parts[1].strip() if len(parts) > 1 else ""
-            if name == "options_file":
-                include = value if os.path.isabs(value) else value
-                for base in (os.path.dirname(path), os.getcwd()):
-                    if os.path.exists(os.path.join(base, include)):
-                        values.update(read_options(os.path.join(base, include)))
-                        break
-                continue
-            values[name] = value
-    return values
 
 
 def modes_in_band(runner, band, log):
@@ -83,25 +65,51 @@ def modes_in_band(runner, band, log):
 
 
 def candidates(modes, band, n_modes, n_off):
-    """The modes of largest participation, and off-resonance frequencies at the centres of the widest gaps."""
+    """The modes of largest participation, and off-resonance frequencies at the (geometric) centres of
+    the widest gaps between the band's modes and edges, one per gap; when the band has fewer gaps
+    than n_off, the widest halves left are split again (a band with few modes still gets n_off)."""
     chosen = sorted(modes, key=lambda m: -m[1])[:n_modes]
     picks = [{"frequency": f, "participation": p, "mode": True} for f, p in chosen]
-    edges = [band[0]] + [f for f, _ in modes] + [band[1]]
-    gaps = sorted(((math.log(b / a), math.sqrt(a * b)) for a, b in zip(edges, edges[1:]) if b > a * 1.02),
-                  reverse=True)
-    for _, f in gaps[:n_off]:
-        picks.append({"frequency": round(f, 2), "participation": None, "mode": False})
+    edges = [band[0]] + sorted(f for f, _ in modes) + [band[1]]
+    unpicked = sorted(((a, b) for a, b in zip(edges, edges[1:]) if b > a * 1.02), key=lambda g: g[0] / g[1])
+    halves = []  # the two sides of every gap picked so far
+    for _ in range(n_off):
+        if unpicked:
+            a, b = unpicked.pop(0)
+        elif halves:
+            a, b = max(halves, key=lambda g: g[1] / g[0])
+            halves.remove((a, b))
+        else:
+            break
+        middle = math.sqrt(a * b)
+        halves += [(a, middle), (middle, b)]
+        picks.append({"frequency": round(middle, 2), "participation": None, "mode": False})
     return sorted(picks, key=lambda c: c["frequency"])
 
 
 class LdrStudy:
-    def __init__(self, runner, options, band, duration, log=print, n_modes=5, n_off=4, thresholds=3,
+    def __init__(self, runner, options, band, duration, log=print, n_modes=5, n_off=None, thresholds=3,
                  ldr_participation=0.8, power=None):
         self.runner, self.options, self.band, self.duration, self.log = runner, options, band, duration, log
         self.n_modes, self.n_off, self.n_thresholds = n_modes, n_off, thresholds
         self.ldr_participation, self.power = ldr_participation, power
         self.amplitude = float(options.get("source_amplitude", "1e-7"))
         self.points = {}  # frequency -> the runs' figures at every amplitude tried
+        self.camera = self.camera_within(duration, options, log)
+
+    @staticmethod
+    def camera_within(duration, options, log):
+        """The camera's settings for a test of `duration`: the scene's, unless it would take fewer
+        than 10 frames in the test (a 100 fps camera films a 10 ms test once, at its start): then
+        10 frames over the test, each integrating at most half its period (said once)."""
+        fps = float(options.get("camera_fps", "100"))
+        if fps * duration >= 10:
+            return {"camera": None}
+        fps = 10.0 / duration
+        integration = min(float(options.get("camera_integration", "1e-3")), 0.5 / fps)
+        log("camera: %g frames in the test at the scene's %s fps; filmed at %g fps, %g s integration instead" % (
+            float(options.get("camera_fps", "100")) * duration, options.get("camera_fps", "100"), fps, integration))
+        return {"camera": None, "camera_fps": fps, "camera_integration": integration}
 
     # --- runs ---------------------------------------------------------------------------
     def overrides(self, frequency, amplitude):
@@ -109,7 +117,7 @@ class LdrStudy:
         T = self.duration
         return {"source_frequency": frequency, "source_amplitude": amplitude, "source_duration": T,
                 "final_time": T, "output_times": repr(T), "probe_every": 1000, "crack_state_every": 0,
-                "camera": None}
+                **self.camera}
 
     @staticmethod
     def name(frequency, amplitude):
@@ -118,14 +126,21 @@ class LdrStudy:
     def figures(self, run, frequency):
         s = run.summary
         camera = s.get("camera", {})
-        point = {"frequency": frequency, "amplitude": run.overrides["source_amplitude"],
-                 "input_power": s.get("input_power"), "friction_power": s.get("friction_power"),
-                 "damping_power": (s.get("source_power") or [{}])[-1].get("damping_power"),
-                 "efficiency": s.get("thermosonic_efficiency"), "peak_rise": camera.get("defect_peak_rise"),
-                 "total_peak_rise": camera.get("peak_rise"), "snr": s.get("camera_peak_snr"),
-                 "contrast": s.get("camera_defect_contrast"), "detectable": bool(s.get("camera_detectable")),
-                 "detection_time": s.get("camera_detection_time") if s.get("camera_detectable") else None,
-                 "run": os.path.relpath(run.dir, self.runner.output_dir)}
+        # Powers as means over the whole test (the energy ledger at T / T; a continuation books its
+        # continued periods there too), not the summary's last periods: a Q = 1000 plate re-settles
+        # for Q/(pi f) (50 ms at 6 kHz) after the harmonic start's stuck linearisation, and over a
+        # short test its last periods may even give energy back. The camera sees the test's heat.
+        end = vt.load(run.dir).energy().iloc[-1]
+        mean = {key: float(end[column]) / self.duration for key, column in
+                (("input_power", "work_source"), ("friction_power", "dissipated"), ("damping_power", "damped"))}
+        point = dict(mean, frequency=frequency, amplitude=run.overrides["source_amplitude"],
+                     efficiency=mean["friction_power"] / mean["input_power"] if mean["input_power"] > 0 else None,
+                     steady_input_power=s.get("input_power"), steady_efficiency=s.get("thermosonic_efficiency"),
+                     peak_rise=camera.get("defect_peak_rise"), total_peak_rise=camera.get("peak_rise"),
+                     snr=s.get("camera_peak_snr"), contrast=s.get("camera_defect_contrast"),
+                     detectable=bool(s.get("camera_detectable")),
+                     detection_time=s.get("camera_detection_time") if s.get("camera_detectable") else None,
+                     run=os.path.relpath(run.dir, self.runner.output_dir))
         self.points.setdefault(frequency, []).append(point)
         return point
 
@@ -155,11 +170,13 @@ class LdrStudy:
             pairs = [(picks[i]["frequency"], last[i]["amplitude"] * (self.power / last[i]["input_power"]) **
                       (1.0 / exponents[i])) for i in off]
             for i, p in zip(off, self.run_all(pairs)):
-                r = math.log(p["input_power"] / last[i]["input_power"]) / math.log(p["amplitude"] / last[i]["amplitude"])
+                ratio = p["input_power"] / last[i]["input_power"]
+                r = math.log(ratio) / math.log(p["amplitude"] / last[i]["amplitude"]) if ratio > 0 else 2.0
                 exponents[i] = min(max(r, 1.0), 6.0) if math.isfinite(r) else 2.0
                 last[i] = p
         for c, p in zip(picks, last):
-            c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "peak_rise",
+            c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "steady_input_power",
+                                        "steady_efficiency", "peak_rise",
                                         "snr", "contrast", "detectable", "detection_time", "run",
                                         "total_peak_rise", "damping_power")})
             c["power_error"] = p["input_power"] / self.power - 1.0
@@ -212,7 +229,9 @@ class LdrStudy:
         if not modes:
             raise StudyError("--band %g,%g holds no mode of the scene: widen it (the scene's modes: -modes)" % tuple(
                 self.band))
-        picks = candidates(modes, self.band, self.n_modes, self.n_off)
+        # None: 4 off-resonance frequencies, or more so that a band with few modes still has 8 candidates.
+        n_off = self.n_off if self.n_off is not None else max(4, 8 - min(len(modes), self.n_modes))
+        picks = candidates(modes, self.band, self.n_modes, n_off)
         self.log("candidates: " + ", ".join("%.0f Hz%s" % (c["frequency"], " (mode, %.2f)" % c["participation"]
                                                             if c["mode"] else "") for c in picks))
         picks = self.common_power(picks)
@@ -244,7 +263,8 @@ class LdrStudy:
         return camera.get("detect_snr", 5.0), camera.get("detect_contrast", 1.0)
 
     def record(self, modes, picks, ldr, thresholds, criteria, seconds):
-        keys = ("frequency", "participation", "input_power", "friction_power", "efficiency", "peak_rise", "snr",
+        keys = ("frequency", "participation", "input_power", "friction_power", "efficiency", "steady_input_power",
+                "steady_efficiency", "peak_rise", "snr",
                 "detectable", "detection_time", "amplitude", "contrast", "total_peak_rise", "damping_power", "mode",
                 "ldr", "power_error", "run")
         return {"options_file": self.runner.options_file, "band": list(self.band), "duration": self.duration,

@@ -22,6 +22,27 @@ class RunFailed(RuntimeError):
     """A run that did not end complete: its directory and the line that says why."""
 
 
+def read_options(path):
+    """-name value pairs of an options file (and the files it includes), the last one winning."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if not line.startswith("-"):
+                continue
+            parts = line.split(None, 1)
+            name, value = parts[0][1:], parts[1].strip() if len(parts) > 1 else ""
+            if name == "options_file":
+                include = value
+                for base in (os.path.dirname(path), os.getcwd()):
+                    if os.path.exists(os.path.join(base, include)):
+                        values.update(read_options(os.path.join(base, include)))
+                        break
+                continue
+            values[name] = value
+    return values
+
+
 class Run:
     def __init__(self, name, directory, overrides, summary):
         self.name, self.dir, self.overrides, self.summary = name, directory, overrides, summary
@@ -36,6 +57,7 @@ class Runner:
         self.output_dir = output_dir
         self.ranks, self.jobs, self.log = ranks, jobs, log
         self.executable = executable
+        self.scene = read_options(self.options_file)  # a run is reused only for the same scene and overrides
         self.seconds = 0.0  # wall time of the runs made (not reused)
         self.made = 0
         self._lock = threading.Lock()
@@ -44,12 +66,12 @@ class Runner:
     def run(self, name, overrides):
         """One run (or the finished one already there with the same overrides)."""
         directory = os.path.join(self.output_dir, name)
-        record = os.path.join(directory, "overrides.json")
+        record, scene = os.path.join(directory, "overrides.json"), os.path.join(directory, "scene.json")
         summary_path = os.path.join(directory, "summary.json")
-        if os.path.exists(record) and os.path.exists(summary_path):
-            with open(record) as f, open(summary_path, errors="replace") as g:
-                old, summary = json.load(f), json.load(g)
-            if old == dict(overrides) and summary.get("complete"):
+        if all(os.path.exists(p) for p in (record, scene, summary_path)):
+            with open(record) as f, open(scene) as g, open(summary_path, errors="replace") as h:
+                old, old_scene, summary = json.load(f), json.load(g), json.load(h)
+            if old == dict(overrides) and old_scene == self.scene and summary.get("complete"):
                 return Run(name, directory, overrides, summary)
         with self._slots:
             began = time.time()
@@ -64,6 +86,8 @@ class Runner:
             self.made += 1
         with open(record, "w") as f:
             json.dump(overrides, f, indent=1)
+        with open(scene, "w") as f:
+            json.dump(self.scene, f, indent=1)
         self.log("  %s: %.0f s" % (name, seconds))
         return Run(name, directory, overrides, summary)
 

@@ -38,7 +38,7 @@ class Run:
     summary           summary.json as a dict (every key, known or not)
     value(key)        a summary value by dotted key ("camera.peak_rise"), unit(key) its unit
     option(name)      an option's effective value as a string; option_number(name) as a float
-    energy(), probes(), crack_state(), periodic(), modes(), csv(name)   DataFrames with attrs["units"]
+    energy(), probes(), crack_state(), periodic(), source_power(), modes(), csv(name)   DataFrames with attrs["units"]
     fields(grid), field(grid, name), camera(), mode_shapes(), mesh(grid)  xarray objects with units
     """
 
@@ -229,6 +229,11 @@ class Run:
     def periodic(self):
         """periodic.csv: the change at every source-period boundary against 1..4 periods back."""
         return self.csv("periodic.csv")
+
+    def source_power(self):
+        """source_power.csv: per source period the mean powers in and out and the efficiency
+        (a sweep's rows carry its instantaneous frequency)."""
+        return self.csv("source_power.csv")
 
     def modes(self):
         """modes.csv (-modes): frequency [Hz] and defect participation of every mode."""

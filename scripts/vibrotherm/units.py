@@ -36,5 +36,9 @@ def column_units(name, columns, dimension=2):
     table = dict(_TABLES.get(name, {}))
     if name == "energy.csv":
         table = dict({c: energy_unit(dimension) for c in ENERGY_COLUMNS}, t="s", budget_error="1")
+    if name == "source_power.csv":
+        power = "W" if dimension == 3 else "W/m"
+        table = dict({c: power for c in ("input_power", "friction_power", "damping_power", "radiated_power")},
+                     t_start="s", t_end="s", periods="1", frequency="Hz", efficiency="1")  # amplitude: m or Pa
     table.update({c: u for c, u in _COUNTERS.items() if c not in table})
     return {c: table[c] for c in columns if c in table}

@@ -9,7 +9,9 @@
 #include <map>
 #include <stdexcept>
 
+#include "crack_mirror_gmsh.hpp"
 #include "gmsh_support.hpp"
+#include "vibrotherm/mesh/crack_mirror.hpp"
 #include "vibrotherm/mesh/mesh_data.hpp"
 
 namespace vibrotherm::mesh {
@@ -21,6 +23,38 @@ using namespace gmsh_support;
 void set_size_field(const SpecimenGeometry& g, const std::vector<double>& crack_curves) {
   const int points = crack_curves.empty() ? 0 : static_cast<int>(std::max(100.0, 4.0 * g.cracks.front().length / g.h_crack));
   set_graded_size(crack_curves, {g.h_crack, g.h, g.h_crack, g.h_crack + (g.h - g.h_crack) / g.grading, points});
+}
+
+/// Each crack's line (its pieces, when a mirror band cuts it) and the bands' halves, added
+/// to the model; `tools` gets the crack lines first (crack by crack), then the halves.
+struct CrackShapes {
+  std::vector<std::vector<int>> lines;  ///< per crack
+  std::vector<crack_mirror_gmsh::BandShapes> bands;
+};
+CrackShapes AddCracks(const SpecimenGeometry& g, const CrackMirrorPlan& plan, DimTags* tools) {
+  CrackShapes shapes;
+  shapes.lines.resize(g.cracks.size());
+  for (const CrackMirror& band : plan.bands) {
+    shapes.bands.push_back(crack_mirror_gmsh::AddBand(band));
+    shapes.lines[band.crack] = shapes.bands.back().crack_lines;
+  }
+  for (std::size_t i = 0; i < g.cracks.size(); ++i) {
+    if (shapes.lines[i].empty()) {
+      const auto p0 = g.cracks[i].end(0), p1 = g.cracks[i].end(1);
+      const int a = gmsh::model::occ::addPoint(p0[0], p0[1], 0), b = gmsh::model::occ::addPoint(p1[0], p1[1], 0);
+      shapes.lines[i].push_back(gmsh::model::occ::addLine(a, b));
+    }
+    for (int line : shapes.lines[i]) tools->push_back({1, line});
+  }
+  for (const auto& band : shapes.bands) tools->insert(tools->end(), {{2, band.upper}, {2, band.lower}});
+  return shapes;
+}
+
+/// The one surface a tool became in the fragment.
+int SurfaceAfterFragment(const DimTags& produced) {
+  for (const auto& [dim, tag] : produced)
+    if (dim == 2) return tag;
+  throw std::runtime_error("gmsh: a crack's mirror band vanished in the fragment");
 }
 
 /// gmsh's 2D mesher; its own errors (it throws strings) become one line naming the mesh options.
@@ -45,15 +79,12 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
   GmshSession session;
   gmsh::model::add("specimen");
   const int rectangle = gmsh::model::occ::addRectangle(0, 0, 0, g.width, g.height);
-  DimTags cracks;
-  for (const Crack& c : g.cracks) {
-    const auto p0 = c.end(0), p1 = c.end(1);
-    const int a = gmsh::model::occ::addPoint(p0[0], p0[1], 0), b = gmsh::model::occ::addPoint(p1[0], p1[1], 0);
-    cracks.push_back({1, gmsh::model::occ::addLine(a, b)});
-  }
-  // Fragmenting embeds the crack lines in the surface and splits outer edges
-  // where a crack ends on them, and at a transducer patch's ends (a line on the edge).
-  DimTags tools = cracks;
+  // Fragmenting embeds the crack lines (and their mirror bands, crack_mirror.hpp) in the
+  // surface and splits outer edges where a crack ends on them, and at a transducer patch's
+  // ends (a line on the edge).
+  const CrackMirrorPlan plan = PlanCrackMirror(g, g.crack_mirror_width < 0.0 ? DefaultMirrorWidth(g) : g.crack_mirror_width);
+  DimTags tools;
+  const CrackShapes shapes = AddCracks(g, plan, &tools);
   if (g.patch.on) {
     const auto ends = g.patch_ends();
     const int a = gmsh::model::occ::addPoint(ends[0][0], ends[0][1], 0), b = gmsh::model::occ::addPoint(ends[1][0], ends[1][1], 0);
@@ -66,9 +97,14 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
 
   std::vector<std::vector<int>> crack_curves(g.cracks.size());
   std::vector<double> all_crack_curves;
+  std::size_t next = 1;  // produced[0] is the rectangle's
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
-    for (const auto& [dim, tag] : produced[i + 1])
-      if (dim == 1) crack_curves[i].push_back(tag), all_crack_curves.push_back(tag);
+    for (std::size_t k = 0; k < shapes.lines[i].size(); ++k, ++next)
+      for (const auto& [dim, tag] : produced[next])
+        if (dim == 1) crack_curves[i].push_back(tag), all_crack_curves.push_back(tag);
+  for (std::size_t k = 0; k < plan.bands.size(); ++k, next += 2)
+    crack_mirror_gmsh::MirrorOutline(plan.bands[k], SurfaceAfterFragment(produced[next]),
+                                     SurfaceAfterFragment(produced[next + 1]));
 
   set_size_field(g, all_crack_curves);
   gmsh::option::setNumber("Mesh.Algorithm", 6);  // frontal-Delaunay: 8 crashes with embedded cracks
@@ -89,7 +125,10 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
     generate_2d(g);
   }
 
-  return collect_rectangle_mesh(g, crack_curves, "gmsh");
+  MeshData mesh = collect_rectangle_mesh(g, crack_curves, "gmsh");
+  for (const CrackMirror& band : plan.bands) MirrorBandCells(band, &mesh);
+  mesh.notes = plan.why;
+  return mesh;
 }
 
 MeshData read_mesh_file(const std::string& path) {

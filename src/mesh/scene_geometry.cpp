@@ -172,6 +172,10 @@ void SpecimenGeometry::validate() const {
     msg << "-mesh_h_crack (" << h_crack << ") must not exceed -mesh_h (" << h << ")";
     reject(msg.str());
   }
+  if (!std::isfinite(crack_mirror_width)) {
+    msg << "-mesh_crack_mirror must be a half-width in metres (0: none; negative: the default width), got " << crack_mirror_width;
+    reject(msg.str());
+  }
   const double tol = tolerance(*this);
   for (std::size_t i = 0; i < cracks.size(); ++i) {
     const Crack& c = cracks[i];

@@ -228,6 +228,8 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(RunOnRoot(comm, [&] {
     const std::string where = source.from_file ? std::string("-mesh_file ") + source.file : "generated mesh";
     data = source.from_file ? read_mesh_file(source.file) : generate_specimen_mesh(geometry);
+    for (const std::string& note : data.notes)  // rank 0 only: RunOnRoot
+      (void)PetscPrintf(PETSC_COMM_SELF, "vibrotherm: note: -mesh_crack_mirror: %s: its mesh is not mirror-symmetric across it\n", note.c_str());
     check_crack_lines(data, where);
     check_cracks_apart(data, where);
     if (source.from_file) generate_heat = rectangle_geometry(data, &geometry, &ungraded);
@@ -323,7 +325,7 @@ namespace {
 PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
   PetscFunctionBeginUser;
   static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
-                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell",
+                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell", "-mesh_crack_mirror",
                                       "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
                                       "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape", "-crack_tilt",
                                       "-source_patch_edge", "-source_patch_center", "-source_patch_width"};

@@ -1,6 +1,7 @@
 // -specimen_*, -crack_*, -mesh_*, -edge_* options → SpecimenGeometry.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,26 @@ T PerCrack(const std::vector<T>& values, PetscInt i) {
   return values[values.size() == 1 ? 0 : static_cast<std::size_t>(i)];
 }
 
+/// -mesh_crack_mirror off|on|<half-width [m]> → g->crack_mirror_width (0, −1: DefaultMirrorWidth, the width).
+PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g) {
+  PetscFunctionBeginUser;
+  char text[64] = "";
+  PetscBool given = PETSC_FALSE;
+  PetscCall(PetscOptionsString("-mesh_crack_mirror",
+                               "Mesh a band around each crack mirror-symmetric across it (issue 41): off, on (half-width: "
+                               "the distance over which the mesh grades from -mesh_h_crack to -mesh_h) or a half-width [m]",
+                               nullptr, "off", text, sizeof(text), &given));
+  if (!given) PetscFunctionReturn(0);
+  const std::string value = text;
+  char* end = nullptr;
+  const double width = std::strtod(text, &end);
+  const bool number = end != text && *end == '\0' && std::isfinite(width) && width >= 0.0;
+  PetscCheck(value == "off" || value == "on" || number, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-mesh_crack_mirror takes off, on or a half-width >= 0 in metres, got '%s'", text);
+  g->crack_mirror_width = value == "off" ? 0.0 : value == "on" ? -1.0 : width;
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
@@ -144,6 +165,7 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscCall(PetscOptionsReal("-mesh_grading", "Element size growth per metre of distance from a crack", nullptr,
                              g->grading, &g->grading, nullptr));
   PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
+  PetscCall(ReadCrackMirror(PetscOptionsObject, g));
   for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
     PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
   PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &tilts, &shapes, &three_d_given));
@@ -155,6 +177,8 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
              "-specimen_depth must be >= 0 (0: a 2D specimen), got %g", g->depth);
   PetscCheck(g->depth > 0.0 || !three_d_given, comm, PETSC_ERR_USER_INPUT,
              "%s applies to a 3D box only: give -specimen_depth > 0", three_d_given);
+  PetscCheck(!(g->depth > 0.0) || g->crack_mirror_width == 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_crack_mirror applies to a generated 2D specimen only: give -specimen_depth 0 or leave it off");
 
   const PetscInt ncenters = static_cast<PetscInt>(centers.size());
   const PetscInt dim = g->depth > 0.0 ? 3 : 2;

@@ -14,6 +14,9 @@
     (offset text) to collide with a title; the 3D traction loop takes the cell of largest
     W (its slip, tens of pm, not ~1e-12 nm);
   * a 3D -modes run: modes.png says which face the shapes are drawn on;
+  * a free specimen's -modes run (README "Which excitation makes my defect visible?": its
+    rigid-body modes have no strain energy, participation nan): modes.png is drawn, with the
+    modes of largest participation;
   * a 3D run with a periodic continuation (its summary's segments given to the short run):
     periodic.png has a temperature curve though 3D has no crack probes.
 
@@ -138,6 +141,18 @@ def modes_3d(tmp):
           "3D modes.png: %s, %r" % ([ax.get_title() for ax in shapes], fig._suptitle and fig._suptitle.get_text()))
 
 
+def modes_free(tmp):
+    free = dict(coarse, modes=True, modes_n=5, modes_target_frequency=1000, edge_top="free", edge_bottom="free",
+                edge_left="free", edge_right="free")
+    run = vt.run_scene(paper, free, os.path.join(tmp, "modes_free"), program=program)
+    participation = run.table("modes.csv")["participation"]
+    check(np.isnan(participation).any(), "a free specimen's rigid-body modes: participation %s" % participation)
+    fig = plot.plot_modes(run)
+    shapes = [ax for ax in fig.axes if ax.get_title().startswith("mode ")]
+    check(len(shapes) == 3 and all("participation nan" not in ax.get_title() for ax in shapes),
+          "free specimen's modes.png: %s" % [ax.get_title() for ax in shapes])
+
+
 def guarded(function, *args):
     """A plot that raises is a failed check (the others still run)."""
     try:
@@ -155,4 +170,5 @@ with tempfile.TemporaryDirectory() as tmp:
         guarded(function, box)
     guarded(periodic_3d, tmp, box)
     guarded(modes_3d, tmp)
+    guarded(modes_free, tmp)
 check.finish()

@@ -23,7 +23,7 @@
    crack reaching outside (a through-thickness crack, -crack_width = -specimen_depth centred,
    is accepted, but not one off-centre or reaching the x-y outline), a crack under 2 cells
    along an extent, an elliptical crack through the thickness or an unknown -crack_shape,
-   what 3D cannot do yet (thermoelastic heating), the 3D-only options (-heat_bc_front,
+   what 3D cannot do yet (thermoelastic heating, -mesh_crack_mirror), the 3D-only options (-heat_bc_front,
    -crack_shape) on a 2D specimen.
 
 usage: test_block3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
@@ -167,6 +167,7 @@ bad = [
     (["-crack_shape", "circle"], "-crack_shape"),
     (["-wave_lts", "on"], "-wave_lts"),
     (["-specimen_depth", "0", "-crack_center", "0.01,0.01"], "-crack_width"),  # 2D: -crack_width is 3D only
+    (["-mesh_crack_mirror", "on"], "-mesh_crack_mirror"),  # the 2D mesher's mirror band (issue 41)
 
 ]
 with tempfile.TemporaryDirectory() as tmp:

@@ -7,7 +7,7 @@ continuum temperature of the friction energy at every wave step (crack_state.csv
 cumulative energy per cell differenced per wave step, a line source along the
 crack, exact in space: scripts/lib/crack_sawtooth.py, line_source.py), and the
 period means within 0.5 %. The friction heat arrives in pulses of about 0.5 µs, as
-long as a heat step: before the near field (README "The temperature at the crack")
+long as a heat step: before the near field (docs/MEASUREMENTS.md "The temperature at the crack")
 the error was 36 % of the mean at the pulses. The other crack probes (ξ = 0.25,
 0.75) are held to the same bounds; the wave-step record holds the energy the run
 dissipated.

@@ -88,6 +88,8 @@ ALLOWED = {
     "-specimen_depth": {"0"},
     # Abrupt switch-on; uniform element size.
     "-source_ramp_cycles": {"0"}, "-mesh_grading": {"0"}, "-heat_mesh_grading": {"0"},
+    # A mirror band of half-width 0 is none (-mesh_crack_mirror off).
+    "-mesh_crack_mirror": {"0"},
     # Booleans: 0 is false; a bare flag ("") is true.
     "-mesh_only": {"0", ""}, "-modes": {"0", ""}, "-allow_unknown": {"0", ""}, "-heat_lumped_mass": {"0", ""},
     "-heat_near_field": {"0", ""},

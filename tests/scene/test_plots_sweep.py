@@ -51,14 +51,15 @@ def plot(out, expected, skipped):
 with tempfile.TemporaryDirectory() as tmp:
     short = os.path.join(tmp, "short")
     run(paper + coarse + ["-final_time", "2e-4"], short)
-    plot(short, ["traction_loop", "crack_temperature", "energy_budget", "crack_spacetime"],
+    plot(short, ["traction_loop", "crack_temperature", "energy_budget", "crack_spacetime", "source_power"],
          ["temperature_maps", "modes", "crack_maps"])
 
     two = os.path.join(tmp, "two")
     run(paper + ["-mesh_file", os.path.join(src, "meshes", "plate_two_cracks.msh"), "-wave_degree",
                  "1", "-final_time", "1e-4", "-source_duration", "1e-4", "-output_times", "5e-5,1e-4",
                  "-crack_probe_crack", "2"], two)
-    plot(two, ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget", "crack_spacetime"],
+    plot(two, ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget", "crack_spacetime",
+               "source_power"],
          ["modes", "crack_maps"])
     loader = importlib.machinery.SourceFileLoader("plot_script", plot_script)
     module = importlib.util.module_from_spec(importlib.util.spec_from_loader("plot_script", loader))
@@ -96,12 +97,12 @@ with tempfile.TemporaryDirectory() as tmp:
     modes = os.path.join(tmp, "modes")
     run(paper + coarse + ["-modes", "-modes_n", "4"], modes)
     plot(modes, ["modes"], ["traction_loop", "crack_temperature", "temperature_maps", "energy_budget",
-                            "crack_spacetime", "crack_maps"])
+                            "crack_spacetime", "crack_maps", "source_power"])
 
     box = os.path.join(tmp, "box")
     run(["-options_file", os.path.join(src, "options", "block3d_small.opts"), "-crack_shape", "ellipse",
          "-output_times", "2e-5"], box)
-    plot(box, ["traction_loop", "energy_budget", "crack_maps"],
+    plot(box, ["traction_loop", "energy_budget", "crack_maps", "source_power"],
          ["crack_temperature", "temperature_maps", "crack_spacetime", "modes"])
 
     sweep = os.path.join(tmp, "sweep")

@@ -25,6 +25,8 @@ struct MeshData {
   /// Crack edges, tag = crack index (0-based).
   std::vector<MeshEdge> crack_edges;
   std::vector<std::string> crack_names;
+  /// What the generator could not do as asked (a crack without its mirror-symmetric layers, and why).
+  std::vector<std::string> notes;
 
   int vertex_count() const { return static_cast<int>(coords.size() / 2); }
   int cell_count() const { return static_cast<int>(cells.size() / corners); }

@@ -89,6 +89,9 @@ struct SpecimenGeometry {
   double h_crack = 5e-4;          ///< -mesh_h_crack: element size along cracks
   double grading = 0.3;           ///< -mesh_grading: size growth per unit distance from a crack
   bool quads = true;              ///< -mesh_cell quad|tri
+  /// -mesh_crack_mirror: half-width [m] of the band around each crack meshed mirror-symmetric
+  /// across it (crack_mirror.hpp; 0, the default: none; negative: DefaultMirrorWidth)
+  double crack_mirror_width = 0.0;
   std::array<EdgeKind, 4> edges = {EdgeKind::Absorbing, EdgeKind::Absorbing, EdgeKind::Source,
                                    EdgeKind::Absorbing};  ///< by Side
   double depth = 0.0;             ///< -specimen_depth: > 0 makes the specimen a 3D box

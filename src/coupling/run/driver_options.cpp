@@ -105,7 +105,7 @@ PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
                             &o->energy_every, nullptr));
   PetscCall(PetscOptionsInt("-probe_every", "Steps between rows of probes.csv", nullptr, o->probe_every,
                             &o->probe_every, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-probe_points", "Probe points x1,y1,x2,y2,... [m]",
+  PetscCall(OptionsRealList(PetscOptionsObject, "-probe_points", "Probe points x1,y1,x2,y2,... [m] (3D: x1,y1,z1,...)",
                             &o->probe_points, nullptr));
   PetscCall(OptionsRealList(PetscOptionsObject, "-crack_probe", "Crack probes: fractions of the crack length (0.5: centre)",
                             &o->crack_probes, nullptr));
