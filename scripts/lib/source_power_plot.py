@@ -22,8 +22,10 @@ def figure(run):
         raise Skip("source_power.csv has no whole source period")
     unit = table.attrs["units"].get("input_power", "W/m")
     sweep = table["frequency"].nunique() > 1  # a sweep's rows carry its instantaneous frequency
-    x = table["frequency"].to_numpy() / 1e3 if sweep else 1e3 * 0.5 * (table["t_start"] + table["t_end"]).to_numpy()
-    label = "instantaneous drive frequency [kHz]" if sweep else "t [ms] (the middle of each source period)"
+    middle = 0.5 * (table["t_start"] + table["t_end"]).to_numpy()
+    scale, t_unit = (1e6, "µs") if middle.max() < 1e-4 else (1e3, "ms")
+    x = table["frequency"].to_numpy() / 1e3 if sweep else scale * middle
+    label = "instantaneous drive frequency [kHz]" if sweep else "t [%s] (the middle of each source period)" % t_unit
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
     for column, name, style in (("input_power", "put in by the source", "C0-"),
                                 ("friction_power", "the crack's friction (its heat)", "C3-"),

@@ -215,36 +215,48 @@ PetscErrorCode ModalAnalysis::DefectParticipation(Vec phi, const std::vector<boo
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDistance& crack_distance) {
+namespace {
+
+/// SLEPc's generalized eigensolver about the target frequency: shift-invert, MUMPS factoring
+/// K − σM (its memory checked first), -modes_ options applied. Collective.
+PetscErrorCode CreateShiftInvertSolver(Mat K, Mat M, const ModesOptions& options, EPS* eps) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)K_);
-  PetscLogEvent solve_event;
-  PetscCall(PetscLogEventRegister("ModesSolve", EPS_CLASSID, &solve_event));
-  EPS eps;
   ST st;
   KSP ksp;
   PC pc;
-  PetscCall(EPSCreate(comm, &eps));
-  PetscCall(EPSSetOptionsPrefix(eps, "modes_"));
-  PetscCall(EPSSetOperators(eps, K_, M_));
-  PetscCall(EPSSetProblemType(eps, EPS_GHEP));
-  PetscCall(EPSSetDimensions(eps, options.n, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSCreate(PetscObjectComm((PetscObject)K), eps));
+  PetscCall(EPSSetOptionsPrefix(*eps, "modes_"));
+  PetscCall(EPSSetOperators(*eps, K, M));
+  PetscCall(EPSSetProblemType(*eps, EPS_GHEP));
+  PetscCall(EPSSetDimensions(*eps, options.n, PETSC_DEFAULT, PETSC_DEFAULT));
   const double omega_target = 2.0 * M_PI * options.target_frequency;
-  PetscCall(EPSSetTarget(eps, omega_target * omega_target));
-  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
-  PetscCall(EPSSetTolerances(eps, 1e-10, PETSC_DEFAULT));
-  PetscCall(EPSGetST(eps, &st));
+  PetscCall(EPSSetTarget(*eps, omega_target * omega_target));
+  PetscCall(EPSSetWhichEigenpairs(*eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTolerances(*eps, 1e-10, PETSC_DEFAULT));
+  PetscCall(EPSGetST(*eps, &st));
   PetscCall(STSetType(st, STSINVERT));
   PetscCall(STGetKSP(st, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  PetscCall(EPSSetFromOptions(eps));
+  PetscCall(EPSSetFromOptions(*eps));
   const char* factor_prefix;
   PetscCall(KSPGetOptionsPrefix(ksp, &factor_prefix));
-  PetscCall(wave::CheckFactorMemory(K_, factor_prefix,
+  PetscCall(wave::CheckFactorMemory(K, factor_prefix,
                                     {"Modes", "-modes_memory_limit", options.memory_limit_gb, options.force}));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ModalAnalysis::Solve(const ModesOptions& options, const CrackDistance& crack_distance) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)K_);
+  PetscLogEvent solve_event;
+  PetscCall(PetscLogEventRegister("ModesSolve", EPS_CLASSID, &solve_event));
+  EPS eps;
+  PetscCall(CreateShiftInvertSolver(K_, M_, options, &eps));
   PetscCall(PetscPrintf(comm, "Modes: shift-invert about %g Hz (MUMPS factors the stiffness), %" PetscInt_FMT
                               " modes sought\n", options.target_frequency, options.n));
   PetscCall(PetscLogEventBegin(solve_event, 0, 0, 0, 0));

@@ -125,7 +125,7 @@ expect_error "-source_duration must be > 0" $box $crack -source_duration 0
 expect_error "-source_ramp_cycles 1e+06: a switch-on longer than the whole excitation" $box $crack -source_ramp_cycles 1e6
 expect_error "Hz: 0.001 cycles in -source_duration 0.001 s; at least one whole cycle" $box $crack -source_frequency 1 -final_time 1e-3
 expect_error "is longer than the run (0.001 s, -final_time)" $box $crack -source_frequency 1 -source_duration 2 \
-  -final_time 1e-3
+  -source_ramp_cycles 0.5 -final_time 1e-3
 expect_error "-source_amplitude 0: nothing drives the waves" $box $crack -source_amplitude 0
 expect_error "-camera_netd must be > 0" $box $crack -camera_netd 0
 expect_error "-camera_face inside: unknown face" $box $crack -mesh_only -specimen_depth 0.01 -camera_face inside

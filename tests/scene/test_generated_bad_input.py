@@ -68,7 +68,7 @@ ALLOWED = {
     # Angles in degrees: any finite angle is a direction.
     "-crack_angle": {"-1", "0"},
     # Initial approach: "> 0: pre-closed, < 0: gap" -- any sign.
-    "-crack_a0": {"-1", "0"}, "-crack_a0_max": {"-1", "0"}, "-contact_a0": {"-1", "0"},
+    "-crack_a0": {"-1", "0"}, "-crack_a0_max": {"-1", "0"},
     # A signed amplitude (the phase); 0 drives nothing (refused, issue 43).
     "-source_amplitude": {"-1"},
     # ">= 0" in -help: friction-free, adiabatic edges, no crack power, no dissipation-quiet test.

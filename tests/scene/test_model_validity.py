@@ -8,7 +8,8 @@ refused naming the option, instead of ending "complete" with absurd numbers.
   output and in summary.json "warnings".
 - 1 GHz on a millimetre mesh: refused naming -source_frequency and the mesh (before:
   "lower -wave_cfl").
-- 1 Hz: runs (before: refused on derived heat-mesh sizes the user never set).
+- 1 Hz: runs (before: refused on derived heat-mesh sizes the user never set), given a whole
+  cycle of excitation and a heat step within the run.
 - A temperature rise beyond the constant-property range (-physics heat with a large
   crack power: ~100 K): a warning, once, and in summary.json.
 
@@ -51,7 +52,10 @@ with tempfile.TemporaryDirectory() as tmp:
     refused("1 GHz", r, out, "-source_frequency", "wavelength", "-mesh_h")
     check("-wave_cfl" not in r.stderr, "1 GHz: not answered with -wave_cfl")
 
-    r, summary, _ = run(tmp, "one_hz", ["-source_frequency", "1"])
+    # A whole cycle of excitation, a ramp that fits it and a heat step within the run (issue 43:
+    # anything less is refused as useless); 5 us of it simulated.
+    r, summary, _ = run(tmp, "one_hz", ["-source_frequency", "1", "-source_duration", "1", "-source_ramp_cycles", "0.5",
+                                        "-couple_dt", "1e-6"])
     check(r.returncode == 0 and summary.get("complete") is True, "1 Hz runs (%s)" % r.stderr[-300:])
 
     r, summary, _ = run(tmp, "hot", ["-physics", "heat", "-heat_crack_power", "1e8", "-final_time", "1e-3"])
