@@ -30,14 +30,16 @@ PetscErrorCode UserPcType(const char* prefix, std::string* type) {
   PetscFunctionReturn(0);
 }
 
-/// BoomerAMG for a 3D heat mesh (hypre's advice for 3D problems): strong threshold
-/// 0.5, HMIS coarsening, ext+i interpolation, one level of aggressive coarsening.
-/// On block3d_small's free phase (21735 dofs, 486 steps): 9.8 s against 59 s with
-/// hypre's defaults, 14 CG iterations a solve instead of 20, the same temperatures
-/// (heat content to 1e-13). The user's -<prefix>pc_hypre_boomeramg_* win.
+/// BoomerAMG for a 3D heat mesh: HMIS coarsening, ext+i interpolation, one level of
+/// aggressive coarsening (hypre's advice for 3D problems), and a strong threshold of 0.8,
+/// not hypre's 3D advice of 0.5: the heat grids' layers across a crack plane span the whole
+/// box, cells 3 µm by 2.5 mm, and only a high threshold coarsens along them alone. On
+/// block3d's 110055 heat dofs the cooling rungs took 10-15 V-cycles a step to 1e-8 against
+/// 18-45 with 0.5 to 1e-12 (docs/MEASUREMENTS.md "The cooling phase in 3D").
+/// The user's -<prefix>pc_hypre_boomeramg_* win.
 PetscErrorCode DefaultBoomerAmg3D(const char* prefix) {
   PetscFunctionBeginUser;
-  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_strong_threshold", "0.5"));
+  PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_strong_threshold", "0.8"));
   PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_coarsen_type", "HMIS"));
   PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_interp_type", "ext+i"));
   PetscCall(DefaultOption(prefix, "-pc_hypre_boomeramg_agg_nl", "1"));
@@ -62,28 +64,47 @@ PetscErrorCode HeatSolver::StiffnessToMassRatio(double shift, double* ratio) con
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double stiffness_ratio) {
+PetscErrorCode HeatSolver::Iterative(const char* prefix, bool* iterative) const {
   PetscFunctionBeginUser;
-  // The Jacobian (K + shift M, sink rows and columns replaced by the identity)
-  // is SPD. Below kDirectSolveDofs: Cholesky (nested dissection, on every rank),
-  // factored once for a fixed step (0.7 ms a solve at 6e3 dofs against 2 ms for
-  // CG + BoomerAMG or MUMPS on 2 ranks, measured) and numerically refactored when
-  // a new step changes the shift (the free phase's step ladder: once per rung;
-  // with error-controlled steps once per step, still 1.5 s against 4.0 s with CG +
-  // BoomerAMG at rtol 1e-12, same temperatures). Larger:
-  // CG + hypre BoomerAMG (CG + GAMG diverged once the step grew, PETSC-NOTES.md).
-  // 3D factors fill far more: Cholesky took 8.8 s against CG + BoomerAMG's 1.9 s
-  // for 91 steps at 2.2e4 dofs (a 3D heat box), hence a lower threshold there.
-  PC pc;
-  PetscCall(KSPGetPC(ksp, &pc));
-  const char* prefix;
-  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
   std::string user_pc;
   PetscCall(UserPcType(prefix, &user_pc));
   // A preconditioner the user names is iterated to the tolerance, never applied once.
   const bool factor = user_pc.empty() || user_pc == PCREDUNDANT || user_pc == PCCHOLESKY || user_pc == PCLU;
-  if (direct && factor) {
+  *iterative = !(direct_solve() && factor);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ConfigureKsp(KSP ksp) const {
+  PetscFunctionBeginUser;
+  const char* prefix;
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  bool iterative;
+  PetscCall(Iterative(prefix, &iterative));
+  if (!iterative) {
     PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(KSPSetType(ksp, KSPCG));
+  PetscCall(KSPSetTolerances(ksp, kRelativeTolerance, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ConfigurePc(KSP ksp, const char* prefix, double shift) const {
+  PetscFunctionBeginUser;
+  PC pc;
+  PetscCall(KSPGetPC(ksp, &pc));
+  // The Jacobian (K + shift M, sink rows and columns replaced by the identity)
+  // is SPD. Below kDirectSolveDofs: Cholesky (nested dissection, on every rank),
+  // 0.7 ms a solve at 6e3 dofs against 2 ms for CG + BoomerAMG or MUMPS on 2 ranks
+  // (measured), set up once per rung (rung_solvers.hpp). Larger: CG + hypre BoomerAMG
+  // (CG + GAMG diverged once the step grew, PETSC-NOTES.md). 3D factors fill far more:
+  // Cholesky took 8.8 s against CG + BoomerAMG's 1.9 s for 91 steps at 2.2e4 dofs (a 3D
+  // heat box), hence a lower threshold there; MUMPS's Cholesky of block3d's 110055 heat
+  // dofs took 50-70 s a rung (docs/MEASUREMENTS.md).
+  PetscCall(PCSetOptionsPrefix(pc, prefix));
+  bool iterative;
+  PetscCall(Iterative(prefix, &iterative));
+  if (!iterative) {
     PetscCall(PCSetType(pc, PCREDUNDANT));
     KSP inner;
     PC factor;
@@ -91,19 +112,58 @@ PetscErrorCode HeatSolver::ConfigureLinearSolver(KSP ksp, bool direct, double st
     PetscCall(KSPGetPC(inner, &factor));
     PetscCall(PCSetType(factor, PCCHOLESKY));
     PetscCall(PCFactorSetMatOrderingType(factor, MATORDERINGND));
+    PetscCall(PCSetFromOptions(pc));
     PetscFunctionReturn(0);
   }
-  PetscCall(KSPSetType(ksp, KSPCG));
-  PetscCall(KSPSetTolerances(ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
-  // A fixed step so short that the mass dominates every row (the coupled steps:
-  // fractions of a source period) needs no multigrid: Jacobi's CG converges in a few
-  // dozen products, each ~7× cheaper than a V-cycle (block3d, ratio below).
-  const bool jacobi = stiffness_ratio >= 0.0 && stiffness_ratio <= kJacobiStiffnessRatio;
+  // A step so short that the mass dominates every row (the coupled steps: fractions of a
+  // source period; the free phase's first rungs) needs no multigrid: Jacobi's CG converges
+  // in a few dozen products, each ~7x cheaper than a V-cycle (block3d).
+  double ratio = -1.0;
+  if (shift > 0.0) PetscCall(StiffnessToMassRatio(shift, &ratio));
+  const bool jacobi = ratio >= 0.0 && ratio <= kJacobiStiffnessRatio;
   PetscCall(PCSetType(pc, jacobi ? PCJACOBI : PCHYPRE));
-  PetscCall(PetscInfo(ksp, "%s: stiffness-to-mass ratio %g: %s\n", prefix ? prefix : "", stiffness_ratio,
+  PetscCall(PetscInfo(ksp, "%s: stiffness-to-mass ratio %g: %s\n", prefix ? prefix : "", ratio,
                       jacobi ? "Jacobi" : "BoomerAMG"));
-  const bool hypre = user_pc.empty() ? !jacobi : user_pc == PCHYPRE;
-  if (hypre && space_.dim() == 3) PetscCall(DefaultBoomerAmg3D(prefix));
+  PetscCall(PCSetFromOptions(pc));  // the user's -<prefix>pc_type wins
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ReadSolverOptions(const char* prefix) const {
+  PetscFunctionBeginUser;
+  // The rungs' solvers are made by the steps; their options are read now (a bad value is
+  // refused before any step, none is reported unused): a stand-in of the type that reads most.
+  std::string user_pc;
+  PetscCall(UserPcType(prefix, &user_pc));
+  bool iterative;
+  PetscCall(Iterative(prefix, &iterative));
+  if (iterative && space_.dim() == 3 && (user_pc.empty() || user_pc == PCHYPRE)) PetscCall(DefaultBoomerAmg3D(prefix));
+  PC pc;
+  PetscCall(PCCreate(PetscObjectComm((PetscObject)dm_), &pc));
+  PetscCall(PCSetOptionsPrefix(pc, prefix));
+  PetscCall(PCSetType(pc, iterative ? PCHYPRE : PCREDUNDANT));
+  PetscCall(PCSetFromOptions(pc));
+  PetscCall(PCDestroy(&pc));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::ConfigureStepSolver(TS ts, KSP ksp) {
+  PetscFunctionBeginUser;
+  const char* prefix;
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCall(ConfigureKsp(ksp));
+  PetscCall(ReadSolverOptions(prefix));
+  auto rungs = std::make_unique<RungSolvers>();
+  const std::string own(prefix ? prefix : "");
+  PetscCall(rungs->Setup(
+      K_, [this](double shift, Mat J) { return FillJacobian(shift, J); },
+      [this, own](double shift, KSP rung) {
+        PetscFunctionBeginUser;
+        PetscCall(KSPSetType(rung, KSPPREONLY));  // the step's KSP iterates; a rung applies its PC once
+        PetscCall(ConfigurePc(rung, own.c_str(), shift));
+        PetscFunctionReturn(0);
+      }));
+  PetscCall(rungs->AttachAsPreconditioner(ksp));
+  rungs_[ts] = std::move(rungs);
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/fe/cell_matrix.hpp"
 #include "vibrotherm/heat/heat_element.hpp"
 #include "vibrotherm/heat/step_ladder.hpp"
 
@@ -53,10 +54,6 @@ PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o) {
 HeatSolver::~HeatSolver() {
   (void)TSDestroy(&coupled_ts_);
   (void)TSDestroy(&free_ts_);
-  for (ResponseFactor& f : response_factors_) {
-    (void)KSPDestroy(&f.ksp);
-    (void)MatDestroy(&f.J);
-  }
   for (Mat* m : {&M_, &K_}) (void)MatDestroy(m);
   for (Vec* v : {&theta_, &theta_prev_, &Q_, &G_, &H_, &work_, &residual_, &mix_}) (void)VecDestroy(v);
   for (Vec* v : {&partial_, &partial_load_, &partial_step_}) (void)VecDestroy(v);
@@ -83,12 +80,22 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   // Euler is L-stable and its balance closes exactly (Account). The step is fixed:
   // the matrix is factored once.
   if (options.coupled_step > 0.0) PetscCall(StiffnessToMassRatio(1.0 / options.coupled_step, &coupled_stiffness_ratio_));
-  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, coupled_stiffness_ratio_, &coupled_ts_));
+  PetscCall(CreateTS("heat_", TSBEULER, TSADAPTBASIC, &coupled_ts_));
   ts_ = coupled_ts_;
   // The free phase's TS now too, not when the waves stop: its options (-heat_free_*)
   // are read, and a bad one refused, before any step.
   PetscCall(RegisterStepLadder());  // geometric steps, one factorisation per rung (step_ladder.hpp)
-  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, -1.0, &free_ts_));
+  PetscCall(CreateTS("heat_free_", TSCN, kStepLadderAdapt, &free_ts_));
+  PetscCall(responses_.Setup(
+      K_, [this](double shift, Mat J) { return FillJacobian(shift, J); },
+      [this](double shift, KSP ksp) {
+        PetscFunctionBeginUser;
+        PetscCall(KSPSetOptionsPrefix(ksp, "heat_response_"));
+        PetscCall(ConfigureKsp(ksp));
+        PetscCall(ConfigurePc(ksp, "heat_response_", shift));
+        PetscCall(KSPSetFromOptions(ksp));
+        PetscFunctionReturn(0);
+      }));
   PetscFunctionReturn(0);
 }
 
@@ -102,7 +109,7 @@ PetscErrorCode HeatSolver::AssembleMassAndConductivity(bool lumped) {
              PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
              "-heat_lumped_mass: row-sum lumping of P2 tetrahedra gives negative capacities; use the "
              "consistent mass or degree 1");
-  PetscCall(DMCreateMatrix(dm_, &M_));
+  PetscCall(fe::CreateCellMatrix(space_, {}, &M_));  // not DMPlexPreallocate: 1 ms a hexahedron (cell_matrix.hpp)
   PetscCall(MatDuplicate(M_, MAT_DO_NOT_COPY_VALUES, &K_));  // the same pattern: preallocated once
   const int Nb = space_.nodes_per_cell();
   std::vector<PetscScalar> Me(Nb * Nb), Ke(Nb * Nb);
@@ -140,8 +147,7 @@ PetscErrorCode HeatSolver::AddConvectiveFilm() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double stiffness_ratio,
-                                    TS* ts) {
+PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts) {
   PetscFunctionBeginUser;
   Mat J;  // the pattern of the assembled K (and M, assembled from the same closures)
   PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &J));
@@ -169,7 +175,7 @@ PetscErrorCode HeatSolver::CreateTS(const char* prefix, TSType type, TSAdaptType
   PetscCall(TSGetSNES(*ts, &snes));
   PetscCall(SNESSetType(snes, SNESKSPONLY));  // linear: one linear solve per stage
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(ConfigureLinearSolver(ksp, direct_solve(), stiffness_ratio));
+  PetscCall(ConfigureStepSolver(*ts, ksp));
   PetscCall(TSSetFromOptions(*ts));
   PetscFunctionReturn(0);
 }
@@ -220,7 +226,7 @@ PetscErrorCode HeatSolver::IFunction(TS, PetscReal, Vec theta, Vec theta_dot, Ve
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::IJacobian(TS, PetscReal, Vec, Vec, PetscReal shift, Mat J, Mat, void* ctx) {
+PetscErrorCode HeatSolver::IJacobian(TS ts, PetscReal, Vec, Vec, PetscReal shift, Mat J, Mat, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<HeatSolver*>(ctx);
   // Linear problem: J depends on the shift alone. Leaving J untouched when the
@@ -228,19 +234,26 @@ PetscErrorCode HeatSolver::IJacobian(TS, PetscReal, Vec, Vec, PetscReal shift, M
   // Equal steps differ in their last bits (t_next − t): a relative 1e-10 change
   // of the shift changes the one linear solve by as little, so J is kept.
   auto known = self->last_shift_.find(J);
-  if (known != self->last_shift_.end() && std::abs(known->second - shift) <= 1e-10 * std::abs(shift))
-    PetscFunctionReturn(0);
-  PetscCall(AssembleJacobian(self, shift, J));
+  const bool kept = known != self->last_shift_.end() && std::abs(known->second - shift) <= 1e-10 * std::abs(shift);
+  if (!kept) PetscCall(AssembleJacobian(self, shift, J));
+  // The step's solver is that of the shift J holds (set up once per step length: rung_solvers.hpp).
+  PetscCall(self->rungs_.at(ts)->Select(self->last_shift_.at(J)));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode HeatSolver::AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J) {
   PetscFunctionBeginUser;
   self->last_shift_[J] = shift;
-  PetscCall(MatCopy(self->K_, J, SAME_NONZERO_PATTERN));
-  PetscCall(MatAXPY(J, shift, self->M_, SAME_NONZERO_PATTERN));
+  PetscCall(self->FillJacobian(shift, J));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::FillJacobian(double shift, Mat J) const {
+  PetscFunctionBeginUser;
+  PetscCall(MatCopy(K_, J, SAME_NONZERO_PATTERN));
+  PetscCall(MatAXPY(J, shift, M_, SAME_NONZERO_PATTERN));
   // Rows and columns: θ_sink is 0 in every iterate, so dropping its columns changes nothing but symmetry.
-  const auto& rows = self->boundary_.sink_rows;
+  const auto& rows = boundary_.sink_rows;
   PetscCall(MatZeroRowsColumns(J, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, nullptr, nullptr));
   PetscFunctionReturn(0);
 }

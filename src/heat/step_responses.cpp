@@ -35,30 +35,7 @@ PetscErrorCode HeatSolver::ProbeFunctional(std::size_t probe, Vec phi) const {
 
 PetscErrorCode HeatSolver::ResponseSolver(double dt, double w, KSP* ksp) {
   PetscFunctionBeginUser;
-  const double shift = 1.0 / (w * dt);
-  for (const ResponseFactor& f : response_factors_)
-    if (std::abs(shift - f.shift) <= 1e-10 * shift) {  // as the TS keeps its Jacobian
-      *ksp = f.ksp;
-      PetscFunctionReturn(0);
-    }
-  if (response_factors_.size() == 4) {  // a new step length: the oldest factor goes
-    PetscCall(KSPDestroy(&response_factors_.front().ksp));
-    PetscCall(MatDestroy(&response_factors_.front().J));
-    response_factors_.erase(response_factors_.begin());
-  }
-  ResponseFactor f{shift, nullptr, nullptr};
-  PetscCall(MatDuplicate(K_, MAT_DO_NOT_COPY_VALUES, &f.J));
-  PetscCall(MatSetOption(f.J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-  PetscCall(AssembleJacobian(this, shift, f.J));
-  PetscCall(KSPCreate(PetscObjectComm((PetscObject)dm_), &f.ksp));
-  PetscCall(KSPSetOptionsPrefix(f.ksp, "heat_response_"));
-  double ratio;
-  PetscCall(StiffnessToMassRatio(shift, &ratio));
-  PetscCall(ConfigureLinearSolver(f.ksp, direct_solve(), ratio));
-  PetscCall(KSPSetOperators(f.ksp, f.J, f.J));
-  PetscCall(KSPSetFromOptions(f.ksp));
-  response_factors_.push_back(f);
-  *ksp = f.ksp;
+  PetscCall(responses_.Get(1.0 / (w * dt), ksp));
   PetscFunctionReturn(0);
 }
 

@@ -32,6 +32,7 @@ void Progress::Start(MPI_Comm comm, std::string label, double t_begin, double t_
   t_begin_ = t_begin;
   t_end_ = t_end;
   dt_ = dt;
+  counts_steps_ = dt > 0.0;
   log_time_ = log_time && t_begin > 0.0;
   wall_start_ = wall_last_ = MPI_Wtime();
   steps_start_ = steps_last_ = steps_printed_ = -1;
@@ -54,8 +55,9 @@ double Progress::Fraction(double t) const {
 PetscErrorCode Progress::Update(double t, long long steps) {
   PetscFunctionBeginUser;
   if (steps_start_ < 0) steps_start_ = steps;
-  // The step now, from the last step taken: the contact may have shrunk it since Start.
-  if (steps > steps_last_ && steps_last_ >= 0 && t > t_last_) dt_ = (t - t_last_) / static_cast<double>(steps - steps_last_);
+  // The step now, from the last step taken: the contact may have shrunk it since Start. Only
+  // for a phase that counts steps (started with a step): a heat phase has none to count.
+  if (counts_steps_ && steps > steps_last_ && steps_last_ >= 0 && t > t_last_) dt_ = (t - t_last_) / static_cast<double>(steps - steps_last_);
   steps_last_ = steps, t_last_ = t;
   const double now = MPI_Wtime();
   if (!speaker_ || now - wall_last_ < 2.0) PetscFunctionReturn(0);
@@ -65,35 +67,40 @@ PetscErrorCode Progress::Update(double t, long long steps) {
                              : rate_ + (recent - rate_) * (1.0 - std::exp(-(now - wall_last_) / 10.0));
   wall_last_ = now;
   steps_printed_ = steps;
-  const double elapsed = now - wall_start_, rate = rate_;
-  if (dt_ > 0.0) PetscFunctionReturn(PrintWave(t, steps, rate));
-  const double done = Fraction(t), eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s (%.1f %%%s), step %lld, ETA %.0f s\n",
-                         label_.c_str(), t, 100.0 * done, log_time_ ? " in log time" : "", steps, eta));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s\n", Line(t, steps, now - wall_start_).c_str()));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Progress::PrintWave(double t, long long steps, double rate) const {
-  PetscFunctionBeginUser;
+std::string Progress::Line(double t, long long steps, double elapsed) const {
+  if (counts_steps_) return WaveLine(t, steps);
+  const double done = Fraction(t), eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
+  char text[256];
+  std::snprintf(text, sizeof(text), "%s: t = %.4g s (%.1f %%%s), step %lld, ETA %.0f s", label_.c_str(), t,
+                100.0 * done, log_time_ ? " in log time" : "", steps, eta);
+  return text;
+}
+
+std::string Progress::WaveLine(double t, long long steps) const {
   const std::string note = outlook_note_.empty() ? "" : "; " + outlook_note_;
+  char text[512];
   if (t >= t_end_ && outlook_steps_ < 0.0) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s, %.3g steps/s%s\n", label_.c_str(), t,
-                           StepCount(steps, t, t_end_, dt_).c_str(), rate, note.c_str()));
-    PetscFunctionReturn(0);
+    std::snprintf(text, sizeof(text), "%s: t = %.4g s, %s, %.3g steps/s%s", label_.c_str(), t,
+                  StepCount(steps, t, t_end_, dt_).c_str(), rate_, note.c_str());
+    return text;
   }
   const double resolved = std::ceil(std::max(0.0, t_end_ - t) / dt_);
   const double left = outlook_steps_ >= 0.0 ? std::max(0.0, outlook_steps_ - static_cast<double>(steps - outlook_at_))
                                             : resolved;
   char eta[96];
   if (outlook_steps_ >= 0.0)  // a continuation expected: when, and the bound without it
-    std::snprintf(eta, sizeof(eta), "ETA ~%.0f s (resolved to the end: %.0f s)", left / rate, resolved / rate);
+    std::snprintf(eta, sizeof(eta), "ETA ~%.0f s (resolved to the end: %.0f s)", left / rate_, resolved / rate_);
   else if (!outlook_note_.empty())  // it may become periodic and end sooner
-    std::snprintf(eta, sizeof(eta), "ETA up to %.0f s (resolved to the end)", left / rate);
+    std::snprintf(eta, sizeof(eta), "ETA up to %.0f s (resolved to the end)", left / rate_);
   else
-    std::snprintf(eta, sizeof(eta), "ETA %.0f s", left / rate);
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "%s: t = %.4g s, %s, %.3g steps/s, %s%s\n", label_.c_str(), t,
-                         StepShare(steps, left).c_str(), rate, eta, note.c_str()));
-  PetscFunctionReturn(0);
+    std::snprintf(eta, sizeof(eta), "ETA %.0f s", left / rate_);
+  std::snprintf(text, sizeof(text), "%s: t = %.4g s, %s, %.3g steps/s, %s%s", label_.c_str(), t,
+                StepShare(steps, left).c_str(), rate_, eta, note.c_str());
+  return text;
 }
 
 PetscErrorCode Progress::Done(double t, long long steps) {

@@ -18,12 +18,14 @@ with layers graded across the crack plane) with the friction power of its contac
    along the strike and along t2 = -z: the Q2 node lattice inside the 6 x 4 mm crack,
    every contact cell at every record time), and Σ W × area over its rows is the crack's
    dissipated energy in energy.csv at the same time (1e-7: W has 9 digits there);
- - 2 ranks = serial: probe temperatures and camera frames within 1e-10 of the field's peak rise;
+ - 2 ranks = serial: probe temperatures and camera frames within 1e-6 of the field's peak rise (what the
+   solver guarantees: CG to a relative 1e-8 of each heat step's update, whose preconditioner's sums
+   and partition differ between the runs; it was 1e-10 while CG iterated to 1e-12, only for this check);
  - the coupled heat steps are mass-dominated (summary.json heat_stiffness_ratio <= 10), so their
    CG takes Jacobi; a run that forces BoomerAMG on them (-heat_pc_type hypre, which also
    checks that a user's -heat_free_pc_type jacobi is taken without the 3D BoomerAMG
-   defaults being flagged as unused) gives the same crack-centre temperatures (1e-10 of
-   the peak).
+   defaults being flagged as unused) gives the same crack-centre temperatures (1e-6 of
+   the peak: two preconditioners, each to CG's 1e-8).
 
 usage: test_heat_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import csv, json, os, subprocess, sys, tempfile
@@ -131,10 +133,10 @@ with tempfile.TemporaryDirectory() as tmp:
         a, b = serial[0], parallel[0]
         peak = max(abs(v) for v in a.values())
         worst = max(abs(a[s] - b.get(s, np.inf)) for s in a)
-        check(worst <= 1e-10 * peak, "2 ranks: crack-centre temperatures differ by %.3g of %.3g" % (worst, peak))
+        check(worst <= 1e-6 * peak, "2 ranks: crack-centre temperatures differ by %.3g of %.3g" % (worst, peak))
         if serial[1].shape == parallel[1].shape:  # the face is barely warm: against the field's peak
             diff = np.abs(serial[1] - parallel[1]).max()
-            check(diff <= 1e-10 * serial[2], "2 ranks: camera frames differ by %.3g (field peak %.3g)" % (diff, serial[2]))
+            check(diff <= 1e-6 * serial[2], "2 ranks: camera frames differ by %.3g (field peak %.3g)" % (diff, serial[2]))
     out = os.path.join(tmp, "info")  # the coupled steps' solver, as PETSc's -info says it was chosen
     r = subprocess.run([exe] + opts + ["-final_time", "2e-6", "-info", ":ksp", "-output_dir", out],
                        capture_output=True, text=True)
@@ -151,6 +153,6 @@ with tempfile.TemporaryDirectory() as tmp:
             a = parallel[0]
             peak = max(abs(v) for v in a.values())
             worst = max(abs(a[s] - other.get(s, np.inf)) for s in a)
-            check(worst <= 1e-10 * peak, "BoomerAMG on the coupled steps: crack-centre temperatures differ by %.3g "
+            check(worst <= 1e-6 * peak, "BoomerAMG on the coupled steps: crack-centre temperatures differ by %.3g "
                   "of %.3g" % (worst, peak))
 check.finish()

@@ -4,6 +4,9 @@
 // waves outlast their expected end the line says so instead of a count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "vibrotherm/io/progress.hpp"
 
 namespace vibrotherm::io {
@@ -21,6 +24,29 @@ TEST(Progress, PastTheExpectedEndShowsNoCount) {
   const std::string count = StepCount(21761, 3e-5, 2.432e-5, 1e-9);
   EXPECT_EQ(count.find('/'), std::string::npos) << count;
   EXPECT_NE(count.find("past the expected end"), std::string::npos) << count;
+}
+
+// Issue 40: a heat phase without waves (-physics heat) printed "the waves are not quiet
+// yet" at its end: the step count of the wave phase, estimated from the steps taken.
+TEST(Progress, AHeatPhaseNeverCountsWaveSteps) {
+  Progress heat;
+  heat.Start(MPI_COMM_WORLD, "heat", 1e-8, 1e-2, 0.0, true);
+  double t = 1e-8;
+  for (long long step = 1; step <= 320; ++step) {
+    t = std::min(1e-2, t * 1.05);
+    ASSERT_EQ(heat.Update(t, step), 0);
+  }
+  for (double at : {1e-4, 1e-2}) {
+    const std::string line = heat.Line(at, 320, 10.0);
+    EXPECT_EQ(line.find("waves"), std::string::npos) << line;
+    EXPECT_EQ(line.find('/'), std::string::npos) << line;
+    EXPECT_NE(line.find("in log time"), std::string::npos) << line;
+  }
+  Progress waves;  // the wave phase keeps its count
+  waves.Start(MPI_COMM_WORLD, "wave", 0.0, 2e-5, 1e-8, false);
+  ASSERT_EQ(waves.Update(1e-5, 1000), 0);
+  EXPECT_NE(waves.Line(1e-5, 1000, 1.0).find("step 1000/200"), std::string::npos) << waves.Line(1e-5, 1000, 1.0);
+  EXPECT_NE(waves.Line(3e-5, 3000, 1.0).find("not quiet yet"), std::string::npos);
 }
 
 }  // namespace

@@ -23,12 +23,14 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
+#include "vibrotherm/heat/rung_solvers.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
@@ -52,7 +54,7 @@ struct HeatOptions {
   bool lumped = true;    ///< -heat_lumped_mass: row sums (no ringing at the crack, see README)
   HeatBoundaryOptions boundary;
   /// The coupled steps' length [s] (the coupling's heat step; 0: not known). It picks
-  /// their linear solver (ConfigureLinearSolver).
+  /// their linear solver (ConfigurePc).
   double coupled_step = 0.0;
 };
 /// -heat_* (material, degree, mass, edges). Collective.
@@ -140,13 +142,15 @@ class HeatSolver {
   PetscErrorCode Temperature(Vec* T) const;
   double time() const { return time_; }
   PetscInt steps() const { return steps_; }
+  /// Linear solvers set up so far by the free TS's steps (one per step length: rung_solvers.hpp).
+  PetscInt free_solver_setups() const { return rungs_.count(free_ts_) ? rungs_.at(free_ts_)->setups() : 0; }
   PetscInt dofs() const { return global_dofs_; }
   /// max_i K_ii / (shift M_ii): how far K + shift·M is from its mass (a step dt of
   /// backward Euler: shift = 1/dt). Collective.
   PetscErrorCode StiffnessToMassRatio(double shift, double* ratio) const;
   /// That ratio for the coupled step (HeatOptions::coupled_step; < 0 when not given).
   double coupled_stiffness_ratio() const { return coupled_stiffness_ratio_; }
-  /// Up to this ratio an iterative solve uses CG with Jacobi (ConfigureLinearSolver).
+  /// Up to this ratio an iterative solve uses CG with Jacobi (ConfigurePc).
   static constexpr double kJacobiStiffnessRatio = 10.0;
   const fe::LagrangeSpace& space() const { return space_; }
   const HeatBoundary& boundary() const { return boundary_; }
@@ -161,8 +165,10 @@ class HeatSolver {
   static PetscErrorCode IJacobian(TS ts, PetscReal t, Vec theta, Vec theta_dot, PetscReal shift, Mat J, Mat P,
                                   void* ctx);
   static PetscErrorCode PostStep(TS ts);
-  /// J = K + shift M with the sink rows, unless it holds that shift already.
+  /// J = K + shift M with the sink rows; the shift J holds is remembered (IJacobian keeps it).
   static PetscErrorCode AssembleJacobian(HeatSolver* self, PetscReal shift, Mat J);
+  /// J = K + shift M with the sink rows (identity rows and columns). Collective.
+  PetscErrorCode FillJacobian(double shift, Mat J) const;
   PetscErrorCode Account(double h);
   /// The partial rise through the step just taken (partial_rise.cpp).
   PetscErrorCode AdvancePartial();
@@ -174,7 +180,7 @@ class HeatSolver {
   PetscErrorCode ScaleTolerance();
   /// Q from a uniform power per unit area on each facet (this rank's, facet and crack index pairs).
   PetscErrorCode SetFacetPower(const std::vector<std::pair<PetscInt, int>>& facets, const std::vector<double>& power);
-  /// A solver of J = K + M/(w dt) (sinks as the TS's), factored once per step length dt.
+  /// A solver of J = K + M/(w dt) (sinks as the TS's), set up once per step length dt.
   PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
 
   DM dm_ = nullptr;
@@ -187,11 +193,23 @@ class HeatSolver {
   Vec partial_ = nullptr, partial_load_ = nullptr, partial_step_ = nullptr;  ///< EnablePartialRise
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   std::vector<fe::LocatedPoint> probes_;
-  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, double stiffness_ratio, TS* ts);
-  /// A linear solver for K + shift·M of this StiffnessToMassRatio (< 0: the shift varies):
-  /// Cholesky when `direct`, else CG with Jacobi when the mass dominates every row (ratio
-  /// ≤ kJacobiStiffnessRatio), else CG with BoomerAMG (heat_linear_solver.cpp).
-  PetscErrorCode ConfigureLinearSolver(KSP ksp, bool direct, double stiffness_ratio);
+  PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
+  // The linear solvers (heat_linear_solver.cpp): per shift of K + shift·M, Cholesky when the
+  // mesh is small (direct_solve) and the user names no other PC, else CG with Jacobi when the
+  // mass dominates every row (StiffnessToMassRatio ≤ kJacobiStiffnessRatio), else CG with BoomerAMG.
+  /// Whether a solver under this prefix iterates (CG) or applies a factor once (PREONLY).
+  PetscErrorCode Iterative(const char* prefix, bool* iterative) const;
+  /// The KSP's type and tolerance (CG to kRelativeTolerance, or PREONLY).
+  PetscErrorCode ConfigureKsp(KSP ksp) const;
+  /// ksp's PC for J = K + shift·M under `prefix` (the user's -<prefix>pc_* read after).
+  PetscErrorCode ConfigurePc(KSP ksp, const char* prefix, double shift) const;
+  /// Reads the rungs' options now (3D: BoomerAMG's defaults first), before any step makes a rung.
+  PetscErrorCode ReadSolverOptions(const char* prefix) const;
+  /// A TS's KSP: ConfigureKsp, and a PC applying the solver of the step's rung (rungs_[ts]).
+  PetscErrorCode ConfigureStepSolver(TS ts, KSP ksp);
+  /// CG's relative tolerance on a step's update (the TS solves for the change from the
+  /// last state): 1e-8 (it was 1e-12, only so that 2 ranks matched serial to 1e-10).
+  static constexpr double kRelativeTolerance = 1e-8;
   double coupled_stiffness_ratio_ = -1.0;  ///< of the coupled step (< 0: not known)
   static constexpr PetscInt kDirectSolveDofs = 50000;   ///< above: CG + AMG even for fixed steps
   static constexpr PetscInt kDirectSolveDofs3D = 5000;  ///< the same on a 3D mesh (more fill)
@@ -205,13 +223,10 @@ class HeatSolver {
   PetscInt steps_ = 0, global_dofs_ = 0;
   bool stop_requested_ = false;
   PetscLogEvent source_event_ = 0;
-  /// StepResponses' own factorisations (the TS's is not disturbed), by shift: the last few step lengths.
-  struct ResponseFactor {
-    double shift;
-    Mat J;
-    KSP ksp;
-  };
-  std::vector<ResponseFactor> response_factors_;
+  /// Each TS's solvers by step length (rung_solvers.hpp).
+  std::map<TS, std::unique_ptr<RungSolvers>> rungs_;
+  /// StepResponses' own solvers (the TS's are not disturbed), by shift.
+  RungSolvers responses_;
 };
 
 }  // namespace vibrotherm::heat

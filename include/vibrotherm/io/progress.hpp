@@ -39,14 +39,18 @@ class Progress {
   /// continuation skips the rest), and a note for the line; steps < 0: none (resolved to t_end).
   void SetOutlook(double steps, long long at, std::string note);
   PetscErrorCode Update(double t, long long steps);
+  /// The line Update prints at (t, steps) after `elapsed` seconds of the phase: a count of
+  /// steps for a phase started with a step (the waves), the fraction of the time (in log time
+  /// if asked) otherwise (the free heat phase: no wave count, no "past the expected end").
+  std::string Line(double t, long long steps, double elapsed) const;
   PetscErrorCode Done(double t, long long steps);
 
  private:
   double Fraction(double t) const;
-  PetscErrorCode PrintWave(double t, long long steps, double rate) const;
+  std::string WaveLine(double t, long long steps) const;
   std::string label_;
   double t_begin_ = 0, t_end_ = 1, dt_ = 0, wall_start_ = 0, wall_last_ = 0;
-  bool log_time_ = false;
+  bool log_time_ = false, counts_steps_ = false;  ///< counts_steps_: started with a step (the waves)
   long long steps_start_ = -1, steps_last_ = -1, steps_printed_ = -1;  ///< at Start, the last step, the last line
   double rate_ = 0.0;  ///< steps per wall second, over about the last 10 s
   double t_last_ = 0;

@@ -95,11 +95,12 @@ bool PetscOwned(const std::string& name) {
 }
 
 /// Options PETSc reads only when a solve runs or ends (viewers, convergence
-/// reasons; the inner solver of the heat's PCREDUNDANT, made by its first solve),
+/// reasons; the heat's PCREDUNDANT, its subcommunicator and inner solver, made by the first
+/// solve of each step length: heat/rung_solvers.hpp),
 /// not when the object is set up: not held against the user before a step.
 bool ReadWhileSolving(const std::string& name) {
   return name.find("view") != std::string::npos || name.find("converged_reason") != std::string::npos ||
-         name.rfind("heat_redundant_", 0) == 0;
+         name.find("redundant_") != std::string::npos || name.find("psubcomm_") != std::string::npos;
 }
 
 /// The options given but never read (rank 0's list), as names without the dash.
