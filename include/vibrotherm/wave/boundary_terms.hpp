@@ -42,7 +42,7 @@ struct StepState {
   bool reactions_from_kick = false;  ///< the support forces of the last Accelerate are the kick's
 };
 
-/// Energy a boundary exchanges with the waves, this rank's share [J/m].
+/// Energy a boundary exchanges with the waves, this rank's share [J/m in 2D, J in 3D].
 struct BoundaryEnergy {
   double radiated = 0.0, work_source = 0.0;
   double damped = 0.0;  ///< dissipated by material damping (material_damping.hpp)

@@ -1,4 +1,4 @@
-// Isotropic linear elastic material in plane strain (PHYSICS.md §2).
+// Isotropic linear elastic material: plane strain in 2D, full 3D in 3D (PHYSICS.md §2).
 #pragma once
 
 #include <petscsys.h>
@@ -20,7 +20,7 @@ struct ElasticMaterial {
 
   double lambda() const { return E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)); }
   double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
-  /// Bulk wave speeds: P (dilatational) and S (shear), plane strain.
+  /// Bulk wave speeds: P (dilatational) and S (shear), the same in plane strain and 3D.
   double cp() const { return std::sqrt((lambda() + 2.0 * shear_modulus()) / density); }
   double cs() const { return std::sqrt(shear_modulus() / density); }
 };

@@ -79,7 +79,7 @@ class WaveInterface {
   virtual PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) = 0;
   /// marker[i] = 1 on the owned dofs its forces act on (local time stepping moves them at the contact's rate).
   virtual PetscErrorCode MarkDofs(Vec marker) = 0;
-  /// Energy stored in the interface and dissipated so far [J/m] (global).
+  /// Energy stored in the interface and dissipated so far [J/m in 2D, J in 3D] (global).
   virtual PetscErrorCode Energies(double* stored, double* dissipated) = 0;
   /// The harmonic start (harmonic_start.cpp): the entries (global dof row, column, value) of the
   /// interface's tangent stiffness at its committed state (this rank's cells) ...
@@ -87,7 +87,7 @@ class WaveInterface {
                                           std::vector<double>* values) const = 0;
 };
 
-/// Energies of the wave field, J per metre of depth. For velocity Verlet the
+/// Energies of the wave field: J per metre of depth in 2D (plane strain), J in 3D. For velocity Verlet the
 /// exactly conserved discrete energy of the linear system is
 ///   KE + SE − (dt²/8) vᵀKv
 /// (drift–kick–drift; derived in the note of issue 4): `integrator` holds the

@@ -31,7 +31,7 @@ io::EnergyRow Unflatten(const double* v) {
 
 std::vector<long long> CellKeys(const WaveComponent& waves, const mesh::PointOrigin& origin) {
   std::vector<long long> keys;
-  if (const interface::CrackInterface* crack = const_cast<WaveComponent&>(waves).crack())
+  if (const interface::CrackInterface* crack = waves.crack())
     for (const interface::ContactCell& c : crack->cells()) keys.push_back(origin[c.plus]);
   return keys;
 }

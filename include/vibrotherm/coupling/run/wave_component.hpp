@@ -27,6 +27,7 @@ class WaveComponent {
   const wave::WaveSolver& solver() const { return *solver_; }
   /// The crack contact, or null (no crack, or a law that transmits nothing).
   interface::CrackInterface* crack() { return crack_.get(); }
+  const interface::CrackInterface* crack() const { return crack_.get(); }
   /// `steps` constant steps, or fewer landing exactly on t_end when it comes first.
   PetscErrorCode Advance(PetscInt steps, double t_end);
   /// Steps to t_end exactly (quantized steps land there).
