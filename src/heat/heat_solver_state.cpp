@@ -1,7 +1,8 @@
 // The heat solver in checkpoints (taken while the waves run: the coupled TS,
 // fixed steps): θ per owned dof keyed by its origin, time, steps, the accounts,
 // and the shift its Jacobian was factored with, so that a restart solves with
-// the very same factors. The partial rise (EnablePartialRise) is kept the same way.
+// the very same factors; the rungs' kept shifts, for the same reason (rung_solvers.hpp).
+// The partial rise (EnablePartialRise) is kept the same way.
 #include "vibrotherm/heat/heat_solver.hpp"
 
 namespace vibrotherm::heat {
@@ -29,6 +30,7 @@ PetscErrorCode HeatSolver::Save(store::Checkpoint& checkpoint, const mesh::Point
   const auto shift = last_shift_.find(J);
   // The step taken (the free phase's ladder starts from it), not the TS's proposal for the next one.
   if (last_step_ > 0.0) dt = last_step_;
+  PetscCall(SaveRungs(checkpoint));
   checkpoint.PutShared("heat/clock", {time_, static_cast<double>(steps_), static_cast<double>(ts_steps), dt,
                                       deposited_, boundary_loss_, peak_rise_,
                                       shift == last_shift_.end() ? 0.0 : shift->second});
@@ -46,6 +48,7 @@ PetscErrorCode HeatSolver::Restore(const store::Checkpoint& checkpoint, const me
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   std::vector<double> theta, clock;
+  PetscCall(RestoreRungs(checkpoint));
   PetscCall(checkpoint.GetKeyed("heat/theta", keys, 1, &theta));
   PetscCall(checkpoint.GetShared("heat/clock", &clock, 8));
   std::vector<double> integrator;
@@ -87,6 +90,32 @@ PetscErrorCode HeatSolver::Restore(const store::Checkpoint& checkpoint, const me
     PetscCall(TSGetIJacobian(ts_, &J, nullptr, nullptr, nullptr));
     PetscCall(AssembleJacobian(this, clock[7], J));
   }
+  PetscFunctionReturn(0);
+}
+
+/// A rung solver's checkpoint name: by its TS's prefix (heat_, heat_free_), or the responses'.
+std::string HeatSolver::RungsName(TS ts) {
+  const char* prefix = nullptr;
+  if (ts) (void)TSGetOptionsPrefix(ts, &prefix);
+  return std::string("heat/rungs_") + (ts ? (prefix ? prefix : "") : "responses");
+}
+
+PetscErrorCode HeatSolver::SaveRungs(store::Checkpoint& checkpoint) const {
+  PetscFunctionBeginUser;
+  for (const auto& [ts, rungs] : rungs_) checkpoint.PutShared(RungsName(ts), rungs->KeptShifts());
+  checkpoint.PutShared(RungsName(nullptr), responses_.KeptShifts());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode HeatSolver::RestoreRungs(const store::Checkpoint& checkpoint) {
+  PetscFunctionBeginUser;
+  std::vector<double> shifts;
+  for (auto& [ts, rungs] : rungs_) {
+    PetscCall(checkpoint.GetShared(RungsName(ts), &shifts));
+    PetscCall(rungs->Remember(shifts));
+  }
+  PetscCall(checkpoint.GetShared(RungsName(nullptr), &shifts));
+  PetscCall(responses_.Remember(shifts));
   PetscFunctionReturn(0);
 }
 

@@ -27,6 +27,7 @@ PetscErrorCode RungSolvers::Get(double shift, KSP* ksp) {
   ++calls_;
   for (Rung& r : rungs_)
     if (std::abs(shift - r.shift) <= 1e-10 * std::abs(shift)) {
+      if (!r.ksp) PetscCall(SetUpRung(&r));
       r.used = calls_;
       *ksp = r.ksp;
       PetscFunctionReturn(0);
@@ -37,19 +38,45 @@ PetscErrorCode RungSolvers::Get(double shift, KSP* ksp) {
     PetscCall(MatDestroy(&oldest->J));
     rungs_.erase(oldest);
   }
+  rungs_.push_back(Rung{shift, nullptr, nullptr, calls_});
+  PetscCall(SetUpRung(&rungs_.back()));
+  *ksp = rungs_.back().ksp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RungSolvers::SetUpRung(Rung* r) {
+  PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(setup_event_, 0, 0, 0, 0));
-  Rung r{shift, nullptr, nullptr, calls_};
-  PetscCall(MatDuplicate(pattern_, MAT_DO_NOT_COPY_VALUES, &r.J));
-  PetscCall(MatSetOption(r.J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-  PetscCall(assemble_(shift, r.J));
-  PetscCall(KSPCreate(PetscObjectComm((PetscObject)pattern_), &r.ksp));
-  PetscCall(KSPSetOperators(r.ksp, r.J, r.J));
-  PetscCall(configure_(shift, r.ksp));
-  PetscCall(KSPSetUp(r.ksp));
+  PetscCall(MatDuplicate(pattern_, MAT_DO_NOT_COPY_VALUES, &r->J));
+  PetscCall(MatSetOption(r->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(assemble_(r->shift, r->J));
+  PetscCall(KSPCreate(PetscObjectComm((PetscObject)pattern_), &r->ksp));
+  PetscCall(KSPSetOperators(r->ksp, r->J, r->J));
+  PetscCall(configure_(r->shift, r->ksp));
+  PetscCall(KSPSetUp(r->ksp));
   PetscCall(PetscLogEventEnd(setup_event_, 0, 0, 0, 0));
   ++setups_;
-  rungs_.push_back(r);
-  *ksp = r.ksp;
+  PetscFunctionReturn(0);
+}
+
+std::vector<double> RungSolvers::KeptShifts() const {
+  std::vector<const Rung*> order;
+  for (const Rung& r : rungs_) order.push_back(&r);
+  std::sort(order.begin(), order.end(), [](const Rung* a, const Rung* b) { return a->used < b->used; });
+  std::vector<double> shifts;
+  for (const Rung* r : order) shifts.push_back(r->shift);
+  return shifts;
+}
+
+PetscErrorCode RungSolvers::Remember(const std::vector<double>& shifts) {
+  PetscFunctionBeginUser;
+  for (Rung& r : rungs_) {
+    PetscCall(KSPDestroy(&r.ksp));
+    PetscCall(MatDestroy(&r.J));
+  }
+  rungs_.clear();
+  selected_ = nullptr;
+  for (double shift : shifts) rungs_.push_back(Rung{shift, nullptr, nullptr, ++calls_});
   PetscFunctionReturn(0);
 }
 

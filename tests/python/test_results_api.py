@@ -92,7 +92,9 @@ def check_budget(run, label):
     deposited = e["heat_deposited"].to_numpy()
     if deposited.max() > 0:
         closure = np.max(np.abs(deposited - e["heat_content"] - e["heat_boundary_loss"])) / deposited.max()
-        check(closure < 1e-9, "%s: heat deposited != content + boundary loss (%.3g)" % (label, closure))
+        # The heat conserves to its linear solver's tolerance (CG to 1e-8 of the residual, issue 40), not to
+        # rounding: measured 2.6e-9 on the 3D run.
+        check(closure < 1e-7, "%s: heat deposited != content + boundary loss (%.3g)" % (label, closure))
 
 
 def check_friction_energy(run, label):

@@ -24,6 +24,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -225,6 +226,10 @@ class HeatSolver {
   PetscLogEvent source_event_ = 0;
   /// Each TS's solvers by step length (rung_solvers.hpp).
   std::map<TS, std::unique_ptr<RungSolvers>> rungs_;
+  /// The rungs' kept shifts in a checkpoint and back (heat_solver_state.cpp).
+  static std::string RungsName(TS ts);
+  PetscErrorCode SaveRungs(store::Checkpoint& checkpoint) const;
+  PetscErrorCode RestoreRungs(const store::Checkpoint& checkpoint);
   /// StepResponses' own solvers (the TS's are not disturbed), by shift.
   RungSolvers responses_;
 };

@@ -47,15 +47,24 @@ class RungSolvers {
   PetscErrorCode AttachAsPreconditioner(KSP outer);
   /// Solvers set up so far (factorisations or preconditioner setups).
   PetscInt setups() const { return setups_; }
+  /// The kept rungs' shifts, least recently used first (a checkpoint) ...
+  std::vector<double> KeptShifts() const;
+  /// ... and back, in place of any kept now: each is set up again at that very shift when a step
+  /// asks for it. Why: a step whose shift differs in its last bits reuses a kept rung, so the run
+  /// never stopped solved with the matrix of the rung's first shift; a restart must too, or it
+  /// differs from it by rounding.
+  PetscErrorCode Remember(const std::vector<double>& shifts);
 
  private:
   struct Rung {
     double shift;
-    Mat J;
+    Mat J;    ///< null for a remembered rung not set up yet
     KSP ksp;
     long long used;  ///< the Get call that last returned it
   };
   static PetscErrorCode Apply(PC pc, Vec x, Vec y);
+  /// Assembles r.J at r.shift and sets up r.ksp. Collective.
+  PetscErrorCode SetUpRung(Rung* r);
   Mat pattern_ = nullptr;
   Assemble assemble_;
   Configure configure_;

@@ -89,7 +89,7 @@ PetscErrorCode PeriodicContinuation::Outlook(Recorder& recorder, double t, doubl
   }
   if (to_go < left) {
     const wave::WaveSolver& solver = waves_->solver();
-    const double watch = to_go + scene_->periodic.window + 1.0;  // then a window recorded, and compared once more
+    const double watch = to_go + detector_.window() + 1.0;  // then a window recorded, and compared once more
     const double resolved = watch * period_ / solver.dt() + TailSteps(stretch_end, outlook_.watched() + watch);
     std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g), ~%.0f periods to go", change,
                   tol, to_go);
@@ -131,7 +131,7 @@ double PeriodicContinuation::TailSteps(double stretch_end, double watched) const
 PetscErrorCode PeriodicContinuation::StartRecording(double t, PetscInt multiple, const io::EnergyRow& row) {
   PetscFunctionBeginUser;
   phase_ = Phase::kRecord;
-  multiple_ = multiple * scene_->periodic.window;  // the window is recorded and replayed as one period
+  multiple_ = multiple * detector_.window();  // the window is recorded and replayed as one period
   record_start_ = t;
   record_end_ = t + multiple_ * period_;
   accumulated_start_ = waves_->Accumulated();
@@ -186,7 +186,8 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
                                                  double* projected, bool* allows) {
   PetscFunctionBeginUser;
   double error;
-  detector_.FrictionDrift(multiple_ / scene_->periodic.window, drift, &error);
+  // The period found: 1 in mean mode (whose window may have widened since the recording began).
+  detector_.FrictionDrift(scene_->periodic.mean ? 1 : multiple_ / detector_.window(), drift, &error);
   *projected = 0.5 * std::abs(*drift) * static_cast<double>(n * multiple_);
   const double tol = scene_->periodic.drift_tol;
   *allows = tol <= 0.0 || *projected <= tol;

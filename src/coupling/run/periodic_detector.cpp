@@ -44,6 +44,7 @@ PetscErrorCode PeriodicDetector::Resume(MPI_Comm comm, const PeriodicOptions& op
   PetscFunctionBeginUser;
   comm_ = comm;
   options_ = options;
+  mean_window_ = MeanWindow(options.window);
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
@@ -61,6 +62,7 @@ void PeriodicDetector::Free(Snapshot& s) const {
 void PeriodicDetector::Reset() {
   for (Snapshot& s : samples_) Free(s);
   samples_.clear();  // last_change_ stays: the summary reports the change the last sample saw
+  mean_window_.Reset();
 }
 
 PetscErrorCode PeriodicDetector::Take(WaveComponent& waves, const io::EnergyRow& row, Snapshot* s) const {
@@ -92,7 +94,7 @@ PetscErrorCode PeriodicDetector::Take(WaveComponent& waves, const io::EnergyRow&
 
 PetscErrorCode PeriodicDetector::Change(std::size_t m, const std::vector<double>& weights, double parts[4]) const {
   PetscFunctionBeginUser;
-  const std::size_t k = samples_.size() - 1, window = m * static_cast<std::size_t>(options_.window);
+  const std::size_t k = samples_.size() - 1, span = m * static_cast<std::size_t>(window());
   const Snapshot &now = samples_[k], &back = samples_[k - m];
   double du, dv;
   PetscCall(RelativeDifference(now.u, back.u, mass_, &du));
@@ -110,8 +112,8 @@ PetscErrorCode PeriodicDetector::Change(std::size_t m, const std::vector<double>
   parts[1] = std::max(local[1] > 0.0 ? local[0] / local[1] : 0.0, local[3] > 0.0 ? local[2] / local[3] : 0.0);
   // Cells and energies over the last window against the window before (2 windows of samples).
   parts[2] = parts[3] = INFINITY;
-  if (k < 2 * window) PetscFunctionReturn(0);
-  const Snapshot &start = samples_[k - window], &before = samples_[k - 2 * window];
+  if (k < 2 * span) PetscFunctionReturn(0);
+  const Snapshot &start = samples_[k - span], &before = samples_[k - 2 * span];
   double sums[2] = {0.0, 0.0};  // Σ w |ΔW − ΔW_before|, Σ w ΔW
   for (std::size_t i = 0; i < now.W.size(); ++i) {
     const double recent = now.W[i] - start.W[i], earlier = start.W[i] - before.W[i];
@@ -145,7 +147,9 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
   *multiple = 0;
   samples_.emplace_back();
   PetscCall(Take(waves, row, &samples_.back()));
-  while (samples_.size() > static_cast<std::size_t>(2 * options_.window * options_.max_multiple + 1)) {
+  // Every multiple's two windows; a widened mean window (at most 4 x) fits in the same.
+  const PetscInt keep = std::max(2 * window() + 1, 2 * options_.window * options_.max_multiple + 1);
+  while (samples_.size() > static_cast<std::size_t>(keep)) {
     Free(samples_.front());
     samples_.pop_front();
   }
@@ -172,27 +176,28 @@ PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRo
       break;
     }
   }
+  if (options_.mean) PetscCall(WidenMeanWindow(*multiple > 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicDetector::WidenMeanWindow(bool passed) {
+  PetscFunctionBeginUser;
+  if (mean_window_.After(std::isfinite(last_change_), passed))
+    PetscCall(PetscPrintf(comm_, "periodic (mean): the heat per period scatters by %.2g of its mean over windows of "
+                          "%ld periods: windows of %ld periods from here\n",
+                          last_change_, mean_window_.window() / 2, mean_window_.window()));
   PetscFunctionReturn(0);
 }
 
 double PeriodicDetector::MeanChange() const {
-  const std::size_t n = static_cast<std::size_t>(options_.window), k = samples_.size() - 1;
+  const std::size_t n = static_cast<std::size_t>(window()), k = samples_.size() - 1;
   if (n < 2 || k < 2 * n) return INFINITY;
   double change = 0.0;
+  std::vector<double> per_period(2 * n);  // newest first
   for (double io::EnergyRow::*column : {&io::EnergyRow::dissipated, &io::EnergyRow::damped}) {
-    double sum[2] = {0.0, 0.0}, squares = 0.0;  // the older and the last window's per-period values
-    for (std::size_t j = 0; j < 2 * n; ++j) {
-      const double x = samples_[k - j].energy.*column - samples_[k - j - 1].energy.*column;
-      sum[j < n ? 1 : 0] += x;
-      squares += x * x;
-    }
-    const double mean = (sum[0] + sum[1]) / (2.0 * n);
-    if (mean <= 0.0) continue;  // nothing of this kind heats
-    const double variance = std::max(0.0, squares / (2.0 * n) - mean * mean) * (2.0 * n) / (2.0 * n - 1.0);
-    const double error = std::sqrt(variance / n);  // of one window's mean
-    const double last = sum[1] / n, before = sum[0] / n;
-    const double trend = error > 0.0 ? std::abs(last - before) / (3.0 * std::sqrt(2.0) * error) : 0.0;
-    change = std::max({change, error / std::abs(last), options_.tol * trend});
+    for (std::size_t j = 0; j < 2 * n; ++j)
+      per_period[j] = samples_[k - j].energy.*column - samples_[k - j - 1].energy.*column;
+    change = std::max(change, MeanWindowChange(per_period, n, options_.tol));
   }
   return change;
 }

@@ -158,6 +158,8 @@ PetscErrorCode PeriodicDetector::Save(store::Checkpoint& checkpoint, const std::
   }
   checkpoint.PutShared(name, times);
   checkpoint.PutShared(name + "_last_change", {last_change_});
+  checkpoint.PutShared(name + "_window", {static_cast<double>(mean_window_.window()),
+                                          static_cast<double>(mean_window_.failures())});
   PetscFunctionReturn(0);
 }
 
@@ -171,6 +173,9 @@ PetscErrorCode PeriodicDetector::Restore(const store::Checkpoint& checkpoint, co
   std::vector<double> last;
   PetscCall(checkpoint.GetShared(name + "_last_change", &last, 1));
   last_change_ = last[0];
+  std::vector<double> window;
+  PetscCall(checkpoint.GetShared(name + "_window", &window, 2));
+  mean_window_.Restore(static_cast<long>(window[0]), static_cast<long>(window[1]));
   for (std::size_t k = 0; (k + 1) * (kRowValues + 1) <= times.size(); ++k) {
     const std::string item = name + "_" + std::to_string(k);
     Snapshot s;

@@ -26,7 +26,8 @@
 // the last window's mean known to -periodic_tol (its standard error over the mean), and no
 // trend (the two windows' means within 3 standard errors of their difference). The source's
 // work per period swings with the stored energy and is not judged (a continuation books it
-// as the losses). periodic.csv's `energies` column then holds this change.
+// as the losses). periodic.csv's `energies` column then holds this change. Its window widens
+// for an intermittently clapping crack (periodic_mean.hpp).
 #pragma once
 
 #include <petscvec.h>
@@ -36,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/run/periodic_mean.hpp"
 #include "vibrotherm/coupling/run/periodic_options.hpp"
 #include "vibrotherm/coupling/run/wave_component.hpp"
 #include "vibrotherm/store/atomic_file.hpp"
@@ -62,6 +64,9 @@ class PeriodicDetector {
   /// each stretch of m source periods between the samples; *slope is its rise per source period
   /// relative to the mean, *error the slope's standard error (both 0 with fewer than 4 stretches).
   void FrictionDrift(PetscInt m, double* slope, double* error) const;
+  /// Periods compared as one window, recorded and replayed as one: -periodic_window, or in mean mode
+  /// that widened (WidenMeanWindow).
+  PetscInt window() const { return options_.mean ? mean_window_.window() : options_.window; }
   /// The smallest change of any multiple at the last sample (inf before 2 samples).
   double last_change() const { return last_change_; }
   /// Publishes periodic.csv (a complete run).
@@ -93,6 +98,8 @@ class PeriodicDetector {
   /// windows: the larger of the last window's standard error over its mean and the windows'
   /// difference in units of 3 standard errors (scaled by -periodic_tol); inf before two windows.
   double MeanChange() const;
+  /// Mean mode, after each sample: the window widened when the samples keep failing (periodic_mean.hpp).
+  PetscErrorCode WidenMeanWindow(bool passed);
   void Free(Snapshot& s) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -100,6 +107,7 @@ class PeriodicDetector {
   std::deque<Snapshot> samples_;  ///< newest last; at most 2·max_multiple + 1
   Vec mass_ = nullptr;            ///< the wave solver's lumped mass (not owned)
   double last_change_ = INFINITY;
+  MeanWindow mean_window_;  ///< mean mode's window (window())
   std::unique_ptr<store::AtomicFile> file_;  ///< periodic.csv (rank 0)
 };
 
