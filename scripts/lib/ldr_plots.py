@@ -36,6 +36,10 @@ def heating_spectrum(study, path):
             pick = [x for x in c if x["mode"] == kind and (x[key] or 0) > 0]
             ax.plot(khz([x["frequency"] for x in pick]), [x[key] for x in pick], marker, ms=7,
                     mfc="C0" if kind else "white", mec="C0", ls="none", label=name)
+        for x in c:  # a candidate the rescaling could not bring to the common power (a clapping onset)
+            if x.get("at_common_power") is False and (x[key] or 0) > 0:
+                ax.annotate("at %.3g x the power" % (1.0 + x["power_error"]), (x["frequency"] / 1e3, x[key]),
+                            textcoords="offset points", xytext=(6, -12), fontsize=7, color="C1")
         ldr = [x for x in c if x.get("ldr") and (x[key] or 0) > 0]
         ax.plot(khz([x["frequency"] for x in ldr]), [x[key] for x in ldr], "*", ms=16, color="C3",
                 label="local defect resonance (participation >= 0.8)")

@@ -41,6 +41,20 @@ def margin(point, criteria):
 
 
 POWER_TOLERANCE = 0.1  # a candidate's measured input power within 10 % of the common one
+RESCALE_ROUNDS = 6  # runs toward it after the linear probe
+
+
+def power_jump(runs, target):
+    """Why a candidate missed the common power: the power jumps across it between two drives (the
+    defect starts clapping), or the runs did not get there."""
+    below = [r for r in runs if 0 < r["input_power"] < target]
+    above = [r for r in runs if r["input_power"] > target]
+    if below and above:
+        lo, hi = max(below, key=lambda r: r["amplitude"]), min(above, key=lambda r: r["amplitude"])
+        if lo["amplitude"] < hi["amplitude"]:
+            return "the input power jumps from %.3g to %.3g between %.4g and %.4g m (the defect starts clapping)" % (
+                lo["input_power"], hi["input_power"], lo["amplitude"], hi["amplitude"])
+    return "the rescaling did not converge"
 
 
 class StudyError(RuntimeError):
@@ -162,25 +176,51 @@ class LdrStudy:
             raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
         probe = 0.01 * self.amplitude
         last = self.run_all([(c["frequency"], probe) for c in picks])
-        exponents = [2.0] * len(picks)  # linear: power ∝ A²; then as measured between the last two runs
-        for _ in range(4):
+        seen = [[p] for p in last]  # every run of each candidate
+        for _ in range(RESCALE_ROUNDS):
             off = [i for i, p in enumerate(last) if abs(p["input_power"] / self.power - 1.0) > POWER_TOLERANCE]
             if not off:
                 break
-            pairs = [(picks[i]["frequency"], last[i]["amplitude"] * (self.power / last[i]["input_power"]) **
-                      (1.0 / exponents[i])) for i in off]
-            for i, p in zip(off, self.run_all(pairs)):
-                ratio = p["input_power"] / last[i]["input_power"]
-                r = math.log(ratio) / math.log(p["amplitude"] / last[i]["amplitude"]) if ratio > 0 else 2.0
-                exponents[i] = min(max(r, 1.0), 6.0) if math.isfinite(r) else 2.0
-                last[i] = p
-        for c, p in zip(picks, last):
+            for i, p in zip(off, self.run_all([(picks[i]["frequency"], self.next_amplitude(seen[i])) for i in off])):
+                seen[i].append(p)
+                last[i] = min(seen[i], key=lambda q: abs(math.log(q["input_power"] / self.power))
+                              if q["input_power"] > 0 else math.inf)
+        for c, p, runs in zip(picks, last, seen):
             c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "steady_input_power",
                                         "steady_efficiency", "peak_rise",
                                         "snr", "contrast", "detectable", "detection_time", "run",
                                         "total_peak_rise", "damping_power")})
             c["power_error"] = p["input_power"] / self.power - 1.0
+            c["at_common_power"] = abs(c["power_error"]) <= POWER_TOLERANCE
+            if not c["at_common_power"]:
+                self.log("  %.0f Hz: not at the common power after %d runs (closest %.3g at %.3g m): %s" % (
+                    c["frequency"], len(runs), p["input_power"], p["amplitude"], power_jump(runs, self.power)))
         return picks
+
+    def next_amplitude(self, runs):
+        """The next drive toward the common power: between the closest runs below and above it, the
+        log-linear interpolation of power against amplitude (bisected in log when it falls near an end:
+        a clapping onset makes the power jump); with one side only, the power law measured between the
+        last two runs (2 at first: linear), its exponent within [1, 6]."""
+        target = math.log(self.power)
+        below = [r for r in runs if 0 < r["input_power"] < self.power]
+        above = [r for r in runs if r["input_power"] > self.power]
+        if below and above:
+            lo = max(below, key=lambda r: r["amplitude"])
+            hi = min(above, key=lambda r: r["amplitude"])
+            if lo["amplitude"] < hi["amplitude"]:
+                a0, a1 = math.log(lo["amplitude"]), math.log(hi["amplitude"])
+                p0, p1 = math.log(lo["input_power"]), math.log(hi["input_power"])
+                x = a0 + (target - p0) * (a1 - a0) / (p1 - p0)
+                if not a0 + 0.1 * (a1 - a0) <= x <= a1 - 0.1 * (a1 - a0):
+                    x = 0.5 * (a0 + a1)
+                return math.exp(x)
+        a, b = runs[-1], runs[-2] if len(runs) > 1 else None
+        exponent = 2.0
+        if b and a["input_power"] > 0 and b["input_power"] > 0 and a["amplitude"] != b["amplitude"]:
+            r = math.log(a["input_power"] / b["input_power"]) / math.log(a["amplitude"] / b["amplitude"])
+            exponent = min(max(r, 1.0), 6.0) if math.isfinite(r) else 2.0
+        return a["amplitude"] * (self.power / a["input_power"]) ** (1.0 / exponent)
 
     def threshold(self, frequency, criteria):
         """The smallest drive that detects within T at this frequency, bracketed on runs, then verified."""
@@ -236,7 +276,8 @@ class LdrStudy:
                                                             if c["mode"] else "") for c in picks))
         picks = self.common_power(picks)
         ldr = self.ldr(picks)
-        best = sorted(picks, key=lambda c: -(c["snr"] or 0.0))[:self.n_thresholds]
+        # Ranked at equal power: a candidate that missed it (a clapping onset) comes last.
+        best = sorted(picks, key=lambda c: (not c.get("at_common_power", True), -(c["snr"] or 0.0)))[:self.n_thresholds]
         criteria = self.criteria(picks)
         self.log("thresholds at " + ", ".join("%.0f Hz" % c["frequency"] for c in best))
         with ThreadPoolExecutor(max_workers=self.runner.jobs) as pool:
@@ -253,7 +294,8 @@ class LdrStudy:
         lead = max(modes, key=lambda c: c["participation"])
         for c in modes:
             c["ldr"] = True
-        others = [c["efficiency"] for c in picks if not c["ldr"] and c["efficiency"] is not None]
+        others = [c["efficiency"] for c in picks
+                  if not c["ldr"] and c["efficiency"] is not None and c.get("at_common_power", True)]
         gain = lead["efficiency"] / max(others) if others and max(others) > 0 else None
         return {"frequency": lead["frequency"], "gain": gain}
 
@@ -266,7 +308,7 @@ class LdrStudy:
         keys = ("frequency", "participation", "input_power", "friction_power", "efficiency", "steady_input_power",
                 "steady_efficiency", "peak_rise", "snr",
                 "detectable", "detection_time", "amplitude", "contrast", "total_peak_rise", "damping_power", "mode",
-                "ldr", "power_error", "run")
+                "ldr", "power_error", "at_common_power", "run")
         return {"options_file": self.runner.options_file, "band": list(self.band), "duration": self.duration,
                 "common_input_power": self.power, "detect_snr": criteria[0], "detect_contrast": criteria[1],
                 "modes": [{"frequency": f, "participation": p} for f, p in modes],
