@@ -216,6 +216,10 @@ PetscErrorCode WaveSolver::NodePositionVector(Vec* coordinates) const {
   PetscCall(space_.NodePositions(&positions));
   Vec local;
   PetscCall(DMGetLocalVector(dm_, &local));
+  PetscInt size;
+  PetscCall(VecGetLocalSize(local, &size));
+  PetscCheck(static_cast<std::size_t>(size) == positions.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "harmonic start: %zu node positions for a local vector of %" PetscInt_FMT, positions.size(), size);
   PetscScalar* x;
   PetscCall(VecGetArray(local, &x));
   std::copy(positions.begin(), positions.end(), x);
