@@ -9,7 +9,7 @@ trend of its friction per period F_k over periods 50-150 (least-squares line, ch
 100 periods relative to the mean):
 
   - -mesh_crack_mirror on: within 0.8 % (measured +0.10 %);
-  - the control, -mesh_crack_mirror off (the default, today's mesh): above 1.2 %
+  - the control, -mesh_crack_mirror off (the mesh without the band): above 1.2 %
     (measured +2.11 %), so the test still sees the mechanism.
 
 The two runs go side by side (one rank each). docs/MEASUREMENTS.md "What drifts in the paper

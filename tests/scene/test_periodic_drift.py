@@ -8,7 +8,8 @@ Against the fully resolved run of the same scene (3 ms of 100 kHz, the same quan
     was found periodic) equals a least-squares line through the resolved run's friction per
     period over the periods the detector saw (energy.csv, independent of the detector);
   - the frozen continuation is low, as a positive drift makes it, and by no more than the
-    projection it reported (half the drift over the periods continued: the drift slows down);
+    projection it reported (half the drift over the periods continued: the drift slows down),
+    and summary.json's warnings say so;
   - with -periodic_drift_tol below that projection the waves run on past the first periodic
     state, the continuation it takes keeps its projection within the bound, and it lands
     closer to the resolved run than the default.
@@ -26,7 +27,10 @@ from run_data import read_csv
 exe, src = sys.argv[1:3]
 check = Checks("periodic drift")
 PERIOD = 1e-5
-SCENE = ["-options_file", os.path.join(src, "options/paper.opts"), "-source_duration", "3e-3", "-final_time", "3.1e-3",
+# The paper scene on its mesh without the mirror-symmetric band: the mesh artefact that
+# pumps its friction (issue 41) is the slow drift this test needs.
+SCENE = ["-options_file", os.path.join(src, "options/paper.opts"), "-mesh_crack_mirror", "off",
+         "-source_duration", "3e-3", "-final_time", "3.1e-3",
          "-output_times", "3.1e-3", "-crack_state_every", "0", "-probe_every", "100"]
 RESOLVED = ["-periodic_min_continued", "1000000000"]
 DRIFT_TOL = 2e-3
@@ -69,6 +73,10 @@ with tempfile.TemporaryDirectory() as tmp:
                   (error, seg["drift_projected"]))
             check(seg["drift_projected"] > DRIFT_TOL, "the default's projection %.3g is above the bound tested (%g)" %
                   (seg["drift_projected"], DRIFT_TOL))
+            check(any("still drifted" in w for w in f["warnings"]), "the frozen drift is among summary.json's "
+                  "warnings: %s" % f["warnings"])
+            check(not any("still drifted" in w for w in b["warnings"]), "no drift warning once it is bounded: %s"
+                  % b["warnings"])
             later = [s for s in b["periodic"]]
             error_b = b["dissipated_energy"] / W - 1
             print("bounded: %d continuation(s) from %s s, projected %s; dissipated %+.3e" %

@@ -199,13 +199,17 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
                           "continuing %" PetscInt_FMT " periods would be off by ~%.2g (-periodic_drift_tol %g); the "
                           "waves run on\n",
                           t, *drift, error, n * multiple_, *projected, tol));
-  } else if (*allows && tol <= 0.0 && *projected > 10.0 * scene_->periodic.tol) {
+  } else if (*allows && WarnsOfDrift(*projected)) {
     PetscCall(PetscPrintf(comm,
                           "Warning: the friction per period still drifts by %.2g (+-%.1g) per period; if that went on, "
                           "the %" PetscInt_FMT " periods continued would be off by ~%.2g (-periodic_drift_tol bounds it)\n",
                           *drift, error, n * multiple_, *projected));
   }
   PetscFunctionReturn(0);
+}
+
+bool PeriodicContinuation::WarnsOfDrift(double projected) const {
+  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol;
 }
 
 PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, PetscInt n, bool* continued) {
@@ -378,6 +382,13 @@ PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
   double projected = 0.0;
   for (const Segment& s : segments_) projected = std::max(projected, s.projected);
   summary->derived["periodic_drift_projected"] = projected;
+  if (WarnsOfDrift(projected)) {
+    char text[256];
+    std::snprintf(text, sizeof(text), "the friction per period still drifted when the continuation froze it: the "
+                  "continued heat may be off by ~%.2g (periodic[].drift_projected; -periodic_drift_tol bounds it)",
+                  projected);
+    summary->warnings.push_back(text);
+  }
   summary->derived_rules["periodic"] = on_ ? (segments_.empty() ? "on: never periodic within -periodic_tol" : "on")
                                            : "off: " + note_;
   summary->periodic.clear();

@@ -95,6 +95,9 @@ class PeriodicContinuation {
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
   /// recorded periods; says so once per steady stretch when it does not. *drift, *projected: as Segment.
   PetscErrorCode DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* projected, bool* allows);
+  /// A continuation that froze a drift costing more than 10 -periodic_tol is warned about
+  /// (console and summary), unless -periodic_drift_tol bounded it.
+  bool WarnsOfDrift(double projected) const;
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
   PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
