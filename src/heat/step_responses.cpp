@@ -1,5 +1,5 @@
 // How loads reach a probe through the coupled integrator: the adjoint of its
-// steps (used by coupling/crack_near_field to take the heat mesh's response
+// steps (used by coupling/exchange/crack_near_field to take the heat mesh's response
 // to the last few heat steps' friction heat out of the crack probes).
 //
 // A theta-family step of length h (w = 1: backward Euler) is

@@ -24,8 +24,8 @@ LAYERS = [
     "heat",               # heat conduction
     "interface",          # crack contact cells between the wave solver and the laws
     "io",                 # output files
-    "coupling/exchange",  # what flows between the solvers (friction heat, thermoelastic, thermal stress, camera sampling)
-    "coupling/observe",   # what a run writes (recorder, field peak, probe temperatures)
+    "coupling/exchange",  # what flows between the solvers (friction heat and its near field, thermoelastic, thermal stress)
+    "coupling/observe",   # what a run writes (recorder, field peak, probe temperatures, IR camera)
     "coupling/run",       # run order, components, scene, checkpoint schedule, periodic continuation
     "modes",              # modal analysis run
     "app",                # executables

@@ -13,7 +13,7 @@
 #include <cstdio>
 
 #include "box_mesh_support.hpp"
-#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/observe/heat_camera.hpp"
 
 namespace vibrotherm::testing {
 namespace {

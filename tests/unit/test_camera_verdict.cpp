@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
+#include "vibrotherm/coupling/observe/camera_verdict.hpp"
 
 namespace vibrotherm::coupling {
 namespace {

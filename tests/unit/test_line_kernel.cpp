@@ -8,7 +8,7 @@
 #include <cmath>
 #include <functional>
 
-#include "vibrotherm/coupling/observe/line_kernel.hpp"
+#include "vibrotherm/coupling/exchange/line_kernel.hpp"
 
 namespace vibrotherm::coupling {
 namespace {

@@ -20,7 +20,7 @@ struct OptionRecord {
 };
 
 /// The IR camera's record (coupling/heat_camera): frames, the hottest frame, and the verdict
-/// about the defect (coupling/exchange/camera_verdict.hpp). Places are pixel centres in the
+/// about the defect (coupling/observe/camera_verdict.hpp). Places are pixel centres in the
 /// camera's axes (camera.h5 x, y).
 struct CameraSummary {
   long long frames = 0, rows = 0, cols = 0, peak_frame = 0, defect_peak_frame = 0;

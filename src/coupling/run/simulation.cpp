@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "vibrotherm/coupling/run/recording.hpp"
-#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/observe/heat_camera.hpp"
 #include "vibrotherm/coupling/run/periodic_continuation.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 

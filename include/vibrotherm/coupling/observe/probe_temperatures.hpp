@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "vibrotherm/coupling/observe/crack_near_field.hpp"
+#include "vibrotherm/coupling/exchange/crack_near_field.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/io/point_probes.hpp"

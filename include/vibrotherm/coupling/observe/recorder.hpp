@@ -14,7 +14,7 @@
 #include "vibrotherm/coupling/observe/field_peak.hpp"
 #include "vibrotherm/coupling/observe/source_power.hpp"
 #include "vibrotherm/coupling/observe/wave_energy_row.hpp"
-#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/observe/heat_camera.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/io/crack_state_log.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
+#include "vibrotherm/coupling/observe/camera_verdict.hpp"
 #include "vibrotherm/coupling/exchange/heat_sources.hpp"
 #include "vibrotherm/coupling/observe/probe_temperatures.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"

@@ -5,7 +5,7 @@
 #include <petscsys.h>
 
 #include "vibrotherm/contact/contact_parameters.hpp"
-#include "vibrotherm/coupling/exchange/camera_options.hpp"
+#include "vibrotherm/coupling/observe/camera_options.hpp"
 #include "vibrotherm/coupling/run/driver_options.hpp"
 #include "vibrotherm/coupling/run/periodic_options.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
+#include "vibrotherm/coupling/observe/camera_verdict.hpp"
 
 #include <algorithm>
 #include <cmath>

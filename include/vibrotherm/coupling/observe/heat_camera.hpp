@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/exchange/camera_face.hpp"
-#include "vibrotherm/coupling/exchange/camera_options.hpp"
-#include "vibrotherm/coupling/exchange/camera_verdict.hpp"
+#include "vibrotherm/coupling/observe/camera_face.hpp"
+#include "vibrotherm/coupling/observe/camera_options.hpp"
+#include "vibrotherm/coupling/observe/camera_verdict.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/io/camera_frames.hpp"
 #include "vibrotherm/store/checkpoint.hpp"

@@ -37,7 +37,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/exchange/friction_heat.hpp"
-#include "vibrotherm/coupling/observe/line_kernel.hpp"
+#include "vibrotherm/coupling/exchange/line_kernel.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/store/checkpoint.hpp"

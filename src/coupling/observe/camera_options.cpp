@@ -1,8 +1,8 @@
-#include "vibrotherm/coupling/exchange/camera_options.hpp"
+#include "vibrotherm/coupling/observe/camera_options.hpp"
 
 #include <cmath>
 
-#include "vibrotherm/coupling/exchange/camera_face.hpp"
+#include "vibrotherm/coupling/observe/camera_face.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
 
 namespace vibrotherm::coupling {

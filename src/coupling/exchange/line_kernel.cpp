@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/observe/line_kernel.hpp"
+#include "vibrotherm/coupling/exchange/line_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>

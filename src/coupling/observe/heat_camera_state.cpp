@@ -5,7 +5,7 @@
 // frames' verdicts (camera_verdict.hpp) too.
 #include <sstream>
 
-#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/observe/heat_camera.hpp"
 #include "vibrotherm/util/root_task.hpp"
 
 namespace vibrotherm::coupling {

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/observe/crack_near_field.hpp"
+#include "vibrotherm/coupling/exchange/crack_near_field.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // contact cells' origin: any partition restores them), the last steps' terms of
 // D (this rank's sums; another partition puts them on rank 0), and the step
 // length of the equal-step responses, which a restart recomputes with the very same step.
-#include "vibrotherm/coupling/observe/crack_near_field.hpp"
+#include "vibrotherm/coupling/exchange/crack_near_field.hpp"
 
 namespace vibrotherm::coupling {
 

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/exchange/camera_face.hpp"
+#include "vibrotherm/coupling/observe/camera_face.hpp"
 
 #include <algorithm>
 #include <map>

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/exchange/heat_camera.hpp"
+#include "vibrotherm/coupling/observe/heat_camera.hpp"
 
 #include <petscdmplex.h>
 
