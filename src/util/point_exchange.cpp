@@ -60,11 +60,14 @@ PetscErrorCode PointExchange::Setup(MPI_Comm comm, const Box& box, const std::ve
   first_ = 0;
   PetscCallMPI(MPI_Exscan(&n, &first_, 1, MPIU_INT, MPI_SUM, comm));
   if (rank == 0) first_ = 0;  // MPI_Exscan leaves rank 0's result undefined
+  counts_ = ExchangeCounts{};
+  counts_.mine = static_cast<std::size_t>(n);
+  global_.clear();
   std::vector<PetscMPIInt> ranks;
   std::vector<PetscInt> sizes;
   PetscCall(SendLists(mine, &ranks, &sizes));
   PetscCall(BuildGraph(ranks, sizes));
-  PetscCall(SendPoints(mine, n));
+  PetscCall(SendPoints(mine));
   PetscCall(PetscLogEventEnd(event, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -89,58 +92,63 @@ PetscErrorCode PointExchange::SendLists(const std::vector<double>& mine, std::ve
 
 PetscErrorCode PointExchange::BuildGraph(const std::vector<PetscMPIInt>& ranks, const std::vector<PetscInt>& sizes) {
   PetscFunctionBeginUser;
-  std::vector<PetscInt> todata;  // per destination: how many points, where they start among the roots
+  std::vector<PetscInt> todata;  // per destination: how many points, where they start among the slots, first_
   PetscInt offset = 0;
-  for (PetscInt size : sizes) todata.insert(todata.end(), {size, offset}), offset += size;
+  for (PetscInt size : sizes) todata.insert(todata.end(), {size, offset, first_}), offset += size;
   PetscMPIInt nfrom = 0, *from = nullptr;
   PetscInt* fromdata = nullptr;
-  PetscCall(PetscCommBuildTwoSided(comm_, 2, MPIU_INT, static_cast<PetscMPIInt>(ranks.size()), ranks.data(),
+  PetscCall(PetscCommBuildTwoSided(comm_, 3, MPIU_INT, static_cast<PetscMPIInt>(ranks.size()), ranks.data(),
                                    todata.data(), &nfrom, &from, &fromdata));
   std::vector<PetscMPIInt> order(nfrom);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](PetscMPIInt a, PetscMPIInt b) { return from[a] < from[b]; });
   std::vector<PetscSFNode> remote;  // by sender rank, then the sender's order: by global index
   for (PetscMPIInt j : order)
-    for (PetscInt k = 0; k < fromdata[2 * j]; ++k) remote.push_back({from[j], fromdata[2 * j + 1] + k});
+    for (PetscInt k = 0; k < fromdata[3 * j]; ++k) {
+      remote.push_back({from[j], fromdata[3 * j + 1] + k});
+      global_.push_back(fromdata[3 * j + 2]);  // the sender's first index; its point's place added below
+    }
   PetscCall(PetscFree(from));
   PetscCall(PetscFree(fromdata));
+  // The slots' points to the leaves, then the graph again with the points themselves as roots
+  // (a point sent to several ranks is one root of several leaves: no send buffer).
+  PetscSF slots;
+  std::vector<PetscInt> place(remote.size());
+  PetscCall(PetscSFCreate(comm_, &slots));
+  PetscCall(PetscSFSetGraph(slots, static_cast<PetscInt>(slots_.size()), static_cast<PetscInt>(remote.size()), nullptr,
+                            PETSC_COPY_VALUES, remote.data(), PETSC_USE_POINTER));
+  PetscCall(PetscSFBcastBegin(slots, MPIU_INT, slots_.data(), place.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(slots, MPIU_INT, slots_.data(), place.data(), MPI_REPLACE));
+  PetscCall(PetscSFDestroy(&slots));
+  for (std::size_t k = 0; k < remote.size(); ++k) remote[k].index = place[k], global_[k] += place[k];
   PetscCall(PetscSFCreate(comm_, &sf_));
-  PetscCall(PetscSFSetGraph(sf_, static_cast<PetscInt>(slots_.size()), static_cast<PetscInt>(remote.size()), nullptr,
+  PetscCall(PetscSFSetGraph(sf_, static_cast<PetscInt>(counts_.mine), static_cast<PetscInt>(remote.size()), nullptr,
                             PETSC_COPY_VALUES, remote.data(), PETSC_COPY_VALUES));
   PetscCall(PetscSFSetUp(sf_));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PointExchange::SendPoints(const std::vector<double>& mine, PetscInt n) {
+PetscErrorCode PointExchange::SendPoints(const std::vector<double>& mine) {
   PetscFunctionBeginUser;
-  std::vector<double> send(slots_.size() * stride_);
-  std::vector<PetscInt> index(slots_.size());
-  for (std::size_t s = 0; s < slots_.size(); ++s) {
-    std::copy_n(&mine[stride_ * slots_[s]], stride_, &send[stride_ * s]);
-    index[s] = first_ + slots_[s];
-  }
-  PetscInt leaves;
-  PetscCall(PetscSFGetGraph(sf_, nullptr, &leaves, nullptr, nullptr));
-  received_.resize(stride_ * leaves);
-  global_.resize(leaves);
+  received_.resize(stride_ * global_.size());
   MPI_Datatype unit;
   PetscCallMPI(MPI_Type_contiguous(static_cast<PetscMPIInt>(stride_), MPI_DOUBLE, &unit));
   PetscCallMPI(MPI_Type_commit(&unit));
-  PetscCall(PetscSFBcastBegin(sf_, unit, send.data(), received_.data(), MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(sf_, unit, send.data(), received_.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastBegin(sf_, unit, mine.data(), received_.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(sf_, unit, mine.data(), received_.data(), MPI_REPLACE));
   PetscCallMPI(MPI_Type_free(&unit));
-  PetscCall(PetscSFBcastBegin(sf_, MPIU_INT, index.data(), global_.data(), MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(sf_, MPIU_INT, index.data(), global_.data(), MPI_REPLACE));
-  counts_.mine = static_cast<std::size_t>(n);
   counts_.sent = slots_.size();
-  counts_.received = static_cast<std::size_t>(leaves);
+  counts_.received = global_.size();
+  const PetscInt n = static_cast<PetscInt>(counts_.mine);
   PetscCallMPI(MPI_Allreduce(&n, &counts_.total, 1, MPIU_INT, MPI_SUM, comm_));
-  // The point buffers (sent, received) and their indices (slots, global indices, the SF's remote roots).
-  counts_.bytes = sizeof(double) * stride_ * (counts_.sent + counts_.received) +
-                  sizeof(PetscInt) * (2 * counts_.sent + counts_.received) + sizeof(PetscSFNode) * counts_.received;
+  // The points received, their global indices and the SF's remote roots (kept), the slots (setup only).
+  counts_.bytes = (sizeof(double) * stride_ + sizeof(PetscInt) + sizeof(PetscSFNode)) * counts_.received +
+                  sizeof(PetscInt) * counts_.sent;
+  std::vector<PetscInt>().swap(slots_);
   PetscCall(PetscInfo(nullptr, "point exchange: %zu points here, %zu copies sent, %zu received of %" PetscInt_FMT
-                           " in all; %zu bytes (an all-gather: %zu)\n", counts_.mine, counts_.sent, counts_.received,
-                      counts_.total, counts_.bytes, sizeof(double) * stride_ * static_cast<std::size_t>(counts_.total)));
+                               " in all; %zu bytes (an all-gather: %zu)\n", counts_.mine, counts_.sent,
+                      counts_.received, counts_.total, counts_.bytes,
+                      sizeof(double) * stride_ * static_cast<std::size_t>(counts_.total)));
   PetscFunctionReturn(0);
 }
 
@@ -155,14 +163,12 @@ PetscErrorCode PointExchange::Settle(const std::vector<char>& accepted, const st
   PetscCall(PetscLogEventBegin(event, 0, 0, 0, 0));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
-  std::vector<int> leaf(accepted.size()), root(slots_.size(), INT_MAX), owner(counts_.mine, INT_MAX);
+  std::vector<int> leaf(accepted.size()), owner(counts_.mine, INT_MAX);
   for (std::size_t k = 0; k < accepted.size(); ++k) leaf[k] = accepted[k] ? rank : INT_MAX;
-  PetscCall(PetscSFReduceBegin(sf_, MPI_INT, leaf.data(), root.data(), MPI_MIN));
-  PetscCall(PetscSFReduceEnd(sf_, MPI_INT, leaf.data(), root.data(), MPI_MIN));
-  for (std::size_t s = 0; s < slots_.size(); ++s) owner[slots_[s]] = std::min(owner[slots_[s]], root[s]);
-  for (std::size_t s = 0; s < slots_.size(); ++s) root[s] = owner[slots_[s]];
-  PetscCall(PetscSFBcastBegin(sf_, MPI_INT, root.data(), leaf.data(), MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(sf_, MPI_INT, root.data(), leaf.data(), MPI_REPLACE));
+  PetscCall(PetscSFReduceBegin(sf_, MPI_INT, leaf.data(), owner.data(), MPI_MIN));  // each point's candidates
+  PetscCall(PetscSFReduceEnd(sf_, MPI_INT, leaf.data(), owner.data(), MPI_MIN));
+  PetscCall(PetscSFBcastBegin(sf_, MPI_INT, owner.data(), leaf.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(sf_, MPI_INT, owner.data(), leaf.data(), MPI_REPLACE));
   owned->clear();
   for (std::size_t k = 0; k < leaf.size(); ++k)
     if (leaf[k] == rank) owned->push_back(k);

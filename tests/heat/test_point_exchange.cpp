@@ -42,7 +42,9 @@ TEST(PointExchange, EachPointGoesToTheBoxesHoldingItAndToOneOwner) {
     const double* p = &exchange.received()[kStride * k];
     EXPECT_GE(p[0], box.lo[0] - 1e-9);  // only the points of this rank's box came
     EXPECT_LE(p[0], box.hi[0] + 1e-9);
-    if (k > 0) EXPECT_LT(exchange.global_index(k - 1), exchange.global_index(k));  // by global index
+    if (k > 0) {
+      EXPECT_LT(exchange.global_index(k - 1), exchange.global_index(k));  // by global index
+    }
     const PetscInt sender = static_cast<PetscInt>(p[3]) / 1000, place = static_cast<PetscInt>(p[3]) % 1000;
     EXPECT_EQ(exchange.global_index(k), sender * static_cast<PetscInt>(2 * size + 1) + place);
     accepted[k] = p[0] >= box.lo[0] && p[0] <= box.hi[0];
@@ -60,7 +62,9 @@ TEST(PointExchange, EachPointGoesToTheBoxesHoldingItAndToOneOwner) {
   unsigned long long mine_owned = owned.size(), all_owned = 0;
   MPI_Allreduce(&mine_owned, &all_owned, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
   EXPECT_EQ(all_owned, static_cast<unsigned long long>(points - size));  // all but the lost, once each
-  if (size > 1) EXPECT_LT(n, static_cast<std::size_t>(points));
+  if (size > 1) {
+    EXPECT_LT(n, static_cast<std::size_t>(points));
+  }
   EXPECT_EQ(lost.count, size);
   EXPECT_EQ(lost.first, static_cast<PetscInt>(2 * size));  // rank 0's last
   EXPECT_EQ(lost.x[0], 2.0);

@@ -216,8 +216,11 @@ TEST_P(WaveToHeatOnRanks, EqualsTheSerialTransferAndNoRankSeesEveryPoint) {
   EXPECT_EQ(all_points, static_cast<unsigned long long>(counts.total));
   PetscMPIInt size;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  if (size > 1) EXPECT_LT(counts.received, static_cast<std::size_t>(counts.total));
-  else EXPECT_EQ(counts.received, static_cast<std::size_t>(counts.total));
+  if (size > 1) {
+    EXPECT_LT(counts.received, static_cast<std::size_t>(counts.total));
+  } else {
+    EXPECT_EQ(counts.received, static_cast<std::size_t>(counts.total));
+  }
   for (Mat* M : {&B, &serial}) MatDestroy(M);
   VecDestroy(&u);
   VecDestroy(&integrals);

@@ -4,9 +4,9 @@
 // Each rank gives a box (its cells' bounding box, inflated here by a relative
 // tolerance) and its points (packed, `stride` doubles each, x, y, z first; z = 0 in
 // 2D). The boxes alone are all-gathered (6 doubles a rank); each point goes to the
-// ranks whose box holds it, along a PetscSF whose roots are this rank's (point,
-// destination) slots and whose leaves are the copies the destinations receive
-// (PetscCommBuildTwoSided tells each rank who sends how many). A rank receives its
+// ranks whose box holds it, along a PetscSF whose roots are this rank's points and
+// whose leaves are the copies the destinations receive (PetscCommBuildTwoSided tells
+// each rank who sends how many; a first SF over the copies tells it which). A rank receives its
 // points in the order of their global index (sender's rank, then its list), so a
 // loop over them runs as a loop over the gathered list did.
 //
@@ -72,13 +72,13 @@ class PointExchange {
   PetscErrorCode SendLists(const std::vector<double>& mine, std::vector<PetscMPIInt>* ranks,
                            std::vector<PetscInt>* sizes);
   PetscErrorCode BuildGraph(const std::vector<PetscMPIInt>& ranks, const std::vector<PetscInt>& sizes);
-  PetscErrorCode SendPoints(const std::vector<double>& mine, PetscInt n);
+  PetscErrorCode SendPoints(const std::vector<double>& mine);
   PetscErrorCode FindLost(const std::vector<int>& owner, const std::vector<double>& mine, LostPoints* lost);
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   std::size_t stride_ = 0;
   std::vector<Box> boxes_;       ///< every rank's inflated box
-  std::vector<PetscInt> slots_;  ///< this rank's point of each root (by destination rank, then point)
+  std::vector<PetscInt> slots_;  ///< during Setup: the point of each copy sent (by destination rank, then point)
   std::vector<double> received_;
   std::vector<PetscInt> global_;
   PetscInt first_ = 0;  ///< global index of this rank's first point
