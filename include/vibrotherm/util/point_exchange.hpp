@@ -14,7 +14,7 @@
 // them in a cell); the lowest accepting rank of each point is its owner, decided
 // over the point's candidates only (an SF reduce with MPI_MIN to the sender, then a
 // bcast back). A point no rank accepts is counted and named (Lost): the caller's error.
-// Memory per rank: the points it sends and receives, not the global total.
+// Memory per rank: the points it receives (sent from the caller's own list), not the global total.
 #pragma once
 
 #include <petscsf.h>
