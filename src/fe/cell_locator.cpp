@@ -45,6 +45,8 @@ PetscErrorCode CellLocator::Setup(const LagrangeSpace& space) {
       }
     cells_.push_back(cell);
   }
+  for (int d = 0; d < 3; ++d)
+    bounds_.lo[d] = d < D || cells_.empty() ? lo[d] : 0.0, bounds_.hi[d] = d < D || cells_.empty() ? hi[d] : 0.0;
   if (cells_.empty()) PetscFunctionReturn(0);
   first_point_ = cells_.front().point;
   index_of_point_.assign(cells_.back().point - first_point_ + 1, std::numeric_limits<std::size_t>::max());

@@ -7,6 +7,11 @@
 //    space reproduces it, so ∇·u = tr G at every point): the inverse Jacobian's every entry
 //    and every displacement component count, and every heat point is found once;
 //  - the damping kernel (φ) applied to a unit displacement gives dim ∫ψ_h (Σ_a φ_a = 1).
+// And on ranks (issue 40, item 4: the heat points go by a PetscSF to the ranks whose wave
+// cells' box holds them, no all-gather), both meshes in slabs: the transfer is the serial one
+// (its entries' sum and norm) and exact on an affine field, every point owned once, no rank
+// receives every point, and a heat point in no wave cell is still the error it was.
+#include <array>
 #include <cmath>
 
 #include "box_mesh_support.hpp"
@@ -40,6 +45,37 @@ PetscErrorCode BasisIntegrals(const fe::LagrangeSpace& heat, Vec* integrals) {
   PetscFunctionReturn(0);
 }
 
+/// max |T u − expected ∫ψ_h| relative to max |expected ∫ψ_h| (integrals: ∫ψ_h).
+double RelativeMisfit(Mat T, Vec u, Vec integrals, double expected) {
+  Vec Tu, want;
+  MatCreateVecs(T, nullptr, &Tu);
+  MatMult(T, u, Tu);
+  VecDuplicate(integrals, &want);
+  VecCopy(integrals, want);
+  VecScale(want, expected);
+  PetscReal scale, error;
+  VecNorm(want, NORM_INFINITY, &scale);
+  VecAXPY(Tu, -1.0, want);
+  VecNorm(Tu, NORM_INFINITY, &error);
+  VecDestroy(&Tu);
+  VecDestroy(&want);
+  return error / scale;
+}
+
+/// An affine displacement u = G x + c with a full G on the wave space; its divergence tr G.
+PetscErrorCode AffineDisplacement(const fe::LagrangeSpace& wave, Vec* u, double* trace) {
+  const int dim = wave.dim();
+  const double G[3][3] = {{0.7, -0.4, 0.25}, {0.3, -1.1, 0.6}, {-0.5, 0.45, 0.9}}, c[3] = {0.2, -0.1, 0.3};
+  *trace = 0.0;
+  for (int d = 0; d < dim; ++d) *trace += G[d][d];
+  return NodalField(wave, [&](const double* x, double* v) {
+    for (int i = 0; i < dim; ++i) {
+      v[i] = c[i];
+      for (int j = 0; j < dim; ++j) v[i] += G[i][j] * x[j];
+    }
+  }, u);
+}
+
 class WaveToHeat : public ::testing::TestWithParam<BoxCase> {
  protected:
   void SetUp() override {
@@ -59,39 +95,16 @@ class WaveToHeat : public ::testing::TestWithParam<BoxCase> {
     DMDestroy(&wave_dm_);
     DMDestroy(&heat_dm_);
   }
-  /// max |T u − expected ∫ψ_h| relative to max |expected ∫ψ_h|.
-  double Misfit(Mat T, Vec u, double expected) {
-    Vec Tu, want;
-    MatCreateVecs(T, nullptr, &Tu);
-    MatMult(T, u, Tu);
-    VecDuplicate(integrals_, &want);
-    VecCopy(integrals_, want);
-    VecScale(want, expected);
-    PetscReal scale, error;
-    VecNorm(want, NORM_INFINITY, &scale);
-    VecAXPY(Tu, -1.0, want);
-    VecNorm(Tu, NORM_INFINITY, &error);
-    VecDestroy(&Tu);
-    VecDestroy(&want);
-    return error / scale;
-  }
+  double Misfit(Mat T, Vec u, double expected) { return RelativeMisfit(T, u, integrals_, expected); }
   DM wave_dm_ = nullptr, heat_dm_ = nullptr;
   fe::LagrangeSpace wave_, heat_;
   Vec integrals_ = nullptr;
 };
 
 TEST_P(WaveToHeat, ThermoelasticTransferTakesTheDivergenceOfAnAffineDisplacement) {
-  const int dim = GetParam().dim;
-  const double G[3][3] = {{0.7, -0.4, 0.25}, {0.3, -1.1, 0.6}, {-0.5, 0.45, 0.9}}, c[3] = {0.2, -0.1, 0.3};
-  double trace = 0.0;
-  for (int d = 0; d < dim; ++d) trace += G[d][d];
   Vec u;
-  ASSERT_EQ(NodalField(wave_, [&](const double* x, double* v) {
-    for (int i = 0; i < dim; ++i) {
-      v[i] = c[i];
-      for (int j = 0; j < dim; ++j) v[i] += G[i][j] * x[j];
-    }
-  }, &u), 0);
+  double trace;
+  ASSERT_EQ(AffineDisplacement(wave_, &u, &trace), 0);
   const double beta_T0 = 3.7;
   Mat B;
   ASSERT_EQ(coupling::AssembleThermoelasticTransfer(wave_, heat_, beta_T0, &B), 0);
@@ -114,6 +127,120 @@ TEST_P(WaveToHeat, DampingKernelSumsTheWaveBasisToOne) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Boxes, WaveToHeat, ::testing::ValuesIn(AllBoxCases()), BoxCaseName);
+
+/// The box [0, kBoxUpper × scale] of faces cells on comm; on several ranks distributed by the simple
+/// partitioner (cells in their order: each rank a slab across the last axis, apart from the others).
+PetscErrorCode SlabBox(MPI_Comm comm, int dim, const PetscInt* faces, double scale, DM* dm) {
+  PetscFunctionBeginUser;
+  const PetscReal lower[3] = {0, 0, 0};
+  const PetscReal upper[3] = {scale * kBoxUpper[0], scale * kBoxUpper[1], scale * kBoxUpper[2]};
+  PetscCall(DMPlexCreateBoxMesh(comm, dim, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, dm));
+  PetscPartitioner partitioner;
+  PetscCall(DMPlexGetPartitioner(*dm, &partitioner));
+  PetscCall(PetscPartitionerSetType(partitioner, PETSCPARTITIONERSIMPLE));
+  DM distributed = nullptr;
+  PetscCall(DMPlexDistribute(*dm, 0, nullptr, &distributed));
+  if (distributed) {
+    PetscCall(DMDestroy(dm));
+    *dm = distributed;
+  }
+  PetscFunctionReturn(0);
+}
+
+/// Σ of T's entries and its Frobenius norm: the same whatever the numbering of rows and columns.
+std::array<double, 2> Invariants(Mat T) {
+  Vec ones, Tones;
+  MatCreateVecs(T, &ones, &Tones);
+  VecSet(ones, 1.0);
+  MatMult(T, ones, Tones);
+  PetscScalar sum;
+  PetscReal norm;
+  VecSum(Tones, &sum);
+  MatNorm(T, NORM_FROBENIUS, &norm);
+  VecDestroy(&ones);
+  VecDestroy(&Tones);
+  return {PetscRealPart(sum), norm};
+}
+
+/// Wave (Q2) and heat (Q1) box meshes of other cells, each in slabs over the ranks (issue 40,
+/// item 4): the transfer is the one serial meshes give, and the heat points do not all reach
+/// every rank (they went to the ranks whose wave cells' box holds them, not by an all-gather).
+class WaveToHeatOnRanks : public ::testing::TestWithParam<int> {
+ protected:
+  void SetUp() override {
+    const int dim = GetParam();
+    ASSERT_EQ(SlabBox(PETSC_COMM_WORLD, dim, kWaveFaces, 1.0, &wave_dm_), 0);
+    ASSERT_EQ(SlabBox(PETSC_COMM_WORLD, dim, kHeatFaces, 1.0, &heat_dm_), 0);
+    ASSERT_EQ(wave_.Setup(wave_dm_, 2, dim), 0);
+    ASSERT_EQ(heat_.Setup(heat_dm_, 1, 1), 0);
+  }
+  void TearDown() override {
+    DMDestroy(&wave_dm_);
+    DMDestroy(&heat_dm_);
+  }
+  static constexpr PetscInt kWaveFaces[3] = {5, 4, 6}, kHeatFaces[3] = {4, 3, 7};
+  DM wave_dm_ = nullptr, heat_dm_ = nullptr;
+  fe::LagrangeSpace wave_, heat_;
+};
+
+TEST_P(WaveToHeatOnRanks, EqualsTheSerialTransferAndNoRankSeesEveryPoint) {
+  const int dim = GetParam();
+  const double beta_T0 = 3.7;
+  Mat B;
+  util::ExchangeCounts counts;
+  ASSERT_EQ(coupling::AssembleWaveToHeat(wave_, heat_, [&](double, double d) { return -beta_T0 * d; }, &B, &counts),
+            0);
+  // The divergence of an affine displacement, exact: every heat point assembled once.
+  Vec u, integrals;
+  double trace;
+  ASSERT_EQ(AffineDisplacement(wave_, &u, &trace), 0);
+  ASSERT_EQ(BasisIntegrals(heat_, &integrals), 0);
+  EXPECT_LT(RelativeMisfit(B, u, integrals, -beta_T0 * trace), 1e-12);
+  // The same meshes whole on this rank: the same matrix up to numbering (and summation order).
+  DM wave_dm, heat_dm;
+  fe::LagrangeSpace wave, heat;
+  Mat serial;
+  ASSERT_EQ(SlabBox(PETSC_COMM_SELF, dim, kWaveFaces, 1.0, &wave_dm), 0);
+  ASSERT_EQ(SlabBox(PETSC_COMM_SELF, dim, kHeatFaces, 1.0, &heat_dm), 0);
+  ASSERT_EQ(wave.Setup(wave_dm, 2, dim), 0);
+  ASSERT_EQ(heat.Setup(heat_dm, 1, 1), 0);
+  ASSERT_EQ(coupling::AssembleThermoelasticTransfer(wave, heat, beta_T0, &serial), 0);
+  const std::array<double, 2> mine = Invariants(B), want = Invariants(serial);
+  EXPECT_NEAR(mine[0], want[0], 1e-12 * want[1]);
+  EXPECT_NEAR(mine[1], want[1], 1e-12 * want[1]);
+  // Each point owned once; on several ranks, none received them all.
+  unsigned long long owned = counts.owned, points = counts.mine, all_owned = 0, all_points = 0;
+  MPI_Allreduce(&owned, &all_owned, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  MPI_Allreduce(&points, &all_points, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  EXPECT_EQ(all_owned, static_cast<unsigned long long>(counts.total));
+  EXPECT_EQ(all_points, static_cast<unsigned long long>(counts.total));
+  PetscMPIInt size;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (size > 1) {
+    EXPECT_LT(counts.received, static_cast<std::size_t>(counts.total));
+  } else {
+    EXPECT_EQ(counts.received, static_cast<std::size_t>(counts.total));
+  }
+  for (Mat* M : {&B, &serial}) MatDestroy(M);
+  VecDestroy(&u);
+  VecDestroy(&integrals);
+  DMDestroy(&wave_dm);
+  DMDestroy(&heat_dm);
+}
+
+TEST_P(WaveToHeatOnRanks, AHeatPointInNoWaveCellIsAnError) {
+  DM big_dm;  // a heat mesh reaching beyond the wave mesh
+  fe::LagrangeSpace big;
+  ASSERT_EQ(SlabBox(PETSC_COMM_WORLD, GetParam(), kHeatFaces, 1.1, &big_dm), 0);
+  ASSERT_EQ(big.Setup(big_dm, 1, 1), 0);
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  Mat B = nullptr;
+  EXPECT_EQ(coupling::AssembleThermoelasticTransfer(wave_, big, 1.0, &B), PETSC_ERR_PLIB);
+  PetscPopErrorHandler();
+  DMDestroy(&big_dm);
+}
+
+INSTANTIATE_TEST_SUITE_P(Dims, WaveToHeatOnRanks, ::testing::Values(2, 3));
 
 }  // namespace
 }  // namespace vibrotherm::testing

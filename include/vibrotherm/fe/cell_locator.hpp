@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/util/point_exchange.hpp"
 
 namespace vibrotherm::fe {
 
@@ -27,6 +28,8 @@ class CellLocator {
   /// 2D forms of the two above.
   void Locate(double x, double y, PetscInt* cell, std::array<double, 2>* ref) const;
   std::array<double, 4> Jacobian(PetscInt cell, const std::array<double, 2>& ref) const;
+  /// The bounding box of the local cells' corners (z from 0 to 0 in 2D; empty when no cells).
+  const util::Box& bounds() const { return bounds_; }
 
  private:
   struct Cell {
@@ -49,6 +52,7 @@ class CellLocator {
   double bin_ = 1;
   std::array<int, 3> bins_per_axis_ = {0, 0, 1};
   std::vector<std::vector<std::size_t>> bins_;
+  util::Box bounds_;
 };
 
 }  // namespace vibrotherm::fe

@@ -3,10 +3,8 @@
 #include <petscdmplex.h>
 
 #include <algorithm>
-#include <climits>
 
-#include "vibrotherm/fe/cell_locator.hpp"
-#include "vibrotherm/util/all_gather.hpp"
+#include "vibrotherm/fe/point_owners.hpp"
 #include "vibrotherm/util/two_pass_matrix.hpp"
 
 namespace vibrotherm::coupling {
@@ -14,47 +12,12 @@ namespace {
 
 constexpr std::size_t kPointFields = 4;  ///< x, y, z, area
 
-/// Every rank's points (kPointFields doubles each) on every rank, and this rank's first global index.
-PetscErrorCode GatherPoints(MPI_Comm comm, const SurfacePoints& mine, std::vector<double>* all, PetscInt* first) {
-  PetscFunctionBeginUser;
+/// This rank's points, packed (kPointFields doubles each).
+std::vector<double> PackPoints(const SurfacePoints& mine) {
   std::vector<double> packed;
   for (std::size_t p = 0; p < mine.size(); ++p)
     packed.insert(packed.end(), {mine.x[p][0], mine.x[p][1], mine.x[p][2], mine.area[p]});
-  PetscCall(util::AllGather(comm, packed, all));
-  const PetscInt owned = static_cast<PetscInt>(mine.size());
-  *first = 0;
-  PetscCallMPI(MPI_Exscan(&owned, first, 1, MPIU_INT, MPI_SUM, comm));
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) *first = 0;  // MPI_Exscan leaves rank 0's result undefined
-  PetscFunctionReturn(0);
-}
-
-/// The local cell and reference point of every point, and the rank that adds it (the lowest holding it).
-PetscErrorCode LocateOnce(const fe::LagrangeSpace& heat, const std::vector<double>& all, std::vector<PetscInt>* cells,
-                          std::vector<fe::ReferencePoint>* refs, std::vector<int>* owner) {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)heat.dm());
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  const std::size_t n = all.size() / kPointFields;
-  fe::CellLocator locator;
-  PetscCall(locator.Setup(heat));
-  cells->assign(n, -1);
-  refs->assign(n, fe::ReferencePoint{});
-  owner->assign(n, INT_MAX);
-  for (std::size_t i = 0; i < n; ++i) {
-    locator.Locate(&all[kPointFields * i], &(*cells)[i], &(*refs)[i]);
-    if ((*cells)[i] >= 0) (*owner)[i] = rank;
-  }
-  if (n > 0) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, owner->data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
-  const auto lost = std::find(owner->begin(), owner->end(), INT_MAX);
-  if (lost != owner->end()) {
-    const double* x = &all[kPointFields * static_cast<std::size_t>(lost - owner->begin())];
-    SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "surface heat source: the point (%g, %g, %g) is outside the heat mesh",
-            x[0], x[1], x[2]);
-  }
-  PetscFunctionReturn(0);
+  return packed;
 }
 
 }  // namespace
@@ -72,29 +35,33 @@ PetscErrorCode SurfaceHeatTransfer::Setup(const fe::LagrangeSpace& heat, const S
              heat.dim());
   PetscCheck(mine.area.size() == mine.x.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%zu areas for %zu points",
              mine.area.size(), mine.x.size());
-  std::vector<double> all;
-  PetscCall(GatherPoints(comm, mine, &all, &first_point_));
-  std::vector<PetscInt> cells;
-  std::vector<fe::ReferencePoint> refs;
-  std::vector<int> owner;
-  PetscCall(LocateOnce(heat, all, &cells, &refs, &owner));
+  const std::vector<double> packed = PackPoints(mine);
+  fe::CellLocator locator;
+  PetscCall(locator.Setup(heat));
+  util::PointExchange exchange;
+  fe::LocatedPoints located;
+  PetscCall(fe::LocateOnRanks(locator, comm, packed, kPointFields, &exchange, &located));
+  if (located.lost.count > 0)
+    SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "surface heat source: the point (%g, %g, %g) is outside the heat mesh",
+            located.lost.x[0], located.lost.x[1], located.lost.x[2]);
   Vec shape;
   PetscInt rows, global_rows;
   PetscCall(DMGetGlobalVector(dm, &shape));
   PetscCall(VecGetLocalSize(shape, &rows));
   PetscCall(VecGetSize(shape, &global_rows));
   PetscCall(DMRestoreGlobalVector(dm, &shape));
-  const PetscInt n = static_cast<PetscInt>(owner.size()), owned = static_cast<PetscInt>(mine.size());
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  area_ = 0.0;
-  for (PetscInt i = 0; i < n; ++i) area_ += all[kPointFields * i + 3];
+  const PetscInt n = exchange.counts().total, owned = static_cast<PetscInt>(mine.size());
+  first_point_ = exchange.first();
+  double area = 0.0;  // this rank's points in order, then the ranks' sums
+  for (std::size_t p = 0; p < mine.size(); ++p) area += mine.area[p];
+  PetscCallMPI(MPI_Allreduce(&area, &area_, 1, MPI_DOUBLE, MPI_SUM, comm));
   Mat pattern;  // a heat node at a crack meets a hundred points or more
   PetscCall(util::CreateTwoPassMatrices(comm, rows, owned, global_rows, n, &pattern, &transfer_));
   for (Mat T : {pattern, transfer_}) {
     if (T == transfer_) PetscCall(MatPreallocatorPreallocate(pattern, PETSC_TRUE, transfer_));
-    for (PetscInt i = 0; i < n; ++i)
-      if (owner[i] == rank) PetscCall(AddColumn(heat, T, i, cells[i], refs[i], all[kPointFields * i + 3]));
+    for (std::size_t k : located.owned)
+      PetscCall(AddColumn(heat, T, exchange.global_index(k), located.cells[k], located.refs[k],
+                          exchange.received()[kPointFields * k + 3]));
     PetscCall(MatAssemblyBegin(T, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(T, MAT_FINAL_ASSEMBLY));
   }

@@ -3,50 +3,46 @@
 #include <petscdmplex.h>
 
 #include <array>
-#include <climits>
 #include <vector>
 
-#include "vibrotherm/fe/cell_locator.hpp"
-#include "vibrotherm/util/all_gather.hpp"
+#include "vibrotherm/fe/point_owners.hpp"
 #include "vibrotherm/util/two_pass_matrix.hpp"
 
 namespace vibrotherm::coupling {
 namespace {
 
-/// Every rank's heat quadrature points as every rank sees them, packed: per point where
-/// (x, y, z; z = 0 in 2D), its weight, its heat cell's nodes' global rows, their basis values.
+/// Heat quadrature points, packed: per point where (x, y, z; z = 0 in 2D), its weight,
+/// its heat cell's nodes' global rows, their basis values (this rank's, or those it received).
 struct HeatPoints {
-  std::vector<double> packed;
+  const std::vector<double>* packed = nullptr;
   int nodes = 0;  ///< heat nodes per cell
   std::size_t stride() const { return 4 + 2 * static_cast<std::size_t>(nodes); }
-  std::size_t size() const { return packed.size() / stride(); }
-  const double* at(std::size_t i) const { return &packed[stride() * i]; }
+  const double* at(std::size_t i) const { return &(*packed)[stride() * i]; }
 };
 
-/// Gathers HeatPoints from every rank. Collective.
-PetscErrorCode GatherHeatPoints(const fe::LagrangeSpace& heat, HeatPoints* all) {
+/// This rank's heat quadrature points, packed as HeatPoints.
+PetscErrorCode PackHeatPoints(const fe::LagrangeSpace& heat, std::vector<double>* mine) {
   PetscFunctionBeginUser;
   DM dm = heat.dm();
   PetscSection local, global;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
   const int nb = heat.nodes_per_cell(), dim = heat.dim();
-  std::vector<double> mine, xyz;
+  std::vector<double> xyz;
   fe::CellQuadrature q;
+  mine->clear();
   for (PetscInt c : heat.cells()) {
     PetscCall(heat.Evaluate(c, &q));
     PetscCall(heat.QuadraturePoints(c, &xyz));
     PetscInt n, *rows = nullptr;
     PetscCall(DMPlexGetClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
     for (int p = 0; p < q.points; ++p) {
-      mine.insert(mine.end(), {xyz[dim * p], xyz[dim * p + 1], dim == 3 ? xyz[dim * p + 2] : 0.0, q.weight[p]});
-      for (int b = 0; b < nb; ++b) mine.push_back(static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)));
-      mine.insert(mine.end(), q.value + p * nb, q.value + (p + 1) * nb);
+      mine->insert(mine->end(), {xyz[dim * p], xyz[dim * p + 1], dim == 3 ? xyz[dim * p + 2] : 0.0, q.weight[p]});
+      for (int b = 0; b < nb; ++b) mine->push_back(static_cast<double>(rows[b] >= 0 ? rows[b] : -(rows[b] + 1)));
+      mine->insert(mine->end(), q.value + p * nb, q.value + (p + 1) * nb);
     }
     PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &rows, nullptr, nullptr));
   }
-  all->nodes = nb;
-  PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, &all->packed));
   PetscFunctionReturn(0);
 }
 
@@ -63,43 +59,10 @@ std::array<double, 9> Inverse(const std::array<double, 9>& J, int dim) {
           c02 / det, (J[1] * J[6] - J[0] * J[7]) / det, (J[0] * J[4] - J[1] * J[3]) / det};
 }
 
-/// The heat quadrature points located in this rank's wave cells, each counted once: a
-/// point on a partition boundary belongs to the lowest rank holding it. Collective.
-struct LocatedPoints {
-  std::vector<PetscInt> cells;
-  std::vector<fe::ReferencePoint> refs;
-  std::vector<std::size_t> owned;  ///< indices of the points this rank assembles
-};
-PetscErrorCode LocateOwned(const fe::CellLocator& locator, const HeatPoints& points, MPI_Comm comm,
-                           LocatedPoints* located) {
-  PetscFunctionBeginUser;
-  const std::size_t n = points.size();
-  located->cells.assign(n, -1);
-  located->refs.assign(n, fe::ReferencePoint{0.0, 0.0, 0.0});
-  std::vector<int> mine(n, INT_MAX), owner(n);
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  for (std::size_t i = 0; i < n; ++i) {
-    locator.Locate(points.at(i), &located->cells[i], &located->refs[i]);
-    if (located->cells[i] >= 0) mine[i] = rank;
-  }
-  if (n) PetscCallMPI(MPI_Allreduce(mine.data(), owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN, comm));
-  std::size_t lost = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (owner[i] == rank) located->owned.push_back(i);
-    lost += owner[i] == INT_MAX;
-  }
-  // A point no wave cell holds would drop its share silently (and the damping transfer's
-  // column scaling would hide it): the two meshes must cover the same body.
-  PetscCheck(lost == 0, comm, PETSC_ERR_PLIB, "wave-to-heat transfer: %zu of %zu heat quadrature points lie in no wave cell",
-             lost, n);
-  PetscFunctionReturn(0);
-}
-
 /// The owned points in runs that share a heat cell (the same heat rows) and a wave cell:
 /// each run is one block of the transfer, so the matrix sees one insertion per run, not
 /// one per quadrature point (a heat cell inside one wave cell is a single run).
-std::vector<std::vector<std::size_t>> RunsOfPoints(const HeatPoints& points, const LocatedPoints& located) {
+std::vector<std::vector<std::size_t>> RunsOfPoints(const HeatPoints& points, const fe::LocatedPoints& located) {
   std::vector<std::vector<std::size_t>> runs;
   auto same_rows = [&](std::size_t i, std::size_t j) {
     for (int b = 0; b < points.nodes; ++b)
@@ -117,7 +80,7 @@ std::vector<std::vector<std::size_t>> RunsOfPoints(const HeatPoints& points, con
 /// A run's block of the transfer: its heat rows × its wave cell's closure dofs (node-major,
 /// dim components), summed over the run's points; the values only when `values` is given.
 PetscErrorCode RunBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& locator, const HeatPoints& points,
-                        const LocatedPoints& located, const std::vector<std::size_t>& run,
+                        const fe::LocatedPoints& located, const std::vector<std::size_t>& run,
                         const WaveToHeatKernel& kernel, std::vector<PetscInt>* rows, std::vector<PetscInt>* cols,
                         std::vector<double>* values) {
   PetscFunctionBeginUser;
@@ -159,15 +122,25 @@ PetscErrorCode RunBlock(const fe::LagrangeSpace& wave, const fe::CellLocator& lo
 }  // namespace
 
 PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
-                                  const WaveToHeatKernel& kernel, Mat* transfer) {
+                                  const WaveToHeatKernel& kernel, Mat* transfer, util::ExchangeCounts* counts) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)wave.dm());
-  HeatPoints points;
-  PetscCall(GatherHeatPoints(heat, &points));
+  std::vector<double> mine;
+  PetscCall(PackHeatPoints(heat, &mine));
   fe::CellLocator locator;
   PetscCall(locator.Setup(wave));
-  LocatedPoints located;
-  PetscCall(LocateOwned(locator, points, comm, &located));
+  HeatPoints points{nullptr, heat.nodes_per_cell()};
+  util::PointExchange exchange;
+  fe::LocatedPoints located;
+  PetscCall(fe::LocateOnRanks(locator, comm, mine, points.stride(), &exchange, &located));
+  // A point no wave cell holds would drop its share silently (and the damping transfer's
+  // column scaling would hide it): the two meshes must cover the same body.
+  PetscCheck(located.lost.count == 0, comm, PETSC_ERR_PLIB,
+             "wave-to-heat transfer: %" PetscInt_FMT " of %" PetscInt_FMT " heat quadrature points lie in no wave cell",
+             located.lost.count, exchange.counts().total);
+  if (counts) *counts = exchange.counts();
+  std::vector<double>().swap(mine);
+  points.packed = &exchange.received();
   Vec u;
   PetscInt rows, cols, global_rows, global_cols;
   PetscCall(DMGetGlobalVector(heat.dm(), &u));

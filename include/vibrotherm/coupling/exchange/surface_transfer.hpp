@@ -13,10 +13,11 @@
 // order of that rule on every face, exactly for a uniform density on faces of
 // the heat mesh's crack plane.)
 //
-// Each rank gives its own points (columns in that layout); every rank locates
-// all of them in its cells (fe::CellLocator) and the lowest rank holding a
-// point adds its column, so a point on a partition boundary is counted once
-// and 1 and N ranks build the same matrix. A point outside the heat mesh is an error.
+// Each rank gives its own points (columns in that layout); each point goes only
+// to the ranks whose heat cells' bounding box holds it (fe/point_owners.hpp, a
+// PetscSF), they locate it in their cells (fe::CellLocator) and the lowest rank
+// holding a point adds its column, so a point on a partition boundary is counted
+// once and 1 and N ranks build the same matrix. A point outside the heat mesh is an error.
 #pragma once
 
 #include <petscmat.h>

@@ -13,14 +13,18 @@
 #include <functional>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/util/point_exchange.hpp"
 
 namespace vibrotherm::coupling {
 
 /// The value at a quadrature point of ψ_h times this, for wave dof (node a, component k):
-/// kernel(φ_a, ∂φ_a/∂x_k). Integrated over the heat mesh's cells (their points located in the wave mesh).
+/// kernel(φ_a, ∂φ_a/∂x_k). Integrated over the heat mesh's cells (their points located in the wave mesh:
+/// each sent only to the ranks whose wave cells' bounding box holds it, util/point_exchange.hpp; what
+/// this rank's exchange moved in `counts` when given). Collective.
 using WaveToHeatKernel = std::function<double(double phi, double dphi_dxk)>;
 PetscErrorCode AssembleWaveToHeat(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
-                                  const WaveToHeatKernel& kernel, Mat* transfer);
+                                  const WaveToHeatKernel& kernel, Mat* transfer,
+                                  util::ExchangeCounts* counts = nullptr);
 
 /// B with beta_T0 = T0 β [Pa]. Collective over both meshes.
 PetscErrorCode AssembleThermoelasticTransfer(const fe::LagrangeSpace& wave, const fe::LagrangeSpace& heat,
