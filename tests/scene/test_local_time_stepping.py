@@ -106,8 +106,9 @@ with tempfile.TemporaryDirectory() as tmp:
               % (stiff["wave_lts_halvings"], lts["wave_dt"], stiff["wave_dt_final"]))
         check(math.isfinite(s["stiff"]["dissipated_energy"]), "the stiff contact stayed finite")
     unstable = os.path.join(tmp, "unstable")
-    r = subprocess.run([exe, "-options_file", os.path.join(src, "options/paper.opts"), "-wave_lts", "on",
-                        "-wave_lts_cfl", "0.9", "-final_time", "7e-4", "-output_times", "7e-4", "-periodic", "off",
+    # The paper mesh without its mirror-symmetric crack band (issue 41): the resonance was found on it.
+    r = subprocess.run([exe, "-options_file", os.path.join(src, "options/paper.opts"), "-mesh_crack_mirror", "off",
+                        "-wave_lts", "on", "-wave_lts_cfl", "0.9", "-final_time", "7e-4", "-output_times", "7e-4", "-periodic", "off",
                         "-output_dir", unstable],
                        capture_output=True, text=True)
     check(r.returncode == 1, "unstable LTS step: exit %d (want 1)" % r.returncode)
