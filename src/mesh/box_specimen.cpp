@@ -143,8 +143,6 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat grid's crack faces do not nest in %d sub-squares a side "
                           "of the wave grid's: the friction heat's transfer is conservative but not exact (make "
                           "-mesh_h_crack a multiple of -heat_mesh_h_along)\n", s->crack_face_subdivisions));
-  PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
-  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
   PetscFunctionReturn(0);
 }

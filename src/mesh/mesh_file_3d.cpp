@@ -190,8 +190,6 @@ PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, 
     PetscCall(PetscPrintf(comm, "vibrotherm: note: with -heat_mesh_file the friction heat's transfer is "
                           "conservative, exact only where the heat faces nest in 16 sub-squares a wave crack face\n"));
   }
-  PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
-  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
   PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
   PetscFunctionReturn(0);
 }

@@ -195,6 +195,18 @@ PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const Mesh
   PetscFunctionReturn(0);
 }
 
+/// Every specimen's tail, 2D or 3D: the wave mesh (split serially, LTS-weighted) and the
+/// heat mesh, each distributed by its own partition.
+PetscErrorCode DistributeSpecimen(const MeshLog& log, const LtsWeighting& lts, Specimen* s) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(log.distribute, 0, 0, 0, 0));
+  PetscCall(SetLtsPartitionWeights(s->wave, lts));
+  PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
+  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
+  PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 }  // namespace
 
 PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s, const LtsWeighting& lts) {
@@ -209,13 +221,12 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
   int file_dimension = 0;
   if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
-  if (file_dimension == 3) {
-    PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", s));
-    PetscCall(PetscLogStagePop());
-    PetscFunctionReturn(0);
-  }
-  if (geometry.depth > 0.0) {
-    PetscCall(CreateBoxSpecimen(comm, geometry, exchange_length, s));
+  if (file_dimension == 3 || geometry.depth > 0.0) {
+    if (file_dimension == 3)
+      PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", s));
+    else
+      PetscCall(CreateBoxSpecimen(comm, geometry, exchange_length, s));
+    PetscCall(DistributeSpecimen(log, lts, s));
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
   }
@@ -262,14 +273,10 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
 
   // Split serially, then distribute: the other order is broken in PETSc 3.18.
   // The heat mesh is partitioned on its own.
-  PetscCall(PetscLogEventBegin(log.distribute, 0, 0, 0, 0));
   s->wave = split;
   if (heat) PetscCall(DMDestroy(&serial));
   s->heat = heat ? heat : serial;
-  PetscCall(SetLtsPartitionWeights(s->wave, lts));
-  PetscCall(DistributeMesh(&s->wave, "wave_mesh", &s->wave_origin));
-  PetscCall(DistributeMesh(&s->heat, "heat_mesh", &s->heat_origin));
-  PetscCall(PetscLogEventEnd(log.distribute, 0, 0, 0, 0));
+  PetscCall(DistributeSpecimen(log, lts, s));
   const PetscInt ncracks = static_cast<PetscInt>(s->cracks.size());
   PetscCall(s->wave_cracks.Setup(s->wave, ncracks));
   PetscCall(s->heat_cracks.Setup(s->heat, ncracks));

@@ -1,6 +1,7 @@
 // A 3D box specimen (-specimen_depth > 0): the graded hexahedral grid with its
 // buried crack (box_grid.hpp, box_mesher.hpp), split serially with the crack front
-// in the boundary label (one cohesive cell per crack face, checked), distributed.
+// in the boundary label (one cohesive cell per crack face, checked); serial here,
+// SpecimenCreate distributes it.
 // The heat mesh is the box again, unsplit, on a grid with layers across the crack
 // plane (box_specimen.cpp). No crack surface gathers (wave_cracks, heat_cracks
 // empty: they are 2D; the friction heat finds the crack from the contact cells).

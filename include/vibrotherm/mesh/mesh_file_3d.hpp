@@ -22,7 +22,7 @@ namespace vibrotherm::mesh {
 /// read is refused naming -mesh_file and the file. Collective.
 PetscErrorCode MeshFileDimension(MPI_Comm comm, const std::string& path, int* dimension);
 
-/// The specimen of a 3D mesh file (wave: split and distributed; heat: unsplit, from
+/// The specimen of a 3D mesh file, serial (wave: split; heat: unsplit, from
 /// heat_file when not empty). Collective.
 PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, const std::string& heat_file,
                                         Specimen* s);

@@ -48,7 +48,6 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   }
   PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
-  PetscCheck(!s->wave.lts.on, comm, PETSC_ERR_USER_INPUT, "-wave_lts on is not supported in 3D yet");
   char type[64] = "velocityverlet", cell[16] = "quad";
   PetscInt refine = 0;
   PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));

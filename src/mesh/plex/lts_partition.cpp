@@ -2,6 +2,8 @@
 
 #include <petsc/private/partitionerimpl.h>  // usevwgt: PETSc 3.18 has no setter
 
+#include "vibrotherm/mesh/plex/plex_access.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -9,19 +11,22 @@
 namespace vibrotherm::mesh {
 namespace {
 
-/// The shortest edge of a cell (the lengths of its cone's faces).
+/// The shortest edge of a cell: the lengths of the depth-1 points of its closure (its
+/// cone in 2D, the edges of its faces in 3D).
 PetscErrorCode ShortestEdge(DM dm, PetscInt cell, double* h) {
   PetscFunctionBeginUser;
-  const PetscInt* cone;
-  PetscInt size;
-  PetscCall(DMPlexGetConeSize(dm, cell, &size));
-  PetscCall(DMPlexGetCone(dm, cell, &cone));
+  PetscInt eStart, eEnd, size;
+  PetscInt* closure = nullptr;
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
+  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &size, &closure));
   *h = INFINITY;
-  for (PetscInt k = 0; k < size; ++k) {
+  for (PetscInt k = 0; k < 2 * size; k += 2) {
+    if (closure[k] < eStart || closure[k] >= eEnd) continue;
     PetscReal length;
-    PetscCall(DMPlexComputeCellGeometryFVM(dm, cone[k], &length, nullptr, nullptr));
+    PetscCall(DMPlexComputeCellGeometryFVM(dm, closure[k], &length, nullptr, nullptr));
     *h = std::min(*h, static_cast<double>(length));
   }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &size, &closure));
   PetscFunctionReturn(0);
 }
 
@@ -37,9 +42,9 @@ PetscErrorCode SetLtsPartitionWeights(DM dm, const LtsWeighting& lts) {
   std::vector<double> h(cEnd - cStart, -1.0);
   double h_min = INFINITY;
   for (PetscInt c = cStart; c < cEnd; ++c) {
-    DMPolytopeType type;
-    PetscCall(DMPlexGetCellType(dm, c, &type));
-    if (type == DM_POLYTOPE_SEG_PRISM_TENSOR) continue;
+    bool cohesive;
+    PetscCall(IsCohesiveCell(dm, c, &cohesive));
+    if (cohesive) continue;
     PetscCall(ShortestEdge(dm, c, &h[c - cStart]));
     h_min = std::min(h_min, h[c - cStart]);
   }
