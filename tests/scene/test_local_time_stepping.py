@@ -18,10 +18,11 @@ on the paper scene's first 60 us (the crack starts to clap and rub):
     message naming -wave_lts_cfl, no output under its final name).
 
 usage: test_local_time_stepping.py VIBROTHERM MPIEXEC SOURCE_DIR"""
-import csv, json, math, os, subprocess, sys, tempfile
+import json, math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, run_scene
+import probe_traces
 
 exe, mpiexec, src = sys.argv[1:4]
 check = Checks("local time stepping")
@@ -30,36 +31,12 @@ base = ["-options_file", os.path.join(src, "options/paper.opts"), "-final_time",
 
 
 def traces(out):
-    """Per bulk probe (0-4) and component: (times, values)."""
-    series = {}
-    for row in csv.DictReader(open(os.path.join(out, "probes.csv"))):
-        if not row["probe"].isdigit() or int(row["probe"]) > 4:
-            continue
-        for c in ("ux", "uy"):
-            series.setdefault((row["probe"], c), []).append((float(row["t"]), float(row[c])))
-    return series
-
-
-def interpolate(points, t):
-    times = [p[0] for p in points]
-    # linear interpolation of a sorted series
-    import bisect
-    k = min(max(bisect.bisect_left(times, t), 1), len(points) - 1)
-    (t0, x0), (t1, x1) = points[k - 1], points[k]
-    return x0 + (x1 - x0) * (t - t0) / (t1 - t0) if t1 > t0 else x1
+    """Bulk probes 0-4, both components."""
+    return probe_traces.traces(out, ("ux", "uy"), range(5))
 
 
 def trace_error(out, ref):
-    """Largest relative L2 difference of the probe traces, on the reference's times."""
-    a, r = traces(out), traces(ref)
-    worst = 0.0
-    for key, points in r.items():
-        norm = math.sqrt(sum(x * x for _, x in points))
-        if norm == 0.0:
-            continue
-        diff = math.sqrt(sum((interpolate(a[key], t) - x) ** 2 for t, x in points if t <= a[key][-1][0]))
-        worst = max(worst, diff / norm)
-    return worst
+    return probe_traces.trace_error(traces(out), traces(ref))
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -91,10 +68,8 @@ with tempfile.TemporaryDirectory() as tmp:
         check(d_half < d_full, "dissipated energy converges (%g -> %g)" % (d_full, d_half))
         for name in ("lts", "lts_half", "lts_np2", "stiff"):
             check(s[name]["max_budget_error"] < 1e-3, "%s: energy budget error %g" % (name, s[name]["max_budget_error"]))
-        serial, parallel = traces(os.path.join(tmp, "lts")), traces(os.path.join(tmp, "lts_np2"))
-        scale = max(abs(x) for points in serial.values() for _, x in points)
-        worst = max(abs(x - y[1]) for key in serial for (_, x), y in zip(serial[key], parallel[key]))
-        check(worst <= 1e-9 * scale, "2 ranks = 1 rank (%g of the amplitude)" % (worst / scale))
+        worst = probe_traces.largest_difference(traces(os.path.join(tmp, "lts")), traces(os.path.join(tmp, "lts_np2")))
+        check(worst <= 1e-9, "2 ranks = 1 rank (%g of the amplitude)" % worst)
         d1, d2 = s["lts"]["dissipated_energy"], s["lts_np2"]["dissipated_energy"]
         check(abs(d1 - d2) <= 1e-9 * abs(d1), "dissipation on 2 ranks %r vs %r" % (d2, d1))
         stiff = s["stiff"]["derived"]
