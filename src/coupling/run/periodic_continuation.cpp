@@ -157,9 +157,9 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
     outlook_.Reset();
     PetscFunctionReturn(0);
   }
-  double drift, projected;
+  double drift, error, projected;
   bool allows;
-  PetscCall(DriftAllows(t, n, end, &drift, &projected, &allows));
+  PetscCall(DriftAllows(t, n, end, &drift, &error, &projected, &allows));
   if (!allows) {  // watch on: the drift and the periods left both shrink
     phase_ = Phase::kWatch;
     PetscFunctionReturn(0);
@@ -177,17 +177,16 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
   increments_[2] = increments_[1] - increments_[3] + increments_[4] + increments_[5] +
                    (crack ? increments_.back() : 0.0);
   row_end_ = row;
-  segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change(), drift, projected});
+  segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change(), drift, projected, error});
   PetscCall(Continue(recorder, t, n, continued));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double stretch_end, double* drift,
+PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* error,
                                                  double* projected, bool* allows) {
   PetscFunctionBeginUser;
-  double error;
   // The period found: 1 in mean mode (whose window may have widened since the recording began).
-  detector_.FrictionDrift(scene_->periodic.mean ? 1 : multiple_ / detector_.window(), drift, &error);
+  detector_.FrictionDrift(scene_->periodic.mean ? 1 : multiple_ / detector_.window(), drift, error);
   *projected = 0.5 * std::abs(*drift) * static_cast<double>(n * multiple_);
   const double tol = scene_->periodic.drift_tol;
   *allows = tol <= 0.0 || *projected <= tol;
@@ -198,18 +197,18 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
                           "Periodic at t = %.6g s but the friction per period still drifts by %.2g (+-%.1g) per period: "
                           "continuing %" PetscInt_FMT " periods would be off by ~%.2g (-periodic_drift_tol %g); the "
                           "waves run on\n",
-                          t, *drift, error, n * multiple_, *projected, tol));
-  } else if (*allows && WarnsOfDrift(*projected)) {
+                          t, *drift, *error, n * multiple_, *projected, tol));
+  } else if (*allows && WarnsOfDrift(*drift, *error, *projected)) {
     PetscCall(PetscPrintf(comm,
                           "Warning: the friction per period still drifts by %.2g (+-%.1g) per period; if that went on, "
                           "the %" PetscInt_FMT " periods continued would be off by ~%.2g (-periodic_drift_tol bounds it)\n",
-                          *drift, error, n * multiple_, *projected));
+                          *drift, *error, n * multiple_, *projected));
   }
   PetscFunctionReturn(0);
 }
 
-bool PeriodicContinuation::WarnsOfDrift(double projected) const {
-  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol;
+bool PeriodicContinuation::WarnsOfDrift(double drift, double error, double projected) const {
+  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol && std::abs(drift) > 2.0 * error;
 }
 
 PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, PetscInt n, bool* continued) {
@@ -380,9 +379,13 @@ PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
   if (!segments_.empty()) summary->derived["periodic_reached_at"] = segments_.front().detected;
   summary->derived["periodic_last_change"] = detector_.last_change();
   double projected = 0.0;
-  for (const Segment& s : segments_) projected = std::max(projected, s.projected);
+  bool warns = false;
+  for (const Segment& s : segments_) {
+    projected = std::max(projected, s.projected);
+    warns = warns || WarnsOfDrift(s.drift, s.drift_error, s.projected);
+  }
   summary->derived["periodic_drift_projected"] = projected;
-  if (WarnsOfDrift(projected)) {
+  if (warns) {
     char text[256];
     std::snprintf(text, sizeof(text), "the friction per period still drifted when the continuation froze it: the "
                   "continued heat may be off by ~%.2g (periodic[].drift_projected; -periodic_drift_tol bounds it)",

@@ -84,7 +84,7 @@ PetscErrorCode PeriodicContinuation::Save(store::Checkpoint& checkpoint) const {
   checkpoint.PutShared("periodic/rows", rows);
   for (const Segment& s : segments_)
     segments.insert(segments.end(), {s.detected, s.suspended, s.resumed, static_cast<double>(s.multiple),
-                                     static_cast<double>(s.periods), s.change, s.drift, s.projected});
+                                     static_cast<double>(s.periods), s.change, s.drift, s.projected, s.drift_error});
   checkpoint.PutShared("periodic/segments", segments);
   if (phase_ != Phase::kWatch) PutAccumulated(checkpoint, "periodic/start", accumulated_start_, cells);
   if (phase_ == Phase::kLadder) {
@@ -116,10 +116,11 @@ PetscErrorCode PeriodicContinuation::Restore(const store::Checkpoint& checkpoint
   row_end_ = Unflatten(rows.data() + kRowValues);
   PetscCall(checkpoint.GetShared("periodic/segments", &segments));
   segments_.clear();
-  constexpr std::size_t kSegmentValues = 8;
+  constexpr std::size_t kSegmentValues = 9;
   for (std::size_t i = 0; i + kSegmentValues <= segments.size(); i += kSegmentValues)
     segments_.push_back({segments[i], segments[i + 1], segments[i + 2], static_cast<PetscInt>(segments[i + 3]),
-                         static_cast<PetscInt>(segments[i + 4]), segments[i + 5], segments[i + 6], segments[i + 7]});
+                         static_cast<PetscInt>(segments[i + 4]), segments[i + 5], segments[i + 6], segments[i + 7],
+                         segments[i + 8]});
   if (phase_ != Phase::kWatch) PetscCall(GetAccumulated(checkpoint, "periodic/start", cells, &accumulated_start_));
   if (phase_ == Phase::kLadder) {
     PetscCall(GetAccumulated(checkpoint, "periodic/increments", cells, &increments_));

@@ -93,11 +93,14 @@ class PeriodicContinuation {
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
   PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
-  /// recorded periods; says so once per steady stretch when it does not. *drift, *projected: as Segment.
-  PetscErrorCode DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* projected, bool* allows);
+  /// recorded periods; says so once per steady stretch when it does not. *drift, *error,
+  /// *projected: as Segment.
+  PetscErrorCode DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* error, double* projected,
+                             bool* allows);
   /// A continuation that froze a drift costing more than 10 -periodic_tol is warned about
-  /// (console and summary), unless -periodic_drift_tol bounded it.
-  bool WarnsOfDrift(double projected) const;
+  /// (console and summary), unless -periodic_drift_tol bounded it or the drift is within two
+  /// standard errors of none (a scatter's slope is not a drift).
+  bool WarnsOfDrift(double drift, double error, double projected) const;
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
   PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
@@ -145,6 +148,7 @@ class PeriodicContinuation {
     PetscInt multiple, periods;
     double change;
     double drift, projected;  ///< the friction's relative drift per source period; half of it over the periods
+    double drift_error;       ///< the drift's standard error (its fit's)
   };
   std::vector<Segment> segments_;
   std::string note_;  ///< why it is off
