@@ -276,9 +276,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   PetscCall(PetscLogStageRegister("Output", &output_stage));
   double t = MPI_Wtime();
   PetscCall(PetscLogStagePush(output_stage));
-  // 3D: no mesh.h5 yet (the grids are written as 2D cells).
-  if (summary.mesh.dimension == 2)
-    PetscCall(io::WriteMeshes({{"wave", specimen.wave}, {"heat", specimen.heat}}, dir + "/mesh.h5"));
+  PetscCall(io::WriteMeshes({{"wave", specimen.wave}, {"heat", specimen.heat}}, dir + "/mesh.h5"));
   PetscCall(PetscLogStagePop());
   summary.stages["output"] = MPI_Wtime() - t;
   if (app.modes && !app.mesh_only) PetscCall(modes_run.Write(dir));
