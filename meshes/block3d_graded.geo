@@ -1,5 +1,6 @@
 // A block 20 x 20 x 10 mm (block3d_small's) with a buried crack 6 x 4 mm on the plane
-// y = 10 mm, meshed unstructured and graded: tetrahedra of about hc at the crack and 4 hc
+// y = 10 mm (along x: block3d_small's is turned 20 degrees), the source on the top face,
+// the bottom face absorbing, the others free; meshed unstructured and graded: tetrahedra of about hc at the crack and 4 hc
 // away from it, each split into four hexahedra (gmsh's SubdivisionAlgorithm 2), so that
 // local time stepping has cells of several sizes in 3D (tests/scene/test_local_time_stepping_3d.py).
 // Regenerate: gmsh meshes/block3d_graded.geo -3 -o meshes/block3d_graded.msh (Debian package gmsh)

@@ -302,7 +302,7 @@ class Run:
 
     def mesh(self, grid="wave"):
         """Mesh(nodes, cells) of a grid ("wave", "heat", "cracks"): from mesh.h5, else from the
-        first output holding it (fields.h5, modes.h5: 3D runs write no mesh.h5)."""
+        first output holding it (fields.h5, modes.h5: runs of builds before mesh.h5 was written in 3D)."""
         for name in ("mesh.h5", "fields.h5", "modes.h5"):
             if self.has(name):
                 try:

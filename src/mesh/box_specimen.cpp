@@ -7,7 +7,6 @@
 
 #include "vibrotherm/mesh/box_mesher.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
-#include "vibrotherm/mesh/plex/distribute.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::mesh {

@@ -11,7 +11,6 @@
 
 #include "gmsh_support.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
-#include "vibrotherm/mesh/plex/distribute.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"

@@ -26,9 +26,12 @@ def interpolate(points, t):
 
 
 def trace_error(run, reference):
-    """Largest relative L2 difference between two runs' traces, on the reference's times."""
+    """Largest relative L2 difference between two runs' traces, on the reference's times
+    (infinite when a trace is missing or the run ends a sample early)."""
     worst = 0.0
     for key, points in reference.items():
+        if key not in run or run[key][-1][0] < points[-1][0] - (points[-1][0] - points[-2][0]):
+            return math.inf
         norm = math.sqrt(sum(x * x for _, x in points))
         if norm == 0.0:
             continue
@@ -38,7 +41,10 @@ def trace_error(run, reference):
 
 
 def largest_difference(a, b):
-    """The largest sample-by-sample difference of two runs' traces over the largest value."""
+    """The largest sample-by-sample difference of two runs' traces over the largest value
+    (infinite when their probes or samples differ, or nothing moved)."""
+    if a.keys() != b.keys() or any(len(a[key]) != len(b[key]) for key in a):
+        return math.inf
     scale = max(abs(x) for points in a.values() for _, x in points)
     worst = max(abs(x - y[1]) for key in a for (_, x), y in zip(a[key], b[key]))
-    return worst / scale
+    return worst / scale if scale > 0.0 else math.inf

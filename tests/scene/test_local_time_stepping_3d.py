@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Requirement (issue 40, item 3): local time stepping (-wave_lts on) in 3D, on an
 unstructured hexahedral block whose cells at the crack are 4x smaller than away from it
-(meshes/block3d_graded.msh: block3d_small's block, crack and source), its first 20 us
+(meshes/block3d_graded.msh: block3d_small's block and crack size, the crack along x, the
+source on the top face, the bottom face absorbing, the others free), its first 20 us
 (4 source periods at 200 kHz; the crack claps and rubs):
   - levels: at least two hold cells, their cells add up to the mesh's bulk cells;
   - accuracy against an independent reference (global steps at a quarter of the finest

@@ -189,7 +189,7 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
   detector_.FrictionDrift(scene_->periodic.mean ? 1 : multiple_ / detector_.window(), drift, error);
   *projected = 0.5 * std::abs(*drift) * static_cast<double>(n * multiple_);
   const double tol = scene_->periodic.drift_tol;
-  *allows = tol <= 0.0 || *projected <= tol;
+  *allows = tol <= 0.0 || *projected <= tol || !Significant(*drift, *error);
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   if (!*allows && drift_said_ != stretch_end) {
     drift_said_ = stretch_end;
@@ -207,8 +207,10 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
   PetscFunctionReturn(0);
 }
 
+bool PeriodicContinuation::Significant(double drift, double error) { return std::abs(drift) > 2.0 * error; }
+
 bool PeriodicContinuation::WarnsOfDrift(double drift, double error, double projected) const {
-  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol && std::abs(drift) > 2.0 * error;
+  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol && Significant(drift, error);
 }
 
 PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, PetscInt n, bool* continued) {
@@ -378,18 +380,17 @@ PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
   summary->derived["periodic_periods_continued"] = static_cast<double>(continued);
   if (!segments_.empty()) summary->derived["periodic_reached_at"] = segments_.front().detected;
   summary->derived["periodic_last_change"] = detector_.last_change();
-  double projected = 0.0;
-  bool warns = false;
+  double projected = 0.0, warned = 0.0;  // the largest projection, and the largest warned about
   for (const Segment& s : segments_) {
     projected = std::max(projected, s.projected);
-    warns = warns || WarnsOfDrift(s.drift, s.drift_error, s.projected);
+    if (WarnsOfDrift(s.drift, s.drift_error, s.projected)) warned = std::max(warned, s.projected);
   }
   summary->derived["periodic_drift_projected"] = projected;
-  if (warns) {
+  if (warned > 0.0) {
     char text[256];
     std::snprintf(text, sizeof(text), "the friction per period still drifted when the continuation froze it: the "
                   "continued heat may be off by ~%.2g (periodic[].drift_projected; -periodic_drift_tol bounds it)",
-                  projected);
+                  warned);
     summary->warnings.push_back(text);
   }
   summary->derived_rules["periodic"] = on_ ? (segments_.empty() ? "on: never periodic within -periodic_tol" : "on")

@@ -117,6 +117,9 @@ PetscErrorCode PeriodicContinuation::Restore(const store::Checkpoint& checkpoint
   PetscCall(checkpoint.GetShared("periodic/segments", &segments));
   segments_.clear();
   constexpr std::size_t kSegmentValues = 9;
+  PetscCheck(segments.size() % kSegmentValues == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-restart: the checkpoint's continuation segments have %zu values, not a multiple of %zu: written by "
+             "another version of vibrotherm", segments.size(), kSegmentValues);
   for (std::size_t i = 0; i + kSegmentValues <= segments.size(); i += kSegmentValues)
     segments_.push_back({segments[i], segments[i + 1], segments[i + 2], static_cast<PetscInt>(segments[i + 3]),
                          static_cast<PetscInt>(segments[i + 4]), segments[i + 5], segments[i + 6], segments[i + 7],

@@ -93,14 +93,16 @@ class PeriodicContinuation {
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
   PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
-  /// recorded periods; says so once per steady stretch when it does not. *drift, *error,
-  /// *projected: as Segment.
+  /// recorded periods (a drift that is not Significant allows it); says so once per steady
+  /// stretch when it does not. *drift, *error, *projected: as Segment.
   PetscErrorCode DriftAllows(double t, PetscInt n, double stretch_end, double* drift, double* error, double* projected,
                              bool* allows);
   /// A continuation that froze a drift costing more than 10 -periodic_tol is warned about
   /// (console and summary), unless -periodic_drift_tol bounded it or the drift is within two
   /// standard errors of none (a scatter's slope is not a drift).
   bool WarnsOfDrift(double drift, double error, double projected) const;
+  /// A drift beyond two standard errors of none (within them it is the scatter's slope).
+  static bool Significant(double drift, double error);
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
   PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
