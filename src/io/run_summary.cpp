@@ -61,6 +61,11 @@ void WriteMesh(JsonWriter& json, const mesh::MeshSummary& m) {
     json.value("buried_tips", static_cast<long long>(c.tips));
     json.value("length", c.length).value("requested_length", c.requested_length);
     if (m.dimension == 3) json.value("area", c.area);
+    if (c.breaks) {
+      json.begin_array("breaks");
+      for (const std::string& face : *c.breaks) json.value(nullptr, face);
+      json.end_array();
+    }
     json.end_object();
   }
   json.end_array();

@@ -93,6 +93,33 @@ double HalfExtent(const Crack& c, int a) {
   return 0.5 * c.length * std::abs(axes.strike[a]) + 0.5 * c.width * std::abs(axes.up_dip[a]);
 }
 
+/// Crack c's extent along axis a of a box [0, size] (its bounding box's), cut where it breaks
+/// a face normal to a. A crack breaks a face when its centre lies on it (the face cuts it
+/// through the middle: half of it lies in the body, a thumbnail; cut by two faces, a quarter:
+/// a corner crack) or, when its edges are straight lines along the axes (`straight`: an
+/// aligned rectangle), when its edge lies on the face (a surface crack of that depth; on both
+/// faces: through). Any other crack reaching a face pokes out of the body (`outside`).
+struct AxisExtent {
+  double lo = 0.0, hi = 0.0;
+  std::array<bool, 2> breaks{false, false};  ///< the face at 0, at size
+  bool centred_on_face = false;
+  bool outside = false;
+  bool broken() const { return breaks[0] || breaks[1]; }
+};
+
+AxisExtent ExtentAlong(const Crack& c, double size, int a, bool straight, double tol) {
+  AxisExtent e;
+  const double centre = c.centre()[a], half = HalfExtent(c, a);
+  e.lo = centre - half, e.hi = centre + half;
+  if (std::abs(centre) <= tol) e.lo = 0.0, e.breaks[0] = e.centred_on_face = true;
+  if (std::abs(centre - size) <= tol) e.hi = size, e.breaks[1] = e.centred_on_face = true;
+  if (straight && std::abs(e.lo) <= tol) e.lo = 0.0, e.breaks[0] = true;
+  if (straight && std::abs(e.hi - size) <= tol) e.hi = size, e.breaks[1] = true;
+  e.outside = e.lo < -tol || e.hi > size + tol || (!e.breaks[0] && e.lo <= tol) || (!e.breaks[1] && e.hi >= size - tol) ||
+              (e.centred_on_face && e.breaks[0] && e.breaks[1]);
+  return e;
+}
+
 /// The gap between two coplanar crack rectangles (< 0: they overlap): the largest of their
 /// separations along either one's strike and up-dip (separating axes: for two rectangles in a
 /// plane, one of those four separates them if anything does).
@@ -133,6 +160,13 @@ CrackOutlineMap OutlineOf(const Crack& c, const std::array<int, 2>& in) {
   const double a = 0.5 * c.length * det, b = 0.5 * c.width * det;
   map.m = {w1 * h0 / a, -w0 * h1 / a, -s1 * h0 / b, s0 * h1 / b};
   return map;
+}
+
+/// ExtentAlong in the box of g, for the grid planes' in-plane axes `in`.
+AxisExtent ExtentInBox(const Crack& c, const SpecimenGeometry& g, int a, const std::array<int, 2>& in) {
+  const double size[3] = {g.width, g.height, g.depth};
+  const bool straight = c.shape == CrackShape::Rectangle && OutlineOf(c, in).aligned();
+  return ExtentAlong(c, size[a], a, straight, 1e-9 * std::max({g.width, g.height, g.depth}));
 }
 
 }  // namespace
@@ -195,7 +229,7 @@ BoxGrid::BoxGrid(const SpecimenGeometry& g) : BoxGrid(g, BoxGridSizes{g.h_crack,
 
 BoxGrid::BoxGrid(const SpecimenGeometry& g, const BoxGridSizes& sizes) {
   if (!(g.depth > 0.0) || !std::isfinite(g.depth)) reject("-specimen_depth must be > 0 for a 3D box, got ", g.depth);
-  g.validate();  // sizes, and each crack's trace in the x-y plane
+  g.validate();  // sizes, and each crack's length
   size_ = {g.width, g.height, g.depth};
   for (const Crack& c : g.cracks)
     if (!(std::abs(c.tilt_deg) <= 90.0)) reject("-crack_tilt must lie in [-90, 90] degrees, got ", c.tilt_deg);
@@ -284,15 +318,24 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
     for (int a : in_) {
-      const double half = HalfExtent(c, a), centre = c.centre()[a];
+      const AxisExtent e = ExtentInBox(c, g, a, in_);  // cut where the crack breaks a face
       // Cells of -mesh_h_crack measured along the crack (by the larger of the strike's and
       // the up-dip's parts along this axis): the length's and the width's counts when aligned.
-      const int cells = CellsAcross(2.0 * half / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
-      const bool through = a == 2 && through_thickness(c, g);  // ends exactly on the faces
-      segments[a].push_back({through ? 0.0 : centre - half, through ? g.depth : centre + half, cells});
+      const double extent = e.broken() ? e.hi - e.lo : 2.0 * HalfExtent(c, a);
+      const int cells = CellsAcross(extent / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
+      segments[a].push_back({e.lo, e.hi, cells});
     }
     cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {},
-                       {c.centre()[in_[0]], c.centre()[in_[1]]}, {HalfExtent(c, in_[0]), HalfExtent(c, in_[1])}});
+                       {c.centre()[in_[0]], c.centre()[in_[1]]}, {HalfExtent(c, in_[0]), HalfExtent(c, in_[1])}, 0.0, {}});
+    CrackOnGrid& on_grid = cracks_.back();
+    on_grid.outline_area = c.length * c.width * (c.shape == CrackShape::Ellipse ? 0.25 * M_PI : 1.0);
+    constexpr Side kFaces[3][2] = {{Side::Left, Side::Right}, {Side::Bottom, Side::Top}, {Side::Back, Side::Front}};
+    for (int a = 0; a < 3; ++a) {
+      const AxisExtent e = ExtentInBox(c, g, a, in_);
+      if (e.centred_on_face) on_grid.outline_area *= 0.5;
+      for (int end = 0; end < 2; ++end)
+        if (e.breaks[end]) on_grid.breaks.push_back(kFaces[a][end]);
+    }
   }
   if (!cracked)
     for (int a : in_) segments[a].push_back({0.5 * size_[a], 0.5 * size_[a], 0});
@@ -321,28 +364,46 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
 void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const std::string& name) const {
   const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
   if (!(c.width > 0.0) || !std::isfinite(c.width)) reject("-crack_width must be > 0 in 3D, got ", c.width, name);
-  // Its bounding box (of the corners centre ± (L/2) s ± (W/2) w): buried in x-y; in z
-  // buried, or exactly [0, D] (through the thickness, untilted: a plane-strain slab's crack).
-  std::array<double, 3> lo, hi;
-  for (int a = 0; a < 3; ++a) lo[a] = c.centre()[a] - HalfExtent(c, a), hi[a] = c.centre()[a] + HalfExtent(c, a);
-  const bool inside_box = std::min(lo[0], lo[1]) > tol && hi[0] < g.width - tol && hi[1] < g.height - tol;
-  const bool through = through_thickness(c, g), z_ok = (lo[2] > tol && hi[2] < g.depth - tol) || through;
-  if (!inside_box || !z_ok)
+  // Its bounding box (of the corners centre ± (L/2) s ± (W/2) w), cut where it breaks a face
+  // (ExtentAlong); the faces normal to its grid planes' axis p stay flat, so it cannot reach those.
+  std::array<AxisExtent, 3> e;
+  for (int a = 0; a < 3; ++a) e[a] = ExtentInBox(c, g, a, in_);
+  e[p_].outside = e[p_].outside || e[p_].broken();
+  const bool outside = e[0].outside || e[1].outside || e[2].outside;
+  if (outside && c.shape == CrackShape::Ellipse)
+    reject("-crack_shape ellipse with -crack_center/-crack_length/-crack_width: the elliptical crack", name, " reaches "
+           "the outside of the specimen; an ellipse breaks a face only when its centre lies on that face (half of it "
+           "inside: a thumbnail crack; on an edge of the box: a quarter, a corner crack), extent x [",
+           e[0].lo, ", ", e[0].hi, "], y [", e[1].lo, ", ", e[1].hi, "], z [", e[2].lo, ", ", e[2].hi, "]");
+  if (outside)
     reject("-crack_center/-crack_length/-crack_width/-crack_angle", c.tilt_deg != 0.0 ? "/-crack_tilt" : "", ": the crack",
-           name, " reaches the outside of the specimen (3D cracks must be buried in x-y and either buried in z or ",
-           "through the thickness, untilted with -crack_width = -specimen_depth centred at z = depth/2; extent x [",
-           lo[0], ", ", hi[0], "], y [", lo[1], ", ", hi[1], "], z [", lo[2], ", ", hi[2], "] in [0, ", g.width,
-           "] x [0, ", g.height, "] x [0, ", g.depth, "])");
+           name, " reaches the outside of the specimen (a 3D crack is buried, or breaks a face normal to ",
+           kAxisName[in_[0]], " or ", kAxisName[in_[1]], ": centred on the face, or a rectangle along the axes with its "
+           "edge on it; it cannot reach the faces normal to ", kAxisName[p_], ", its plane's axis; extent x [",
+           e[0].lo, ", ", e[0].hi, "], y [", e[1].lo, ", ", e[1].hi, "], z [", e[2].lo, ", ", e[2].hi, "] in [0, ",
+           g.width, "] x [0, ", g.height, "] x [0, ", g.depth, "])");
+  if (e[in_[0]].centred_on_face && e[in_[1]].centred_on_face && !OutlineOf(c, in_).aligned())
+    reject("-crack_angle/-crack_tilt: a corner crack (centred on an edge of the box) has its strike and up-dip along "
+           "the box's axes; this one is turned and tilted", name);
   // Centred in z with -crack_width = -specimen_depth and its width mostly along z, a tilted
   // crack was meant to go through the thickness, which only an untilted one does.
   if (c.tilt_deg != 0.0 && std::abs(c.tilt_deg) < 45.0 && std::abs(c.width - g.depth) <= tol &&
       std::abs(c.z - 0.5 * g.depth) <= tol)
     reject("-crack_tilt: a crack through the thickness (-crack_width = -specimen_depth) is untilted; a tilted ",
            "crack is buried (-crack_width < -specimen_depth)", name);
-  if (c.shape == CrackShape::Ellipse && through)
-    reject("-crack_shape ellipse: an elliptical crack must be buried (-crack_width < -specimen_depth); a crack ",
-           "through the thickness is a rectangle", name);
-  const int along = CellsAcross(c.length, g.h_crack), across = CellsAcross(c.width, g.h_crack);
+  // Cells across the part in the body, along the strike and along the up-dip.
+  const Crack::Axes axes = c.axes();
+  const auto axis_of = [&](const std::array<double, 3>& along) {  // the in-plane axis it runs along most
+    return std::abs(along[in_[0]]) >= std::abs(along[in_[1]]) ? in_[0] : in_[1];
+  };
+  const auto kept = [&](const std::array<double, 3>& along) {  // the fraction of it in the body
+    const int a = axis_of(along);
+    return e[a].broken() ? (e[a].hi - e[a].lo) / (2.0 * HalfExtent(c, a)) : 1.0;
+  };
+  const AxisExtent& up_dip = e[axis_of(axes.up_dip)];
+  const bool through = up_dip.breaks[0] && up_dip.breaks[1];  // no front across its width
+  const int along = CellsAcross(c.length * kept(axes.strike), g.h_crack);
+  const int across = CellsAcross(c.width * kept(axes.up_dip), g.h_crack);
   if (along < 2)
     reject("-crack_length ", c.length, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name);
   const bool staircase = c.shape == CrackShape::Ellipse || !OutlineOf(c, in_).aligned();
@@ -350,7 +411,7 @@ void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const st
     reject(c.shape == CrackShape::Ellipse ? "-crack_shape ellipse: the ellipse" : "-crack_tilt with -crack_angle: the "
            "staircase of a tilted, turned crack", " needs at least 4 cells of -mesh_h_crack ", g.h_crack,
            " m across each axis (fewer make it its rectangle), got ", along, " x ", across, name);
-  if (across < 2 && !through)  // a through crack has no front along z
+  if (across < 2 && !through)
     reject("-crack_width ", c.width, " m is resolved by fewer than 2 cells of -mesh_h_crack ", g.h_crack, " m", name);
 }
 
@@ -372,11 +433,6 @@ void BoxGrid::validate(const SpecimenGeometry& g) const {
         reject("-crack_center: cracks ", j + 1, " and ", i + 1, " overlap or come closer than one cell of ",
                "-mesh_h_crack (", g.h_crack, " m) on their plane (gap ", gap, " m)");
     }
-}
-
-bool BoxGrid::through_thickness(const Crack& c, const SpecimenGeometry& g) {
-  const double tol = 1e-9 * std::max({g.width, g.height, g.depth});
-  return c.tilt_deg == 0.0 && std::abs(c.z - 0.5 * c.width) <= tol && std::abs(c.z + 0.5 * c.width - g.depth) <= tol;
 }
 
 double BoxGrid::offset(double xp, double x0, double x1) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <string>
 
 #include "vibrotherm/mesh/box_mesher.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
@@ -31,30 +32,41 @@ PetscErrorCode CreateBoxHeatPlex(MPI_Comm comm, const SpecimenGeometry& geometry
   PetscFunctionReturn(0);
 }
 
-/// Each crack's faces, and how far an elliptical one's staircase is from its ellipse.
+/// ", breaking the front face" (and the left face ...) for a crack that breaks faces, else "".
+std::string BrokenFacesText(const BoxGrid& grid, int k) {
+  const std::vector<Side>& faces = grid.broken_faces(k);
+  std::string text;
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    text += std::string(i == 0 ? ", breaking the " : i + 1 == faces.size() ? " and the " : ", the ") + to_string(faces[i]);
+  return faces.empty() ? text : text + (faces.size() > 1 ? " faces" : " face");
+}
+
+/// Each crack's faces, and how far an elliptical one's staircase is from its ellipse (the
+/// part of it in the body).
 PetscErrorCode PrintCracks(MPI_Comm comm, const SpecimenGeometry& geometry, const BoxGrid& grid, PetscInt faces) {
   PetscFunctionBeginUser;
   PetscInt counted = 0;
   for (int k = 0; k < grid.crack_count(); ++k) {
     const Crack& crack = geometry.cracks[k];
     const int n1 = grid.crack_cells(0, k), n2 = grid.crack_cells(1, k);
-    const double area = grid.crack_area(k);
+    const double area = grid.crack_area(k), outline = grid.outline_area(k);
     const PetscInt mine = grid.crack_faces(k);
+    const std::string breaks = BrokenFacesText(grid, k);
     counted += mine;
     if (crack.shape == CrackShape::Ellipse)
       PetscCall(PetscPrintf(comm, "Meshing: crack %d: the elliptical crack is %" PetscInt_FMT " of its %d x %d "
-                            "rectangle's faces: %.4g m2, %.4f of the ellipse's area\n", k + 1, mine, n1, n2, area,
-                            area / (0.25 * M_PI * crack.length * crack.width)));
+                            "rectangle's faces: %.4g m2, %.4f of the ellipse's area%s%s\n", k + 1, mine, n1, n2, area,
+                            area / outline, grid.broken_faces(k).empty() ? "" : " in the body", breaks.c_str()));
     else if (grid.crack_staircase(k))  // tilted and turned: a parallelogram in the grid's axes
       PetscCall(PetscPrintf(comm, "Meshing: crack %d: the tilted crack is %" PetscInt_FMT " of its %d x %d "
-                            "bounding rectangle's faces (a staircase): %.4g m2, %.4f of length x width\n", k + 1,
-                            mine, n1, n2, area, area / (crack.length * crack.width)));
-    else if (std::abs(area / (crack.length * crack.width) - 1.0) > 1e-9)  // an end moved onto another crack's line
-      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2 (%+.3g %% of length x width: an end "
-                            "shares a nearby crack's grid line)\n", k + 1, n1, n2, area,
-                            100.0 * (area / (crack.length * crack.width) - 1.0)));
+                            "bounding rectangle's faces (a staircase): %.4g m2, %.4f of its area in the body%s\n",
+                            k + 1, mine, n1, n2, area, area / outline, breaks.c_str()));
+    else if (std::abs(area / outline - 1.0) > 1e-9)  // an end moved onto another crack's line
+      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2 (%+.3g %% of its area in the body: an "
+                            "end shares a nearby crack's grid line)%s\n", k + 1, n1, n2, area,
+                            100.0 * (area / outline - 1.0), breaks.c_str()));
     else
-      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2\n", k + 1, n1, n2, area));
+      PetscCall(PetscPrintf(comm, "Meshing: crack %d: %d x %d faces, %.4g m2%s\n", k + 1, n1, n2, area, breaks.c_str()));
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &faces, 1, MPIU_INT, MPI_MAX, comm));  // the serial mesh is on rank 0
   PetscCheck(counted == faces, comm, PETSC_ERR_PLIB, "3D box: %" PetscInt_FMT " crack faces labelled, the grid has %"
@@ -123,8 +135,11 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
   PetscInt crack_faces;
   PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
   PetscCall(PrintCracks(comm, geometry, *grid, crack_faces));
-  for (std::size_t k = 0; k < geometry.cracks.size(); ++k)
-    s->cracks.push_back(CrackInfo{"crack" + std::to_string(k + 1), geometry.cracks[k].length});
+  for (int k = 0; k < grid->crack_count(); ++k) {
+    std::vector<std::string> breaks;
+    for (Side face : grid->broken_faces(k)) breaks.push_back(to_string(face));
+    s->cracks.push_back(CrackInfo{"crack" + std::to_string(k + 1), geometry.cracks[k].length, breaks});
+  }
   s->source = "generated";
   // SplitCracks puts the front (edges with one crack face, their vertices) in the
   // boundary label and checks one cohesive cell per crack face.

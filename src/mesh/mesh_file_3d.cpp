@@ -173,7 +173,7 @@ PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, 
   PetscCall(ReadLabelledPlex(comm, file, "-mesh_file", &serial, &cracks));
   PetscCall(PetscPrintf(comm, "Meshing: read %s (hexahedra, %zu crack%s)\n", file.c_str(), cracks.size(),
                         cracks.size() == 1 ? "" : "s"));
-  for (const std::string& name : cracks) s->cracks.push_back(CrackInfo{name, 0.0});
+  for (const std::string& name : cracks) s->cracks.push_back(CrackInfo{name, 0.0, std::nullopt});
   s->source = file;
   PetscCall(SplitCracks(serial, &s->wave));  // the front labelled; one cohesive cell per crack face, checked
   if (heat_file.empty()) {

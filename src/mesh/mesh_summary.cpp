@@ -116,6 +116,7 @@ PetscErrorCode SummariseCracks(MPI_Comm comm, const Specimen& specimen, const st
     CrackSummary& cs = s->cracks[i];
     cs.name = specimen.cracks[i].name;
     cs.requested_length = specimen.cracks[i].requested_length;
+    cs.breaks = specimen.cracks[i].breaks;
     PetscCallMPI(MPI_Allreduce(&facets[i], &cs.facets, 1, MPIU_INT, MPI_SUM, comm));
     PetscCallMPI(MPI_Allreduce(&pairs[i], &cs.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
     PetscCallMPI(MPI_Allreduce(&tips[i], &cs.tips, 1, MPIU_INT, MPI_SUM, comm));
@@ -242,6 +243,7 @@ PetscErrorCode ComputeBoxSummary(const Specimen& specimen, MeshSummary* s) {
     CrackSummary crack;
     crack.name = specimen.cracks[k].name;
     crack.requested_length = specimen.cracks[k].requested_length;
+    crack.breaks = specimen.cracks[k].breaks;
     PetscCallMPI(MPI_Allreduce(&local[k].facets, &crack.facets, 1, MPIU_INT, MPI_SUM, comm));
     PetscCallMPI(MPI_Allreduce(&local[k].node_pairs, &crack.node_pairs, 1, MPIU_INT, MPI_SUM, comm));
     PetscCallMPI(MPI_Allreduce(&local[k].tips, &crack.tips, 1, MPIU_INT, MPI_SUM, comm));

@@ -189,7 +189,7 @@ void SpecimenGeometry::validate() const {
           << " along it at -mesh_h_crack " << h_crack;
       reject(msg.str());
     }
-    for (int e = 0; e < 2; ++e) {
+    for (int e = 0; e < 2 && depth <= 0.0; ++e) {  // a 3D box checks where its cracks meet its faces (box_grid)
       const auto p = c.end(e);
       if (p[0] < -tol || p[0] > width + tol || p[1] < -tol || p[1] > height + tol) {
         msg << "-crack_center/-crack_length/-crack_angle: crack " << id << " reaches beyond the specimen (end at ("

@@ -19,40 +19,23 @@ import csv, json, math, os, re, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks
+import plane_sources
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("heat crack shapes 3d")
-Q, SIDE, K = 1e5, 0.008, 237.0
-RHO_C = 2700 * 900.0
-ALPHA = K / RHO_C
+Q, SIDE = 1e5, 0.008
 CENTRE = (0.012, 0.012, 0.012)
 DISTANCES = (0.0, 0.002)  # along the crack's normal (y: -crack_angle 0)
 WINDOW = (0.015, 0.05)  # [s]: diffusion lengths 1.2 to 2.2 mm (the heat mesh is 1 mm at z = 2 mm)
 FACES = 16  # wave faces across the crack
 
 
-def ierfc(x):
-    return math.exp(-x * x) / math.sqrt(math.pi) - x * math.erfc(x)
+def disc(z, t):
+    return plane_sources.disc(Q, z, t, 0.5 * SIDE)
 
 
-def disc(z, t, a=0.5 * SIDE):
-    r = math.sqrt(ALPHA * t)
-    return Q * r / K * (ierfc(z / (2 * r)) - ierfc(math.sqrt(z * z + a * a) / (2 * r)))
-
-
-def rectangle(z, t, n=4000):
-    """s = u² removes the 1/√τ singularity; Simpson in u."""
-    b = math.sqrt(t)
-    h = b / n
-
-    def g(u):
-        if u == 0:
-            return 0.0 if z > 0 else 1.0 / math.sqrt(4 * math.pi * ALPHA)
-        e = math.erf(SIDE / (4 * math.sqrt(ALPHA) * u))
-        return e * e * math.exp(-z * z / (4 * ALPHA * u * u)) / math.sqrt(4 * math.pi * ALPHA)
-
-    s = g(0) + g(b) + sum((4 if i % 2 else 2) * g(i * h) for i in range(1, n))
-    return Q / RHO_C * 2 * s * h / 3
+def rectangle(z, t):
+    return plane_sources.rectangle(Q, z, t, SIDE, SIDE)
 
 
 def run(tmp, shape, ranks=1):

@@ -1,6 +1,8 @@
 // The structured hexahedral grid of a 3D box specimen with one or more planar cracks,
-// rectangular (buried, or through the thickness: z extent [0, D]) or elliptical
-// (buried: the staircase of the faces whose centres lie in the ellipse) (plain C++,
+// rectangular or elliptical (the staircase of the faces whose centres lie in the ellipse),
+// buried or breaking faces of the box (a crack centred on a face is cut by it: half an
+// ellipse is a thumbnail crack, a quarter at an edge a corner crack; a rectangle along the
+// axes may end on a face: a surface crack of that depth, or through) (plain C++,
 // no PETSc): the node positions along each axis and the smooth shear that tilts grid
 // planes into the crack planes.
 //
@@ -72,7 +74,8 @@ struct CrackOutlineMap {
 class BoxGrid {
  public:
   /// Checks the 3D specimen (throws std::invalid_argument naming the option: each
-  /// crack buried in x-y, buried or through the thickness in z, resolved by 2 cells
+  /// crack buried or breaking faces as above, never the faces its plane is parallel to
+  /// (they stay flat), a corner crack along the axes, resolved by 2 cells
   /// along each extent it has a front across; the cracks apart from each other, their
   /// normals nearest one axis; a shear that does not fold the mesh) and builds the
   /// node positions along each axis.
@@ -104,9 +107,11 @@ class BoxGrid {
   double crack_area() const;
   /// The number of crack k's faces.
   int crack_faces(int crack) const;
-  /// Whether crack c of g runs through the thickness: untilted, its z extent is [0, D]
-  /// (-crack_width = -specimen_depth, centred), a plane-strain slab's crack.
-  static bool through_thickness(const Crack& c, const SpecimenGeometry& g);
+  /// The area of crack k's outline (rectangle or ellipse) inside the body: a crack centred on
+  /// a face keeps half of it, one centred on an edge a quarter [m²].
+  double outline_area(int crack) const { return cracks_.at(crack).outline_area; }
+  /// The faces of the box that crack k breaks (none: buried).
+  const std::vector<Side>& broken_faces(int crack) const { return cracks_.at(crack).breaks; }
   /// Smallest and largest grid spacing before the shear [m].
   double h_min() const;
   double h_max() const;
@@ -140,6 +145,10 @@ class BoxGrid {
     /// Its true centre and half extents along the in-plane axes (a snapped end moves its
     /// lattice's end, not its outline).
     std::array<double, 2> centre, half;
+    /// The area of its outline inside the body (a face through its centre keeps half) [m²].
+    double outline_area = 0.0;
+    /// The faces it breaks (its mouth lies on them), in the order x, y, z, low before high.
+    std::vector<Side> breaks;
     bool staircase() const { return shape != CrackShape::Rectangle || !outline.aligned(); }
   };
   void validate(const SpecimenGeometry& g) const;

@@ -3,6 +3,7 @@
 
 #include <petscdmplex.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct CrackSummary {
   double length = 0.0;       ///< Σ facet lengths [m] (2D)
   double area = 0.0;         ///< Σ facet areas [m²] (3D)
   double requested_length = 0.0;
+  std::optional<std::vector<std::string>> breaks;  ///< the faces it breaks, where the specimen knows (CrackInfo)
 };
 
 struct MeshSummary {

@@ -10,6 +10,7 @@
 
 #include <petscdmplex.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ namespace vibrotherm::mesh {
 struct CrackInfo {
   std::string name;
   double requested_length = 0.0;  ///< from the options (0 for a mesh file)
+  /// A generated 3D box: the faces the crack breaks (side names; empty: buried). Unknown
+  /// (not written) for other specimens.
+  std::optional<std::vector<std::string>> breaks;
 };
 
 struct Specimen {
