@@ -390,7 +390,7 @@ void BoxGrid::validate_crack(const SpecimenGeometry& g, const Crack& c, const st
   if (c.tilt_deg != 0.0 && std::abs(c.tilt_deg) < 45.0 && std::abs(c.width - g.depth) <= tol &&
       std::abs(c.z - 0.5 * g.depth) <= tol)
     reject("-crack_tilt: a crack through the thickness (-crack_width = -specimen_depth) is untilted; a tilted ",
-           "crack is buried (-crack_width < -specimen_depth)", name);
+           "crack is narrower than the depth (-crack_width < -specimen_depth)", name);
   // Cells across the part in the body, along the strike and along the up-dip.
   const Crack::Axes axes = c.axes();
   const auto axis_of = [&](const std::array<double, 3>& along) {  // the in-plane axis it runs along most

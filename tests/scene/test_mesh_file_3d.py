@@ -11,7 +11,10 @@ wave grid, as a mesh file's default). On 2 ranks:
  - its run equals the generated one: dissipated energy and heat content within 1e-9, probe
    displacements within 1e-9 of their amplitude, temperature rises within 1e-9 of the
    largest (the two meshes number and partition their points differently);
- - the same file as -heat_mesh_file gives the same heat content (1e-9).
+ - the same file as -heat_mesh_file gives the same heat content (1e-9);
+ - a surface crack (issue 39): the same box with the crack reaching the front face (z from 6 to
+   10 mm), read from a file, equals its generated twin (-crack_center z = 8 mm, 4 mm wide: its
+   edge on the face), by the same measures.
 Bad input, refused in one line naming the option and the file (exit 2): a file of
 tetrahedra, an unknown physical surface, a file that does not exist.
 
@@ -68,6 +71,18 @@ with tempfile.TemporaryDirectory() as tmp:
     if "file" in runs and "generated" in runs:
         same_run("file = generated", runs["file"], runs["generated"])
         print("file = generated: dissipated %.10g J" % runs["file"][0]["dissipated_energy"])
+    surface = os.path.join(tmp, "surface.msh")
+    write_box_msh(surface, (20, 20, 10), 0.001, (10, 7, 13, 6, 10))
+    for name, extra in (("surface_file", ["-mesh_file", surface]),
+                        ("surface_generated", twin + ["-crack_center", "0.01,0.01,0.008"])):
+        out = os.path.join(tmp, name)
+        if run_scene(check, exe, opts + extra, out, mpiexec, 2):
+            runs[name] = load(out)
+    if "surface_file" in runs and "surface_generated" in runs:
+        check(runs["surface_generated"][0]["mesh"]["cracks"][0].get("breaks") == ["front"],
+              "the generated surface crack breaks %s" % runs["surface_generated"][0]["mesh"]["cracks"][0].get("breaks"))
+        same_run("surface crack: file = generated", runs["surface_file"], runs["surface_generated"])
+        print("surface crack, file = generated: dissipated %.10g J" % runs["surface_file"][0]["dissipated_energy"])
     if "file" in runs and "heat_file" in runs:
         a, b = runs["file"][0]["heat_content"], runs["heat_file"][0]["heat_content"]
         check(abs(a / b - 1) < 1e-9, "-heat_mesh_file: heat content %s vs %s" % (b, a))
