@@ -315,26 +315,24 @@ void BoxGrid::build_axes(const SpecimenGeometry& g, const BoxGridSizes& sizes, c
   // exact).
   s.refine = std::max(1, static_cast<int>(std::ceil(g.h_crack / s.h_crack - 1e-9)));
   refine_ = s.refine;
+  constexpr Side kFaces[3][2] = {{Side::Left, Side::Right}, {Side::Bottom, Side::Top}, {Side::Back, Side::Front}};
   for (const Crack& c : g.cracks) {
     const Crack::Axes axes = c.axes();
-    for (int a : in_) {
+    cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {},
+                       {c.centre()[in_[0]], c.centre()[in_[1]]}, {HalfExtent(c, in_[0]), HalfExtent(c, in_[1])}, 0.0, {}});
+    CrackOnGrid& on_grid = cracks_.back();
+    on_grid.outline_area = c.length * c.width * (c.shape == CrackShape::Ellipse ? 0.25 * M_PI : 1.0);
+    for (int a = 0; a < 3; ++a) {  // along p the crack is buried (validated): no segment, no cut
       const AxisExtent e = ExtentInBox(c, g, a, in_);  // cut where the crack breaks a face
+      if (e.centred_on_face) on_grid.outline_area *= 0.5;
+      for (int end = 0; end < 2; ++end)
+        if (e.breaks[end]) on_grid.breaks.push_back(kFaces[a][end]);
+      if (a == p_) continue;
       // Cells of -mesh_h_crack measured along the crack (by the larger of the strike's and
       // the up-dip's parts along this axis): the length's and the width's counts when aligned.
       const double extent = e.broken() ? e.hi - e.lo : 2.0 * HalfExtent(c, a);
       const int cells = CellsAcross(extent / std::max(std::abs(axes.strike[a]), std::abs(axes.up_dip[a])), g.h_crack);
       segments[a].push_back({e.lo, e.hi, cells});
-    }
-    cracks_.push_back({0, {}, {}, c.shape, 1.0 / std::abs(axes.normal[p_]), OutlineOf(c, in_), {},
-                       {c.centre()[in_[0]], c.centre()[in_[1]]}, {HalfExtent(c, in_[0]), HalfExtent(c, in_[1])}, 0.0, {}});
-    CrackOnGrid& on_grid = cracks_.back();
-    on_grid.outline_area = c.length * c.width * (c.shape == CrackShape::Ellipse ? 0.25 * M_PI : 1.0);
-    constexpr Side kFaces[3][2] = {{Side::Left, Side::Right}, {Side::Bottom, Side::Top}, {Side::Back, Side::Front}};
-    for (int a = 0; a < 3; ++a) {
-      const AxisExtent e = ExtentInBox(c, g, a, in_);
-      if (e.centred_on_face) on_grid.outline_area *= 0.5;
-      for (int end = 0; end < 2; ++end)
-        if (e.breaks[end]) on_grid.breaks.push_back(kFaces[a][end]);
     }
   }
   if (!cracked)
