@@ -32,7 +32,7 @@ reaching the faces its plane is parallel to, and a turned-and-tilted corner crac
 refused in one line naming the option.
 
 usage: test_surface_cracks_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, math, os, subprocess, sys, tempfile
+import csv, json, math, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, refused, run_scene
