@@ -26,7 +26,8 @@ LAYERS = [
     "io",                 # output files
     "coupling/exchange",  # what flows between the solvers (friction heat and its near field, thermoelastic, thermal stress)
     "coupling/observe",   # what a run writes (recorder, field peak, probe temperatures, IR camera)
-    "coupling/run",       # run order, components, scene, checkpoint schedule, periodic continuation
+    "coupling/continuation",  # periodic continuation, behind continued_parts.hpp (the run implements it)
+    "coupling/run",       # run order, components, observers, scene, checkpoint schedule
     "modes",              # modal analysis run
     "app",                # executables
 ]

@@ -2,7 +2,9 @@
 """Short runs that cover every 2D data path (generated quad and triangle meshes, a mesh
 file with two cracks, Q1 and Q2, MMD and Coulomb contact, heat, camera, local time
 stepping, patch source with damping, damping heat and thermoelastic heat, harmonic
-start, modes, the contact app, 2 ranks). A refactoring that must not change 2D results
+start, the periodic continuation with its heat ladder, waves without heat (energy and
+crack-state rows per step), heat alone after quiet waves, modes, the contact app, 2 ranks)
+and one 3D box (a through crack, camera, crack state). A refactoring that must not change 2D results
 runs them before and after and compares each pair with scripts/compare_outputs
 (byte-identical CSVs; equal HDF5 datasets).
 
@@ -26,6 +28,14 @@ SCENES = {
     "thermosonic": (1, ["-options_file", "options/thermosonic.opts", "-source_duration", "2e-4",
                         "-final_time", "3e-4", "-output_times", "3e-4", "-periodic", "off",
                         "-thermoelastic", "two_way", "-material_damping_heat", "-camera", "false"]),
+    "periodic": (1, ["-options_file", "options/thermosonic.opts", "-source_duration", "6e-3", "-final_time", "8e-3",
+                     "-output_times", "4e-3,8e-3", "-camera_fps", "2000", "-camera_integration", "2e-4",
+                     "-crack_probe", "0.5", "-periodic_tol", "2e-2", "-periodic_fine_periods", "8"]),
+    "waves_only": (1, PAPER + ["-heat", "off", "-energy_every", "5", "-crack_state_every", "10", "-crack_probe",
+                               "0.5"]),
+    "slab3d": (1, ["-options_file", "options/slab3d.opts", "-mesh_h", "0.005", "-mesh_h_crack", "0.001",
+                   "-final_time", "3e-5", "-source_duration", "3e-5", "-output_times", "3e-5", "-camera",
+                   "-camera_fps", "100000", "-camera_integration", "5e-6", "-crack_state_every", "20"]),
     "mesh_file": (1, ["-mesh_file", "meshes/plate_two_cracks.msh", "-final_time", "2e-5", "-output_times", "2e-5",
                       "-wave_degree", "1"]),
     "modes": (1, ["-specimen_width", "0.05", "-specimen_height", "0.1", "-mesh_h", "0.004", "-crack_center",

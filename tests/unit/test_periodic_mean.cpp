@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "vibrotherm/coupling/run/periodic_mean.hpp"
+#include "vibrotherm/coupling/continuation/periodic_mean.hpp"
 
 namespace vibrotherm::coupling {
 namespace {

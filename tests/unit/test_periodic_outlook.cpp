@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "vibrotherm/coupling/run/periodic_outlook.hpp"
+#include "vibrotherm/coupling/continuation/periodic_outlook.hpp"
 
 namespace vibrotherm::coupling {
 namespace {

@@ -9,7 +9,7 @@
 // the steps left at the rate of about the last 10 s (since the phase, or the
 // restart, began, for the first line).
 // While a periodic continuation will skip most of the steps, the periodic outlook
-// (coupling/run/periodic_outlook.hpp) gives the steps it expects to resolve and a
+// (coupling/continuation/periodic_outlook.hpp) gives the steps it expects to resolve and a
 // note (the change per period against the tolerance):
 //   wave: t = 3e-04 s, step 9000/13100 (68.7 %), 3.3e+03 steps/s, ETA ~1 s (resolved to the end: 260 s);
 //         periodic: change 2.1e-03 per period (tolerance 3e-04), ~40 periods to go

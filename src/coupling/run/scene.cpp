@@ -18,6 +18,10 @@ double Scene::waves_expected_end() const {
   return std::min(final_time, excitation.signal.duration + 8.0 / excitation.signal.frequency);
 }
 
+ContinuationScene Scene::continuation() const {
+  return {periodic, &excitation.signal, final_time, couple_dt, run.heat_substeps, waves_expected_end()};
+}
+
 namespace {
 
 /// Values every reader accepted but no run can use: infinities, and wave TS types

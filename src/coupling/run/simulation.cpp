@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vibrotherm/coupling/run/recording.hpp"
+#include "vibrotherm/coupling/run/run_observers.hpp"
 #include "vibrotherm/coupling/observe/heat_camera.hpp"
-#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/coupling/continuation/periodic_continuation.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
@@ -78,18 +78,27 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (waves_) PetscCall(recorder.MeterSource(scene_->excitation.signal, scene_->periodic.window, control.restart));
-  if (heat_ && !control.restart) {  // t = 0
-    PetscCall(RecordTemperature(recorder, *heat_, waves_ != nullptr));
-    PetscCall(recorder.OnHeatStep(heat_->solver()));
+  RunObservers observers(recorder, waves_.get(), heat_.get(), scene_->run.probe_every);
+  observers.OnBetweenSteps([this, &recorder](bool* stop) {
+    PetscFunctionBeginUser;
+    PetscCall(CheckpointIfDue(recorder, false));
+    *stop = interrupted_by_ != 0;
+    PetscFunctionReturn(0);
+  });
+  if (!control.restart) {  // t = 0
+    io::EnergyRow row;
+    if (waves_) PetscCall(waves_->Energy(&row));
+    PetscCall(observers.Start(waves_ ? &row : nullptr));
   }
   if (waves_) {
     periodic_ = std::make_unique<PeriodicContinuation>();
-    PetscCall(periodic_->Setup(*scene_, *specimen_, waves_.get(), heat_.get(), dir, summary, control.restart));
+    PetscCall(periodic_->Setup(scene_->continuation(), *specimen_, waves_.get(), heat_.get(), &observers, dir,
+                               summary, control.restart));
   }
-  if (control.restart) PetscCall(Resume(*control.restart, recorder));
-  if (waves_) PetscCall(RunCoupled(recorder, summary));
+  if (control.restart) PetscCall(Resume(*control.restart, observers));
+  if (waves_) PetscCall(RunCoupled(recorder, observers, summary));
   if (!interrupted_by_ && heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12))
-    PetscCall(RunHeatAlone(recorder, summary));
+    PetscCall(RunHeatAlone(observers, summary));
   if (interrupted_by_) {  // the files stay as the checkpoint describes them
     recorder.Keep();
     if (periodic_) periodic_->Keep();
@@ -104,7 +113,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summary) {
+PetscErrorCode Simulation::RunCoupled(Recorder& recorder, RunObservers& observers, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves_->solver();
   MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
@@ -124,40 +133,23 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   if (heat_)
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
                           heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
-  const bool energy_each_step = !heat_;  // with heat, energy rows at intervals (all columns at one time)
-  const PetscInt probe_every = scene_->run.probe_every;
-  solver.on_step = [this, &recorder, energy_each_step, probe_every](const wave::WaveSolver& w) {
-    // The heat side samples the friction at every wave step, the probes' temperatures at their rows.
-    if (heat_) heat_->AfterWaveStep(w.time(), w.steps() % probe_every == 0);
-    return recorder.OnWaveStep(w, energy_each_step);
-  };
+  solver.on_step = [&observers](const wave::WaveSolver& w) { return observers.WaveStep(w); };
   recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(wave_stage_));
   io::EnergyRow row;
   PetscCall(waves_->Energy(&row));
-  if (!control_.restart) {  // t = 0
-    recorder.OnInterval(row);
-    PetscCall(RecordEnergy(recorder, row, heat_.get()));
-    if (recorder.OutputDue(0.0)) PetscCall(WriteFields(recorder, 0.0, waves_.get(), heat_.get()));
-  }
-  periodic_->between_steps = [this, &recorder](bool* stop) {
-    PetscFunctionBeginUser;
-    PetscCall(CheckpointIfDue(recorder, false));
-    *stop = interrupted_by_ != 0;
-    PetscFunctionReturn(0);
-  };
   bool quiet = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
   if (quiet) heat_alone_from_ = solver.time();
   if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
     bool continued;
-    PetscCall(periodic_->FinishInterrupted(recorder, &continued));
+    PetscCall(periodic_->FinishInterrupted(&continued));
     PetscCall(waves_->Energy(&row));
   }
   while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
-    PetscCall(Interval(recorder, heat_dt, &row));
+    PetscCall(Interval(observers, heat_dt, &row));
     bool continued;
-    PetscCall(periodic_->AfterInterval(recorder, row, &continued));
+    PetscCall(periodic_->AfterInterval(row, &continued));
     if (continued) {  // the waves jumped ahead: their energies now, the progress line on from here
       PetscCall(waves_->Energy(&row));
       recorder.progress().Start(comm, "wave", solver.time(), expected_end, solver.dt(), false);
@@ -169,7 +161,7 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, io::RunSummary* summar
   if (interrupted_by_) PetscFunctionReturn(0);
   summary->stages["wave_steps"] = MPI_Wtime() - t0 - (heat_ ? heat_->seconds() : 0.0);
   PetscCall(recorder.progress().Done(solver.time(), solver.steps()));
-  PetscCall(StopWaves(recorder, row, summary));
+  PetscCall(StopWaves(observers, row, summary));
   PetscFunctionReturn(0);
 }
 
@@ -177,7 +169,7 @@ PetscInt Simulation::WaveStepsPerHeatStep(double heat_dt) const {
   return std::max<PetscInt>(1, std::lround(heat_dt / waves_->solver().dt()));
 }
 
-PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row) {
+PetscErrorCode Simulation::Interval(RunObservers& observers, double heat_dt, io::EnergyRow* row) {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves_->solver();
   const PetscInt heat_steps = heat_ ? scene_->run.heat_substeps : 1;
@@ -191,19 +183,12 @@ PetscErrorCode Simulation::Interval(Recorder& recorder, double heat_dt, io::Ener
     if (!heat_) continue;
     PetscCall(PetscLogStagePush(heat_stage_));
     PetscCall(heat_->StepTo(solver.time()));
-    PetscCall(recorder.OnHeatStep(heat_->solver()));
+    PetscCall(observers.HeatStepCoupled(heat_->solver()));
     PetscCall(PetscLogStagePop());
   }
   PetscCall(waves_->Energy(row));  // once per interval: energy rows and the quiet test
   PetscCall(strain_->Check(solver, summary_));
-  recorder.OnInterval(*row);
-  if (heat_) {
-    PetscCall(RecordTemperature(recorder, *heat_, true));
-    PetscCall(RecordEnergy(recorder, *row, heat_.get()));
-  } else {
-    recorder.FlushProbes();
-  }
-  if (recorder.OutputDue(solver.time())) PetscCall(WriteFields(recorder, solver.time(), waves_.get(), heat_.get()));
+  PetscCall(observers.IntervalCoupled(*row));
   PetscFunctionReturn(0);
 }
 
@@ -240,13 +225,11 @@ PetscErrorCode Simulation::WavesQuiet(const io::EnergyRow& e, bool* quiet) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary) {
+PetscErrorCode Simulation::StopWaves(RunObservers& observers, const io::EnergyRow& last, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves_->solver();
   MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
-  if (!heat_) PetscCall(RecordEnergy(recorder, last, nullptr));
-  recorder.FlushProbes();
-  recorder.StopWaves(last);
+  PetscCall(observers.WavesStopped(last));
   summary->wave_energy_left = mechanical_left_;
   summary->derived["response_strain"] = strain_->peak();
   summary->derived_rules["response_strain"] =
@@ -263,7 +246,7 @@ PetscErrorCode Simulation::StopWaves(Recorder& recorder, const io::EnergyRow& la
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summary) {
+PetscErrorCode Simulation::RunHeatAlone(RunObservers& observers, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   heat::HeatSolver& heat = heat_->solver();
   MPI_Comm comm = PetscObjectComm((PetscObject)heat.space().dm());
@@ -275,26 +258,22 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
                         heat_alone_from_ >= 0.0 ? "a stop from here resumes (-restart) where the waves stopped, repeating "
                                                   "this phase"
                                                 : "not resumable (no checkpoint of this scene): a stop loses the run"));
-  recorder.progress().Start(comm, "heat", t_begin, final_time, 0.0, true);
+  observers.progress().Start(comm, "heat", t_begin, final_time, 0.0, true);
   const double t0 = MPI_Wtime();
   PetscCall(PetscLogStagePush(heat_stage_));
-  if (recorder.OutputDue(t_begin)) PetscCall(WriteFields(recorder, t_begin, nullptr, heat_.get()));
-  heat.on_step = [this, &recorder, &heat](const heat::HeatSolver&) {
+  PetscCall(observers.HeatAloneStart(t_begin));
+  heat.on_step = [this, &observers, &heat](const heat::HeatSolver&) {
     PetscFunctionBeginUser;
     bool due;  // no checkpoints here: a signal stops the run, a restart repeats this phase
     PetscCall(schedule_.Poll(&due, &interrupted_by_));
     if (interrupted_by_) heat.RequestStop();
-    PetscCall(RecordTemperature(recorder, *heat_, false));
-    PetscCall(recorder.OnHeatStep(heat));
-    PetscCall(RecordEnergy(recorder, recorder.waves_at_stop(), heat_.get()));
-    PetscCall(recorder.progress().Update(heat.time(), heat.steps()));
+    PetscCall(observers.HeatStepAlone(heat));
     PetscFunctionReturn(0);
   };
-  // One TSSolve per output segment (or camera window boundary); the step ladder's rung carries over.
-  while (heat.time() < final_time * (1 - 1e-12) && !interrupted_by_) {
-    PetscCall(heat.AdvanceTo(recorder.NextHeatStop(heat.time(), final_time)));
-    if (recorder.OutputDue(heat.time())) PetscCall(WriteFields(recorder, heat.time(), nullptr, heat_.get()));
-  }
+  // One TSSolve per output segment (or camera window boundary): each lands on the output time
+  // it is due at; the step ladder's rung carries over.
+  while (heat.time() < final_time * (1 - 1e-12) && !interrupted_by_)
+    PetscCall(heat.AdvanceTo(observers.NextHeatStop(heat.time(), final_time)));
   heat.on_step = nullptr;
   if (interrupted_by_ && heat_alone_from_ >= 0.0)
     PetscCall(PetscPrintf(comm, "vibrotherm: %s at t = %.6g s while the heat runs alone: stopping; -restart %s resumes "
@@ -308,7 +287,7 @@ PetscErrorCode Simulation::RunHeatAlone(Recorder& recorder, io::RunSummary* summ
   summary->steps_heat_free = heat.steps() - steps_before;
   PetscCall(PetscLogStagePop());
   heat_->add_seconds(MPI_Wtime() - t0);
-  PetscCall(recorder.progress().Done(heat.time(), heat.steps()));
+  PetscCall(observers.progress().Done(heat.time(), heat.steps()));
   PetscFunctionReturn(0);
 }
 

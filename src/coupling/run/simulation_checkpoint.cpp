@@ -2,8 +2,8 @@
 // the recorder, the wave-stop rule's memory) and how a restart resumes.
 #include <cmath>
 
-#include "vibrotherm/coupling/run/recording.hpp"
-#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/coupling/run/run_observers.hpp"
+#include "vibrotherm/coupling/continuation/periodic_continuation.hpp"
 #include "vibrotherm/coupling/run/simulation.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 
@@ -75,7 +75,7 @@ PetscErrorCode Simulation::WriteCheckpoint(Recorder& recorder, bool waves_quiet)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::Resume(const store::Checkpoint& checkpoint, Recorder& recorder) {
+PetscErrorCode Simulation::Resume(const store::Checkpoint& checkpoint, RunObservers& observers) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)specimen_->wave);
   PetscCheck(waves_ && checkpoints_, comm, PETSC_ERR_USER_INPUT, "-restart: this scene is not checkpointed");
@@ -83,7 +83,7 @@ PetscErrorCode Simulation::Resume(const store::Checkpoint& checkpoint, Recorder&
   PetscCheck(heat_ != nullptr || !checkpoint.Has("heat/clock"), comm, PETSC_ERR_USER_INPUT,
              "-restart: the checkpoint has a heat solver, this scene has none");
   if (heat_) PetscCall(heat_->Restore(checkpoint, *specimen_));
-  PetscCall(RestoreRecorder(recorder, checkpoint, waves_.get(), heat_.get()));
+  PetscCall(observers.Restore(checkpoint));
   if (periodic_) PetscCall(periodic_->Restore(checkpoint));
   std::vector<double> quiet;
   PetscCall(checkpoint.GetShared("run/quiet_rule", &quiet));

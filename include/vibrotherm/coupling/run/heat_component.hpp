@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/coupling/continuation/continued_parts.hpp"
 #include "vibrotherm/coupling/observe/camera_verdict.hpp"
 #include "vibrotherm/coupling/exchange/heat_sources.hpp"
 #include "vibrotherm/coupling/observe/probe_temperatures.hpp"
@@ -23,7 +24,7 @@ namespace vibrotherm::coupling {
 
 class ThermalStress;
 
-class HeatComponent {
+class HeatComponent final : public ContinuedHeat {
  public:
   HeatComponent();
   HeatComponent(const HeatComponent&) = delete;
@@ -39,17 +40,17 @@ class HeatComponent {
   /// (only the crack heats), none (nothing heats at the crack), or the partial rise the solver
   /// steps beside θ with the friction heat alone (damping, thermoelastic or film heat as well).
   DefectShare defect_share() const { return defect_share_; }
-  heat::HeatSolver& solver() { return solver_; }
-  const heat::HeatSolver& solver() const { return solver_; }
+  heat::HeatSolver& solver() override { return solver_; }
+  const heat::HeatSolver& solver() const override { return solver_; }
   /// One heat step to t, loaded with what every source deposited since the last step
   /// (two_way: then the thermal stress on the waves follows the new temperatures).
   /// sample_probes = false: the caller samples the probes itself (SampleProbes), after shifting the field.
-  PetscErrorCode StepTo(double t, bool sample_probes = true);
+  PetscErrorCode StepTo(double t, bool sample_probes = true) override;
   /// The crack probes' near field paused over a continuation's heat ladder, restarted after it.
-  void PauseNearField() { probe_temperatures_.PauseNearField(); }
-  void RestartNearField() { probe_temperatures_.RestartNearField(); }
+  void PauseNearField() override { probe_temperatures_.PauseNearField(); }
+  void RestartNearField() override { probe_temperatures_.RestartNearField(); }
   /// The probes after a heat step (and, while a replay runs, the replayed friction for their near field).
-  PetscErrorCode SampleProbes();
+  PetscErrorCode SampleProbes() override;
   /// After every wave step while coupled (row: probes.csv has a row at t).
   void AfterWaveStep(double t, bool row) { probe_temperatures_.AfterWaveStep(t, row); }
   /// The probes' temperatures since the last call (probe_temperatures.hpp). Collective.
@@ -66,20 +67,14 @@ class HeatComponent {
   /// (after the waves have restored theirs).
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen);
-  // Periodic continuation (periodic_continuation.hpp).
-  /// Whether every source can replay a recorded period (the continuation needs it).
-  bool replayable() const;
-  /// The sources record what they deposit from t on (a heat step's end), until StopRecording ...
-  PetscErrorCode StartRecording(double t);
-  PetscErrorCode StopRecording();
-  /// ... and replay it (phase-locked or averaged) or take the live physics again (off).
-  PetscErrorCode Replay(ReplayMode mode);
-  /// One heat step to t with the sources' averaged load, exchanging and recording nothing
-  /// (the averaged twin of a continuation's phase-resolved start).
-  PetscErrorCode StepAveraged(double t);
-  /// The solver alone into an in-memory snapshot, and back (the twin starts and ends there).
-  PetscErrorCode SolverSnapshot(const mesh::Specimen& specimen, store::Checkpoint* snapshot) const;
-  PetscErrorCode RestoreSolver(const store::Checkpoint& snapshot, const mesh::Specimen& specimen);
+  // Periodic continuation (continued_parts.hpp).
+  bool replayable() const override;
+  PetscErrorCode StartRecording(double t) override;
+  PetscErrorCode StopRecording() override;
+  PetscErrorCode Replay(ReplayMode mode) override;
+  PetscErrorCode StepAveraged(double t) override;
+  PetscErrorCode SolverSnapshot(const mesh::Specimen& specimen, store::Checkpoint* snapshot) const override;
+  PetscErrorCode RestoreSolver(const store::Checkpoint& snapshot, const mesh::Specimen& specimen) override;
   /// Wall time spent stepping the heat [s].
   double seconds() const { return seconds_; }
   void add_seconds(double s) { seconds_ += s; }

@@ -7,7 +7,7 @@
 #include "vibrotherm/contact/contact_parameters.hpp"
 #include "vibrotherm/coupling/observe/camera_options.hpp"
 #include "vibrotherm/coupling/run/driver_options.hpp"
-#include "vibrotherm/coupling/run/periodic_options.hpp"
+#include "vibrotherm/coupling/continuation/continued_parts.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/wave/excitation.hpp"
@@ -34,6 +34,8 @@ struct Scene {
   /// Where the waves are expected to be over: 8 source periods after the source (the quiet
   /// rule stops them once they are; 7.2 in the paper scene), or -final_time.
   double waves_expected_end() const;
+  /// The numbers a periodic continuation works with.
+  ContinuationScene continuation() const;
 };
 
 /// Reads and checks every simulation option. Collective.

@@ -42,6 +42,7 @@
 namespace vibrotherm::coupling {
 
 class Recorder;
+class RunObservers;
 class HeatCamera;
 class PeriodicContinuation;
 
@@ -67,20 +68,20 @@ class Simulation {
  private:
   /// The IR camera when the scene asks for one (-camera) and heat runs.
   PetscErrorCode SetupCamera(const Scene& scene);
-  PetscErrorCode RunCoupled(Recorder& recorder, io::RunSummary* summary);
+  PetscErrorCode RunCoupled(Recorder& recorder, RunObservers& observers, io::RunSummary* summary);
   /// One coupling interval: waves and the heat's substeps of about heat_dt each
   /// (whole wave steps), then the records of the interval.
-  PetscErrorCode Interval(Recorder& recorder, double heat_dt, io::EnergyRow* row);
+  PetscErrorCode Interval(RunObservers& observers, double heat_dt, io::EnergyRow* row);
   PetscInt WaveStepsPerHeatStep(double heat_dt) const;
-  PetscErrorCode StopWaves(Recorder& recorder, const io::EnergyRow& last, io::RunSummary* summary);
-  PetscErrorCode RunHeatAlone(Recorder& recorder, io::RunSummary* summary);
+  PetscErrorCode StopWaves(RunObservers& observers, const io::EnergyRow& last, io::RunSummary* summary);
+  PetscErrorCode RunHeatAlone(RunObservers& observers, io::RunSummary* summary);
   // Checkpoints (simulation_checkpoint.cpp).
   /// Between coupling intervals: a checkpoint when due; a signal stops the run.
   PetscErrorCode CheckpointIfDue(Recorder& recorder, bool quiet);
   /// waves_quiet: the waves went quiet in the interval just ended (they stop now).
   PetscErrorCode WriteCheckpoint(Recorder& recorder, bool waves_quiet) const;
   /// Every component and the recorder back to the checkpoint's state.
-  PetscErrorCode Resume(const store::Checkpoint& checkpoint, Recorder& recorder);
+  PetscErrorCode Resume(const store::Checkpoint& checkpoint, RunObservers& observers);
   /// Whether this scene's state can be checkpointed (says why not, once).
   PetscErrorCode CanCheckpoint(bool* can) const;
 

@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "vibrotherm/coupling/continuation/continued_parts.hpp"
 #include "vibrotherm/coupling/observe/wave_energy_row.hpp"
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
@@ -17,17 +18,17 @@
 
 namespace vibrotherm::coupling {
 
-class WaveComponent {
+class WaveComponent final : public ContinuedWaves {
  public:
   /// Builds the solver (stage "Wave setup") and the crack interface when a crack transmits tractions;
   /// restarting: the state comes from a checkpoint, the harmonic start is not solved (its checks are made).
   PetscErrorCode Setup(const mesh::Specimen& specimen, const Scene& scene, io::RunSummary* summary,
                        bool restarting = false);
-  wave::WaveSolver& solver() { return *solver_; }
-  const wave::WaveSolver& solver() const { return *solver_; }
+  wave::WaveSolver& solver() override { return *solver_; }
+  const wave::WaveSolver& solver() const override { return *solver_; }
   /// The crack contact, or null (no crack, or a law that transmits nothing).
-  interface::CrackInterface* crack() { return crack_.get(); }
-  const interface::CrackInterface* crack() const { return crack_.get(); }
+  interface::CrackInterface* crack() override { return crack_.get(); }
+  const interface::CrackInterface* crack() const override { return crack_.get(); }
   /// `steps` constant steps, or fewer landing exactly on t_end when it comes first.
   PetscErrorCode Advance(PetscInt steps, double t_end);
   /// Steps to t_end exactly (quantized steps land there).
@@ -40,13 +41,11 @@ class WaveComponent {
   /// Checkpoints: the wave solver and the crack interface; and back.
   PetscErrorCode Save(store::Checkpoint& checkpoint, const mesh::Specimen& specimen) const;
   PetscErrorCode Restore(const store::Checkpoint& checkpoint, const mesh::Specimen& specimen);
-  /// The periodic continuation (periodic_continuation.hpp): the state kept in memory ...
-  PetscErrorCode Snapshot(const mesh::Specimen& specimen, store::Checkpoint* snapshot) const;
-  /// ... what grows over time in it (this rank's: the solver's accounts, then the crack's) ...
-  std::vector<double> Accumulated() const;
-  /// ... and the stored state again, jumped ahead by increments of what grows.
+  // The periodic continuation (continued_parts.hpp).
+  PetscErrorCode Snapshot(const mesh::Specimen& specimen, store::Checkpoint* snapshot) const override;
+  std::vector<double> Accumulated() const override;
   PetscErrorCode ResumeFrom(const store::Checkpoint& snapshot, const mesh::Specimen& specimen,
-                            const std::vector<double>& increments);
+                            const std::vector<double>& increments) override;
 
  private:
   /// With a continuation possible, -max_steps counts the steps taken (refused where they pass it).

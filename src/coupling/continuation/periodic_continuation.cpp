@@ -1,10 +1,8 @@
-#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/coupling/continuation/periodic_continuation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-#include "vibrotherm/coupling/run/recording.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -12,17 +10,19 @@ PeriodicContinuation::~PeriodicContinuation() {
   for (Vec& d : near_field_) VecDestroy(&d);
 }
 
-PetscErrorCode PeriodicContinuation::Setup(const Scene& scene, const mesh::Specimen& specimen, WaveComponent* waves,
-                                           HeatComponent* heat, const std::string& dir, io::RunSummary* summary,
+PetscErrorCode PeriodicContinuation::Setup(const ContinuationScene& scene, const mesh::Specimen& specimen,
+                                           ContinuedWaves* waves, ContinuedHeat* heat, ContinuationObserver* observers,
+                                           const std::string& dir, io::RunSummary* summary,
                                            const store::Checkpoint* resume) {
   PetscFunctionBeginUser;
-  scene_ = &scene;
+  scene_ = scene;
+  observers_ = observers;
   dir_ = dir;
   specimen_ = &specimen;
   waves_ = waves;
   heat_ = heat;
-  period_ = 1.0 / scene.excitation.signal.frequency;
-  heat_dt_ = scene.couple_dt / scene.run.heat_substeps;
+  period_ = 1.0 / scene.signal->frequency;
+  heat_dt_ = scene.couple_dt / scene.heat_substeps;
   on_ = scene.periodic.on && waves && (heat || scene.periodic.choice == PeriodicChoice::On);
   if (!scene.periodic.on) note_ = "-periodic off (or the coupling cannot compare whole periods)";
   else if (!waves) note_ = "no waves";
@@ -46,27 +46,27 @@ bool PeriodicContinuation::AtPeriodBoundary(double t) const {
   return std::abs(k - std::round(k)) < 1e-6;
 }
 
-PetscErrorCode PeriodicContinuation::AfterInterval(Recorder& recorder, const io::EnergyRow& row, bool* continued) {
+PetscErrorCode PeriodicContinuation::AfterInterval(const io::EnergyRow& row, bool* continued) {
   PetscFunctionBeginUser;
   *continued = false;
   const double t = waves_ ? waves_->solver().time() : 0.0;
   if (!on_ || !AtPeriodBoundary(t)) PetscFunctionReturn(0);
   double start, end;
-  const bool steady = scene_->excitation.signal.steady_stretch(t, &start, &end) && t < scene_->final_time;
+  const bool steady = scene_.signal->steady_stretch(t, &start, &end) && t < scene_.final_time;
   if (!steady || end == skip_stretch_) {
     if (phase_ == Phase::kRecord && heat_) PetscCall(heat_->StopRecording());
     phase_ = Phase::kWatch;
     detector_.Reset();
     outlook_.Reset();
-    recorder.progress().SetOutlook(-1.0, 0, "");
+    observers_->progress().SetOutlook(-1.0, 0, "");
     PetscFunctionReturn(0);
   }
   PetscInt multiple;
   PetscCall(detector_.Sample(*waves_, row, &multiple));
-  PetscCall(Outlook(recorder, t, end));
+  PetscCall(Outlook(t, end));
   if (phase_ == Phase::kWatch && multiple > 0) PetscCall(StartRecording(t, multiple, row));
   else if (phase_ == Phase::kRecord && t >= record_end_ - 0.5 * heat_dt_) {
-    if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(recorder, t, row, continued));
+    if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(t, row, continued));
     else {  // it did not repeat after all: watch on
       if (heat_) PetscCall(heat_->StopRecording());
       phase_ = Phase::kWatch;
@@ -75,16 +75,16 @@ PetscErrorCode PeriodicContinuation::AfterInterval(Recorder& recorder, const io:
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::Outlook(Recorder& recorder, double t, double stretch_end) {
+PetscErrorCode PeriodicContinuation::Outlook(double t, double stretch_end) {
   PetscFunctionBeginUser;
   outlook_.Add(t / period_, detector_.last_change());
-  const double change = outlook_.change(), tol = scene_->periodic.tol;
+  const double change = outlook_.change(), tol = scene_.periodic.tol;
   if (!std::isfinite(change)) PetscFunctionReturn(0);  // the detector cannot compare whole windows yet
   const double to_go = outlook_.PeriodsToTolerance(tol), left = (stretch_end - t) / period_;
   char note[256];
   if (!outlook_.predictable()) {  // too few changes for a trend yet
     std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g)", change, tol);
-    recorder.progress().SetOutlook(-1.0, 0, note);
+    observers_->progress().SetOutlook(-1.0, 0, note);
     PetscFunctionReturn(0);
   }
   if (to_go < left) {
@@ -93,12 +93,12 @@ PetscErrorCode PeriodicContinuation::Outlook(Recorder& recorder, double t, doubl
     const double resolved = watch * period_ / solver.dt() + TailSteps(stretch_end, outlook_.watched() + watch);
     std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g), ~%.0f periods to go", change,
                   tol, to_go);
-    recorder.progress().SetOutlook(resolved, solver.steps(), note);
+    observers_->progress().SetOutlook(resolved, solver.steps(), note);
     PetscFunctionReturn(0);
   }
   std::snprintf(note, sizeof(note), "not periodic yet: change %.2g per period (tolerance %.2g)%s", change, tol,
                 std::isfinite(to_go) ? ", shrinking too slowly for this stretch" : ", not shrinking");
-  recorder.progress().SetOutlook(-1.0, 0, note);
+  observers_->progress().SetOutlook(-1.0, 0, note);
   constexpr double kAdviseAfter = 100.0;  // periods watched before saying so
   if (outlook_.watched() < kAdviseAfter || advised_ == stretch_end) PetscFunctionReturn(0);
   advised_ = stretch_end;
@@ -116,14 +116,14 @@ PetscErrorCode PeriodicContinuation::Outlook(Recorder& recorder, double t, doubl
 }
 
 double PeriodicContinuation::TailSteps(double stretch_end, double watched) const {
-  const wave::SourceTimeFunction& signal = scene_->excitation.signal;
+  const wave::SourceTimeFunction& signal = *scene_.signal;
   const double dt = waves_->solver().dt();
-  double steps = std::max(0.0, scene_->waves_expected_end() - stretch_end) / dt;
+  double steps = std::max(0.0, scene_.waves_expected_end - stretch_end) / dt;
   for (const wave::SourceTimeFunction::Step& step : signal.schedule) {  // later stretches: watched as long, continued
     double start, end;
     if (step.t < stretch_end || !signal.steady_stretch(step.t + signal.blend_time() * (1 + 1e-9), &start, &end)) continue;
-    const double continued = std::min(end, scene_->final_time) - start - watched * period_;
-    if (continued > scene_->periodic.min_continued * period_) steps -= continued / dt;
+    const double continued = std::min(end, scene_.final_time) - start - watched * period_;
+    if (continued > scene_.periodic.min_continued * period_) steps -= continued / dt;
   }
   return std::max(0.0, steps);
 }
@@ -140,18 +140,18 @@ PetscErrorCode PeriodicContinuation::StartRecording(double t, PetscInt multiple,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, const io::EnergyRow& row,
+PetscErrorCode PeriodicContinuation::EndRecording(double t, const io::EnergyRow& row,
                                                   bool* continued) {
   PetscFunctionBeginUser;
   phase_ = Phase::kWatch;
   if (heat_) PetscCall(heat_->StopRecording());
   double start, end;
-  scene_->excitation.signal.steady_stretch(t, &start, &end);
-  double stop = std::min(end, scene_->final_time);
-  if (scene_->periodic.refresh > 0.0) stop = std::min(stop, t + scene_->periodic.refresh);
+  scene_.signal->steady_stretch(t, &start, &end);
+  double stop = std::min(end, scene_.final_time);
+  if (scene_.periodic.refresh > 0.0) stop = std::min(stop, t + scene_.periodic.refresh);
   const double P = RecordedPeriod();
   const PetscInt n = static_cast<PetscInt>(std::floor((stop - t) / P + 1e-9));
-  if (n * multiple_ < scene_->periodic.min_continued) {  // not worth it: simulate the rest of this stretch
+  if (n * multiple_ < scene_.periodic.min_continued) {  // not worth it: simulate the rest of this stretch
     skip_stretch_ = end;
     detector_.Reset();
     outlook_.Reset();
@@ -178,7 +178,7 @@ PetscErrorCode PeriodicContinuation::EndRecording(Recorder& recorder, double t, 
                    (crack ? increments_.back() : 0.0);
   row_end_ = row;
   segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change(), drift, projected, error});
-  PetscCall(Continue(recorder, t, n, continued));
+  PetscCall(Continue(t, n, continued));
   PetscFunctionReturn(0);
 }
 
@@ -186,9 +186,9 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
                                                  double* projected, bool* allows) {
   PetscFunctionBeginUser;
   // The period found: 1 in mean mode (whose window may have widened since the recording began).
-  detector_.FrictionDrift(scene_->periodic.mean ? 1 : multiple_ / detector_.window(), drift, error);
+  detector_.FrictionDrift(scene_.periodic.mean ? 1 : multiple_ / detector_.window(), drift, error);
   *projected = 0.5 * std::abs(*drift) * static_cast<double>(n * multiple_);
-  const double tol = scene_->periodic.drift_tol;
+  const double tol = scene_.periodic.drift_tol;
   *allows = tol <= 0.0 || *projected <= tol || !Significant(*drift, *error);
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   if (!*allows && drift_said_ != stretch_end) {
@@ -210,10 +210,10 @@ PetscErrorCode PeriodicContinuation::DriftAllows(double t, PetscInt n, double st
 bool PeriodicContinuation::Significant(double drift, double error) { return std::abs(drift) > 2.0 * error; }
 
 bool PeriodicContinuation::WarnsOfDrift(double drift, double error, double projected) const {
-  return scene_->periodic.drift_tol <= 0.0 && projected > 10.0 * scene_->periodic.tol && Significant(drift, error);
+  return scene_.periodic.drift_tol <= 0.0 && projected > 10.0 * scene_.periodic.tol && Significant(drift, error);
 }
 
-PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, PetscInt n, bool* continued) {
+PetscErrorCode PeriodicContinuation::Continue(double t2, PetscInt n, bool* continued) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   const double P = RecordedPeriod();
@@ -224,10 +224,10 @@ PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, Pet
                         t2, detector_.last_change(), multiple_, P, ladder_.end, n));
   kept_ = std::make_unique<store::Checkpoint>(comm);
   PetscCall(waves_->Snapshot(*specimen_, kept_.get()));
-  recorder.progress().Start(comm, "periodic", t2, ladder_.end, 0.0, true);  // heat steps from here, not wave steps
+  observers_->progress().Start(comm, "periodic", t2, ladder_.end, 0.0, true);  // heat steps from here, not wave steps
   if (heat_) {
-    const PetscInt fine = std::min<PetscInt>(scene_->periodic.fine_periods, n);
-    PetscCall(PhaseResolved(recorder, t2, fine, fine < n));
+    const PetscInt fine = std::min<PetscInt>(scene_.periodic.fine_periods, n);
+    PetscCall(PhaseResolved(t2, fine, fine < n));
     ladder_.t = t2 + fine * P;
     ladder_.rung = P;  // whole recorded periods: every step ends on a period boundary (where D is exact)
     ladder_.count = 0;
@@ -239,16 +239,16 @@ PetscErrorCode PeriodicContinuation::Continue(Recorder& recorder, double t2, Pet
       PetscCall(heat_->solver().UseFreeIntegrator());
     }
   }
-  PetscCall(FinishInterrupted(recorder, continued));
+  PetscCall(FinishInterrupted(continued));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::FinishInterrupted(Recorder& recorder, bool* continued) {
+PetscErrorCode PeriodicContinuation::FinishInterrupted(bool* continued) {
   PetscFunctionBeginUser;
   if (phase_ == Phase::kLadder) {
     heat_->PauseNearField();  // again after a restart inside the ladder (it holds no window there)
     bool stopped;
-    PetscCall(Ladder(recorder, &stopped));
+    PetscCall(Ladder(&stopped));
     if (stopped) PetscFunctionReturn(0);  // a signal: the checkpoint holds the ladder
     PetscCall(AddNearField(ladder_.end, 1.0));
     PetscCall(heat_->solver().UseCoupledIntegrator());
@@ -274,10 +274,10 @@ PetscErrorCode PeriodicContinuation::Resume() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::PhaseResolved(Recorder& recorder, double t2, PetscInt periods, bool twin) {
+PetscErrorCode PeriodicContinuation::PhaseResolved(double t2, PetscInt periods, bool twin) {
   PetscFunctionBeginUser;
   const PetscInt per_period = static_cast<PetscInt>(std::lround(RecordedPeriod() / heat_dt_));
-  const PetscInt steps = periods * per_period, substeps = scene_->run.heat_substeps;
+  const PetscInt steps = periods * per_period, substeps = scene_.heat_substeps;
   const auto time = [&](PetscInt j) { return t2 + static_cast<double>(j) * heat_dt_; };
   store::Checkpoint before(PetscObjectComm((PetscObject)heat_->solver().space().dm()));
   if (twin) PetscCall(heat_->SolverSnapshot(*specimen_, &before));
@@ -286,7 +286,7 @@ PetscErrorCode PeriodicContinuation::PhaseResolved(Recorder& recorder, double t2
   near_field_.assign(twin ? per_period : 0, nullptr);
   for (PetscInt j = 1; j <= steps; ++j) {
     PetscCall(heat_->StepTo(time(j)));
-    PetscCall(Observe(recorder, time(j), j % substeps == 0));
+    PetscCall(Observe(time(j), j % substeps == 0));
     const PetscInt k = j - (steps - per_period);  // 1..per_period over the last period: phase k (per_period ≡ 0)
     if (twin && k >= 1) {
       Vec& d = near_field_[k % per_period];
@@ -322,24 +322,24 @@ PetscErrorCode PeriodicContinuation::AddNearField(double t, double sign) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::Ladder(Recorder& recorder, bool* stopped) {
+PetscErrorCode PeriodicContinuation::Ladder(bool* stopped) {
   PetscFunctionBeginUser;
   *stopped = false;
   MPI_Comm comm = PetscObjectComm((PetscObject)heat_->solver().space().dm());
-  recorder.progress().Start(comm, "periodic", ladder_.t, ladder_.end, 0.0, true);
+  observers_->progress().Start(comm, "periodic", ladder_.t, ladder_.end, 0.0, true);
   while (ladder_.t < ladder_.end * (1 - 1e-12)) {
-    const double next = std::min(ladder_.t + ladder_.rung, recorder.NextHeatStop(ladder_.t, ladder_.end));
+    const double next = std::min(ladder_.t + ladder_.rung, observers_->NextHeatStop(ladder_.t, ladder_.end));
     PetscCall(heat_->StepTo(next, false));
     ladder_.t = next;
     PetscCall(AddNearField(ladder_.t, 1.0));  // the probes sample θ (their own near field is the crack's)
     PetscCall(heat_->SampleProbes());
-    PetscCall(Observe(recorder, ladder_.t, true));
+    PetscCall(Observe(ladder_.t, true));
     PetscCall(AddNearField(ladder_.t, -1.0));
-    if (++ladder_.count % scene_->periodic.ladder_steps == 0) ladder_.rung *= 2.0;
-    if (between_steps) PetscCall(between_steps(stopped));
+    if (++ladder_.count % scene_.periodic.ladder_steps == 0) ladder_.rung *= 2.0;
+    PetscCall(observers_->BetweenSteps(stopped));
     if (*stopped) PetscFunctionReturn(0);
   }
-  PetscCall(recorder.progress().Done(ladder_.t, heat_->solver().steps()));
+  PetscCall(observers_->progress().Done(ladder_.t, heat_->solver().steps()));
   PetscFunctionReturn(0);
 }
 
@@ -356,18 +356,10 @@ io::EnergyRow PeriodicContinuation::WaveRow(double t) const {
   return row;
 }
 
-PetscErrorCode PeriodicContinuation::Observe(Recorder& recorder, double t, bool interval) {
+PetscErrorCode PeriodicContinuation::Observe(double t, bool interval) {
   PetscFunctionBeginUser;
-  const heat::HeatSolver& heat = heat_->solver();
-  PetscCall(recorder.OnHeatStep(heat));
-  if (interval) {
-    PetscCall(RecordTemperature(recorder, *heat_, false));
-    const io::EnergyRow row = WaveRow(t);
-    recorder.OnInterval(row);
-    PetscCall(RecordEnergy(recorder, row, heat_));
-    PetscCall(recorder.progress().Update(t, heat.steps()));
-  }
-  if (recorder.OutputDue(t)) PetscCall(WriteFields(recorder, t, nullptr, heat_));
+  const io::EnergyRow row = interval ? WaveRow(t) : io::EnergyRow{};
+  PetscCall(observers_->HeatStepContinued(t, interval ? &row : nullptr));
   PetscFunctionReturn(0);
 }
 

@@ -37,9 +37,9 @@
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/run/periodic_mean.hpp"
-#include "vibrotherm/coupling/run/periodic_options.hpp"
-#include "vibrotherm/coupling/run/wave_component.hpp"
+#include "vibrotherm/coupling/continuation/periodic_mean.hpp"
+#include "vibrotherm/coupling/continuation/periodic_options.hpp"
+#include "vibrotherm/coupling/continuation/continued_parts.hpp"
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/io/energy_log.hpp"
@@ -57,7 +57,7 @@ class PeriodicDetector {
   PetscErrorCode Open(MPI_Comm comm, const PeriodicOptions& options, const std::string& csv);
   /// A sample at a period boundary: *multiple = the shortest m that repeats within
   /// the tolerance, 0 if none (yet). Collective.
-  PetscErrorCode Sample(WaveComponent& waves, const io::EnergyRow& row, PetscInt* multiple);
+  PetscErrorCode Sample(ContinuedWaves& waves, const io::EnergyRow& row, PetscInt* multiple);
   /// Forgets the samples (the source changed, or the waves jumped ahead).
   void Reset();
   /// The drift of the crack's friction: a least-squares line through the dissipated energy of
@@ -91,7 +91,7 @@ class PeriodicDetector {
     std::vector<double> W, T, b0, b;  ///< per owned contact cell
     io::EnergyRow energy;
   };
-  PetscErrorCode Take(WaveComponent& waves, const io::EnergyRow& row, Snapshot* s) const;
+  PetscErrorCode Take(ContinuedWaves& waves, const io::EnergyRow& row, Snapshot* s) const;
   /// The change between the last sample and the one m back (state, memory, cells, energies).
   PetscErrorCode Change(std::size_t m, const std::vector<double>& weights, double parts[4]) const;
   /// -periodic_mode mean: the heat's accounts (friction, damping) per period over the last two

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/run/periodic_mean.hpp"
+#include "vibrotherm/coupling/continuation/periodic_mean.hpp"
 
 #include <algorithm>
 #include <cmath>

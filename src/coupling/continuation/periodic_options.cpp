@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/run/periodic_options.hpp"
+#include "vibrotherm/coupling/continuation/periodic_options.hpp"
 
 #include <cmath>
 

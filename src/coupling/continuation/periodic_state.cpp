@@ -2,7 +2,7 @@
 // finds periodicity where the uninterrupted run does), a recording under way
 // (the sources keep theirs), and a continuation's ladder (the waves' kept state
 // is the wave component's own state, suspended; the heat holds θ − D).
-#include "vibrotherm/coupling/run/periodic_continuation.hpp"
+#include "vibrotherm/coupling/continuation/periodic_continuation.hpp"
 
 #include <cmath>
 
@@ -29,7 +29,7 @@ io::EnergyRow Unflatten(const double* v) {
   return r;
 }
 
-std::vector<long long> CellKeys(const WaveComponent& waves, const mesh::PointOrigin& origin) {
+std::vector<long long> CellKeys(const ContinuedWaves& waves, const mesh::PointOrigin& origin) {
   std::vector<long long> keys;
   if (const interface::CrackInterface* crack = waves.crack())
     for (const interface::ContactCell& c : crack->cells()) keys.push_back(origin[c.plus]);

@@ -32,24 +32,19 @@
 
 #include <petscvec.h>
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "vibrotherm/coupling/run/heat_component.hpp"
-#include "vibrotherm/coupling/run/periodic_detector.hpp"
-#include "vibrotherm/coupling/run/periodic_outlook.hpp"
-#include "vibrotherm/coupling/run/scene.hpp"
-#include "vibrotherm/coupling/run/wave_component.hpp"
+#include "vibrotherm/coupling/continuation/continued_parts.hpp"
+#include "vibrotherm/coupling/continuation/periodic_detector.hpp"
+#include "vibrotherm/coupling/continuation/periodic_outlook.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/io/energy_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
 
 namespace vibrotherm::coupling {
-
-class Recorder;
 
 class PeriodicContinuation {
  public:
@@ -59,19 +54,19 @@ class PeriodicContinuation {
   ~PeriodicContinuation();
 
   /// Whether this scene can use it (-periodic on, waves, every heat source replayable); says why not.
+  /// observers: the run's, told of every heat step the continuation takes without waves.
   /// resume: continue the files of the interrupted run whose checkpoint it is.
-  PetscErrorCode Setup(const Scene& scene, const mesh::Specimen& specimen, WaveComponent* waves, HeatComponent* heat,
-                       const std::string& dir, io::RunSummary* summary, const store::Checkpoint* resume = nullptr);
+  PetscErrorCode Setup(const ContinuationScene& scene, const mesh::Specimen& specimen, ContinuedWaves* waves,
+                       ContinuedHeat* heat, ContinuationObserver* observers, const std::string& dir,
+                       io::RunSummary* summary, const store::Checkpoint* resume = nullptr);
   bool on() const { return on_; }
   /// After a coupling interval of the waves (energy row `row` at its end): watch, record,
   /// and continue as above. A continuation (*continued) returns with the waves resumed at its end.
-  PetscErrorCode AfterInterval(Recorder& recorder, const io::EnergyRow& row, bool* continued);
+  PetscErrorCode AfterInterval(const io::EnergyRow& row, bool* continued);
   /// Restarted inside a continuation's ladder (the waves are suspended).
   bool continuing() const { return phase_ == Phase::kLadder; }
   /// After a restart inside a continuation's ladder: the rest of it, then the waves resumed.
-  PetscErrorCode FinishInterrupted(Recorder& recorder, bool* continued);
-  /// Called between the ladder's steps: a checkpoint when due; true when a signal stops the run.
-  std::function<PetscErrorCode(bool* stop)> between_steps;
+  PetscErrorCode FinishInterrupted(bool* continued);
   /// Fills summary.json's "periodic" and publishes periodic.csv (a complete run).
   PetscErrorCode Finish(io::RunSummary* summary);
   void Keep() { detector_.Keep(); }
@@ -86,12 +81,12 @@ class PeriodicContinuation {
   /// The progress line's outlook while watching (issue 43): the change per period against the
   /// tolerance, the periods its trend still needs, the steps the run then resolves; once per
   /// stretch, when the change does not shrink toward the tolerance in time, what would help.
-  PetscErrorCode Outlook(Recorder& recorder, double t, double stretch_end);
+  PetscErrorCode Outlook(double t, double stretch_end);
   /// Wave steps resolved after the steady stretch ending at stretch_end: to the waves' expected
   /// end, less what later stretches continue when each is watched `watched` periods.
   double TailSteps(double stretch_end, double watched) const;
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
-  PetscErrorCode EndRecording(Recorder& recorder, double t, const io::EnergyRow& row, bool* continued);
+  PetscErrorCode EndRecording(double t, const io::EnergyRow& row, bool* continued);
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
   /// recorded periods (a drift that is not Significant allows it); says so once per steady
   /// stretch when it does not. *drift, *error, *projected: as Segment.
@@ -104,16 +99,16 @@ class PeriodicContinuation {
   /// A drift beyond two standard errors of none (within them it is the scatter's slope).
   static bool Significant(double drift, double error);
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
-  PetscErrorCode Continue(Recorder& recorder, double t2, PetscInt n, bool* continued);
+  PetscErrorCode Continue(double t2, PetscInt n, bool* continued);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
   /// with `twin`, the averaged twin from the same state gives D over the last period.
-  PetscErrorCode PhaseResolved(Recorder& recorder, double t2, PetscInt periods, bool twin);
+  PetscErrorCode PhaseResolved(double t2, PetscInt periods, bool twin);
   /// The ladder with the averaged power from ladder_.t to ladder_.end (a period boundary); stops early on a signal.
-  PetscErrorCode Ladder(Recorder& recorder, bool* stopped);
+  PetscErrorCode Ladder(bool* stopped);
   /// The waves from the kept state at ladder_.end, jumped ahead.
   PetscErrorCode Resume();
   /// The records of a heat step at t without waves (interval rows when `interval`).
-  PetscErrorCode Observe(Recorder& recorder, double t, bool interval);
+  PetscErrorCode Observe(double t, bool interval);
   /// energy.csv's wave columns at t during the continuation: the recorded period's growth.
   io::EnergyRow WaveRow(double t) const;
   /// θ += sign · D at the phase of t.
@@ -121,10 +116,11 @@ class PeriodicContinuation {
   double RecordedPeriod() const { return multiple_ * period_; }
 
   bool on_ = false;
-  const Scene* scene_ = nullptr;
+  ContinuationScene scene_;
   const mesh::Specimen* specimen_ = nullptr;
-  WaveComponent* waves_ = nullptr;
-  HeatComponent* heat_ = nullptr;
+  ContinuedWaves* waves_ = nullptr;
+  ContinuedHeat* heat_ = nullptr;
+  ContinuationObserver* observers_ = nullptr;
   std::string dir_;
   PeriodicDetector detector_;
   Phase phase_ = Phase::kWatch;

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/run/periodic_detector.hpp"
+#include "vibrotherm/coupling/continuation/periodic_detector.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +65,7 @@ void PeriodicDetector::Reset() {
   mean_window_.Reset();
 }
 
-PetscErrorCode PeriodicDetector::Take(WaveComponent& waves, const io::EnergyRow& row, Snapshot* s) const {
+PetscErrorCode PeriodicDetector::Take(ContinuedWaves& waves, const io::EnergyRow& row, Snapshot* s) const {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves.solver();
   Vec u, v;
@@ -142,7 +142,7 @@ PetscErrorCode PeriodicDetector::Change(std::size_t m, const std::vector<double>
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicDetector::Sample(WaveComponent& waves, const io::EnergyRow& row, PetscInt* multiple) {
+PetscErrorCode PeriodicDetector::Sample(ContinuedWaves& waves, const io::EnergyRow& row, PetscInt* multiple) {
   PetscFunctionBeginUser;
   *multiple = 0;
   samples_.emplace_back();

@@ -1,4 +1,4 @@
-#include "vibrotherm/coupling/run/periodic_outlook.hpp"
+#include "vibrotherm/coupling/continuation/periodic_outlook.hpp"
 
 #include <cmath>
 #include <limits>
