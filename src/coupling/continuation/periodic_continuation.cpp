@@ -46,9 +46,9 @@ bool PeriodicContinuation::AtPeriodBoundary(double t) const {
   return std::abs(k - std::round(k)) < 1e-6;
 }
 
-PetscErrorCode PeriodicContinuation::AfterInterval(const io::EnergyRow& row, bool* continued) {
+PetscErrorCode PeriodicContinuation::AfterInterval(const io::EnergyRow& row, bool* ready) {
   PetscFunctionBeginUser;
-  *continued = false;
+  *ready = false;
   const double t = waves_ ? waves_->solver().time() : 0.0;
   if (!on_ || !AtPeriodBoundary(t)) PetscFunctionReturn(0);
   double start, end;
@@ -66,7 +66,7 @@ PetscErrorCode PeriodicContinuation::AfterInterval(const io::EnergyRow& row, boo
   PetscCall(Outlook(t, end));
   if (phase_ == Phase::kWatch && multiple > 0) PetscCall(StartRecording(t, multiple, row));
   else if (phase_ == Phase::kRecord && t >= record_end_ - 0.5 * heat_dt_) {
-    if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(t, row, continued));
+    if (multiple > 0 && multiple_ % multiple == 0) PetscCall(EndRecording(t, row, ready));
     else {  // it did not repeat after all: watch on
       if (heat_) PetscCall(heat_->StopRecording());
       phase_ = Phase::kWatch;
@@ -141,7 +141,7 @@ PetscErrorCode PeriodicContinuation::StartRecording(double t, PetscInt multiple,
 }
 
 PetscErrorCode PeriodicContinuation::EndRecording(double t, const io::EnergyRow& row,
-                                                  bool* continued) {
+                                                  bool* ready) {
   PetscFunctionBeginUser;
   phase_ = Phase::kWatch;
   if (heat_) PetscCall(heat_->StopRecording());
@@ -178,7 +178,8 @@ PetscErrorCode PeriodicContinuation::EndRecording(double t, const io::EnergyRow&
                    (crack ? increments_.back() : 0.0);
   row_end_ = row;
   segments_.push_back({record_start_, t, 0.0, multiple_, n, detector_.last_change(), drift, projected, error});
-  PetscCall(Continue(t, n, continued));
+  pending_ = {t, n};
+  *ready = true;
   PetscFunctionReturn(0);
 }
 
@@ -213,7 +214,17 @@ bool PeriodicContinuation::WarnsOfDrift(double drift, double error, double proje
   return scene_.periodic.drift_tol <= 0.0 && projected > 10.0 * scene_.periodic.tol && Significant(drift, error);
 }
 
-PetscErrorCode PeriodicContinuation::Continue(double t2, PetscInt n, bool* continued) {
+PetscErrorCode PeriodicContinuation::Continue(bool* resumed) {
+  PetscFunctionBeginUser;
+  *resumed = false;
+  const Pending pending = pending_;
+  pending_ = {};
+  if (pending.n > 0) PetscCall(ContinueFrom(pending.t2, pending.n, resumed));
+  else PetscCall(FinishLadder(resumed));  // restarted inside the ladder
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PeriodicContinuation::ContinueFrom(double t2, PetscInt n, bool* resumed) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   const double P = RecordedPeriod();
@@ -239,11 +250,11 @@ PetscErrorCode PeriodicContinuation::Continue(double t2, PetscInt n, bool* conti
       PetscCall(heat_->solver().UseFreeIntegrator());
     }
   }
-  PetscCall(FinishInterrupted(continued));
+  PetscCall(FinishLadder(resumed));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PeriodicContinuation::FinishInterrupted(bool* continued) {
+PetscErrorCode PeriodicContinuation::FinishLadder(bool* resumed) {
   PetscFunctionBeginUser;
   if (phase_ == Phase::kLadder) {
     heat_->PauseNearField();  // again after a restart inside the ladder (it holds no window there)
@@ -259,7 +270,7 @@ PetscErrorCode PeriodicContinuation::FinishInterrupted(bool* continued) {
   phase_ = Phase::kWatch;
   detector_.Reset();
   outlook_.Reset();
-  *continued = true;
+  *resumed = true;
   PetscFunctionReturn(0);
 }
 

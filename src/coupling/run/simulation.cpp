@@ -78,10 +78,11 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (waves_) PetscCall(recorder.MeterSource(scene_->excitation.signal, scene_->periodic.window, control.restart));
+  recorder_ = &recorder;
   RunObservers observers(recorder, waves_.get(), heat_.get(), scene_->run.probe_every);
-  observers.OnBetweenSteps([this, &recorder](bool* stop) {
+  observers.OnBetweenSteps([this](bool* stop) {
     PetscFunctionBeginUser;
-    PetscCall(CheckpointIfDue(recorder, false));
+    PetscCall(CheckpointIfDue(*recorder_, false));
     *stop = interrupted_by_ != 0;
     PetscFunctionReturn(0);
   });
@@ -96,9 +97,7 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                                summary, control.restart));
   }
   if (control.restart) PetscCall(Resume(*control.restart, observers));
-  if (waves_) PetscCall(RunCoupled(recorder, observers, summary));
-  if (!interrupted_by_ && heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12))
-    PetscCall(RunHeatAlone(observers, summary));
+  PetscCall(RunPhases(observers, summary));
   if (interrupted_by_) {  // the files stay as the checkpoint describes them
     recorder.Keep();
     if (periodic_) periodic_->Keep();
@@ -113,7 +112,38 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::RunCoupled(Recorder& recorder, RunObservers& observers, io::RunSummary* summary) {
+PetscErrorCode Simulation::RunPhases(RunObservers& observers, io::RunSummary* summary) {
+  PetscFunctionBeginUser;
+  RunPhase phase = RunPhase::kHeatAlone;
+  if (waves_) {
+    PetscCall(StartWaves(observers));
+    continuation_restarted_ = periodic_->ready();  // restarted inside a continuation: its rest first
+    phase = continuation_restarted_ ? RunPhase::kContinued : RunPhase::kCoupled;
+  }
+  while (phase != RunPhase::kDone && !interrupted_by_) {
+    switch (phase) {
+      case RunPhase::kCoupled:
+        PetscCall(CoupledInterval(observers, &phase));
+        break;
+      case RunPhase::kContinued:
+        PetscCall(Continued(&phase));
+        break;
+      case RunPhase::kStopWaves:
+        PetscCall(EndWaves(observers, summary, &phase));
+        break;
+      case RunPhase::kHeatAlone:
+        if (heat_ && heat_->solver().time() < scene_->final_time * (1 - 1e-12)) PetscCall(RunHeatAlone(observers, summary));
+        phase = RunPhase::kDone;
+        break;
+      case RunPhase::kDone:
+        break;
+    }
+  }
+  if (waves_ && waves_->running() && interrupted_by_) PetscCall(PetscLogStagePop());  // the waves' stage, left early
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::StartWaves(RunObservers& observers) {
   PetscFunctionBeginUser;
   wave::WaveSolver& solver = waves_->solver();
   MPI_Comm comm = PetscObjectComm((PetscObject)solver.space().dm());
@@ -121,8 +151,8 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, RunObservers& observer
   // A whole number of wave steps per heat step: every heat step has the same
   // length, so the heat matrix is factored once.
   const PetscInt per_interval = heat_ ? scene_->run.heat_substeps : 1;
-  const double heat_dt = scene_->couple_dt / per_interval;
-  const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt);
+  heat_dt_ = scene_->couple_dt / per_interval;
+  const PetscInt per_heat_step = WaveStepsPerHeatStep(heat_dt_);
   const double expected_end = scene_->waves_expected_end();
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
@@ -134,34 +164,69 @@ PetscErrorCode Simulation::RunCoupled(Recorder& recorder, RunObservers& observer
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
                           heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
   solver.on_step = [&observers](const wave::WaveSolver& w) { return observers.WaveStep(w); };
-  recorder.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
-  const double t0 = MPI_Wtime();
+  observers.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
+  waves_began_ = MPI_Wtime();
   PetscCall(PetscLogStagePush(wave_stage_));
-  io::EnergyRow row;
-  PetscCall(waves_->Energy(&row));
-  bool quiet = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
-  if (quiet) heat_alone_from_ = solver.time();
-  if (periodic_->continuing()) {  // restarted inside a continuation: its rest first
-    bool continued;
-    PetscCall(periodic_->FinishInterrupted(&continued));
-    PetscCall(waves_->Energy(&row));
+  PetscCall(waves_->Energy(&row_));
+  quiet_ = waves_quiet_at_restart_;  // restarted where the waves stopped: they stop at once
+  if (quiet_) heat_alone_from_ = solver.time();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::CoupledInterval(RunObservers& observers, RunPhase* next) {
+  PetscFunctionBeginUser;
+  if (quiet_ || waves_->solver().time() >= scene_->final_time * (1 - 1e-12)) {
+    *next = RunPhase::kStopWaves;
+    PetscFunctionReturn(0);
   }
-  while (solver.time() < final_time * (1 - 1e-12) && !quiet && !interrupted_by_) {
-    PetscCall(Interval(observers, heat_dt, &row));
-    bool continued;
-    PetscCall(periodic_->AfterInterval(row, &continued));
-    if (continued) {  // the waves jumped ahead: their energies now, the progress line on from here
-      PetscCall(waves_->Energy(&row));
-      recorder.progress().Start(comm, "wave", solver.time(), expected_end, solver.dt(), false);
-    }
-    PetscCall(WavesQuiet(row, &quiet));
-    PetscCall(CheckpointIfDue(recorder, quiet));
+  PetscCall(Interval(observers, heat_dt_, &row_));
+  bool ready;
+  PetscCall(periodic_->AfterInterval(row_, &ready));
+  if (ready) {  // continued next; the quiet test and the checkpoint of this interval after it
+    *next = RunPhase::kContinued;
+    PetscFunctionReturn(0);
   }
+  PetscCall(AfterCoupledInterval(next));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::AfterCoupledInterval(RunPhase* next) {
+  PetscFunctionBeginUser;
+  PetscCall(WavesQuiet(row_, &quiet_));
+  PetscCall(CheckpointIfDue(*recorder_, quiet_));
+  *next = RunPhase::kCoupled;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Continued(RunPhase* next) {
+  PetscFunctionBeginUser;
+  const bool restarted = continuation_restarted_;  // restarted inside its ladder: no interval ended it
+  continuation_restarted_ = false;
+  bool resumed;
+  PetscCall(periodic_->Continue(&resumed));
+  *next = RunPhase::kCoupled;
+  if (restarted) {
+    PetscCall(waves_->Energy(&row_));
+    PetscFunctionReturn(0);
+  }
+  if (resumed) {  // the waves jumped ahead: their energies now, the progress line on from here
+    wave::WaveSolver& solver = waves_->solver();
+    PetscCall(waves_->Energy(&row_));
+    recorder_->progress().Start(PetscObjectComm((PetscObject)solver.space().dm()), "wave", solver.time(),
+                                scene_->waves_expected_end(), solver.dt(), false);
+  }
+  PetscCall(AfterCoupledInterval(next));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::EndWaves(RunObservers& observers, io::RunSummary* summary, RunPhase* next) {
+  PetscFunctionBeginUser;
+  wave::WaveSolver& solver = waves_->solver();
   PetscCall(PetscLogStagePop());
-  if (interrupted_by_) PetscFunctionReturn(0);
-  summary->stages["wave_steps"] = MPI_Wtime() - t0 - (heat_ ? heat_->seconds() : 0.0);
-  PetscCall(recorder.progress().Done(solver.time(), solver.steps()));
-  PetscCall(StopWaves(observers, row, summary));
+  summary->stages["wave_steps"] = MPI_Wtime() - waves_began_ - (heat_ ? heat_->seconds() : 0.0);
+  PetscCall(observers.progress().Done(solver.time(), solver.steps()));
+  PetscCall(StopWaves(observers, row_, summary));
+  *next = RunPhase::kHeatAlone;
   PetscFunctionReturn(0);
 }
 

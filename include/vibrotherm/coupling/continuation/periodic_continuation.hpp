@@ -60,13 +60,14 @@ class PeriodicContinuation {
                        ContinuedHeat* heat, ContinuationObserver* observers, const std::string& dir,
                        io::RunSummary* summary, const store::Checkpoint* resume = nullptr);
   bool on() const { return on_; }
-  /// After a coupling interval of the waves (energy row `row` at its end): watch, record,
-  /// and continue as above. A continuation (*continued) returns with the waves resumed at its end.
-  PetscErrorCode AfterInterval(const io::EnergyRow& row, bool* continued);
-  /// Restarted inside a continuation's ladder (the waves are suspended).
-  bool continuing() const { return phase_ == Phase::kLadder; }
-  /// After a restart inside a continuation's ladder: the rest of it, then the waves resumed.
-  PetscErrorCode FinishInterrupted(bool* continued);
+  /// After a coupling interval of the waves (energy row `row` at its end): watch and record as
+  /// above; *ready once the recorded period can be continued (Continue is the run's next phase).
+  PetscErrorCode AfterInterval(const io::EnergyRow& row, bool* ready);
+  /// A continuation is ready: found by AfterInterval, or restarted inside its heat ladder.
+  bool ready() const { return pending_.n > 0 || phase_ == Phase::kLadder; }
+  /// The continued phase: the heat for the n periods the source stays the same (or the rest of
+  /// the ladder after a restart), then the waves resumed (*resumed; false: a signal stopped it).
+  PetscErrorCode Continue(bool* resumed);
   /// Fills summary.json's "periodic" and publishes periodic.csv (a complete run).
   PetscErrorCode Finish(io::RunSummary* summary);
   void Keep() { detector_.Keep(); }
@@ -86,7 +87,7 @@ class PeriodicContinuation {
   /// end, less what later stretches continue when each is watched `watched` periods.
   double TailSteps(double stretch_end, double watched) const;
   PetscErrorCode StartRecording(double t, PetscInt multiple, const io::EnergyRow& row);
-  PetscErrorCode EndRecording(double t, const io::EnergyRow& row, bool* continued);
+  PetscErrorCode EndRecording(double t, const io::EnergyRow& row, bool* ready);
   /// Whether the friction's drift (measured over the detector's samples) allows continuing n
   /// recorded periods (a drift that is not Significant allows it); says so once per steady
   /// stretch when it does not. *drift, *error, *projected: as Segment.
@@ -99,7 +100,9 @@ class PeriodicContinuation {
   /// A drift beyond two standard errors of none (within them it is the scatter's slope).
   static bool Significant(double drift, double error);
   /// n whole periods of heat without waves from t2, then the waves resumed n·P later.
-  PetscErrorCode Continue(double t2, PetscInt n, bool* continued);
+  PetscErrorCode ContinueFrom(double t2, PetscInt n, bool* resumed);
+  /// The rest of the heat ladder (after a restart inside it: from its checkpoint), then the waves resumed.
+  PetscErrorCode FinishLadder(bool* resumed);
   /// The phase-resolved start: `periods` periods of heat steps with the recorded power;
   /// with `twin`, the averaged twin from the same state gives D over the last period.
   PetscErrorCode PhaseResolved(double t2, PetscInt periods, bool twin);
@@ -137,6 +140,10 @@ class PeriodicContinuation {
   io::EnergyRow row_start_, row_end_;
   std::unique_ptr<store::Checkpoint> kept_;  ///< the waves at the recording's end
   std::vector<Vec> near_field_;           ///< D at each heat step of the last recorded period (index 0: phase 0)
+  struct Pending {  ///< a continuation found, not yet run: from t2, n recorded periods
+    double t2 = 0.0;
+    PetscInt n = 0;
+  } pending_;
   struct LadderState {
     double t = 0.0, end = 0.0, rung = 0.0;
     PetscInt count = 0;

@@ -4,15 +4,22 @@
 //   Setup  scene (every option, read once) → waves (+ crack contact, when a crack
 //          transmits tractions) → heat (when something can heat: a crack law
 //          that dissipates, -heat on, or -physics heat)
-//   Run    coupled: per heat step (-couple_dt / -heat_substeps), the waves
-//          advance a whole number of steps, then the heat takes one step with
-//          the energy its sources deposited in it (friction_heat.hpp);
-//          per coupling interval: energy and probe rows, fields, the quiet test.
-//          After the source, once the waves are quiet (-wave_quiet_fraction),
-//          the waves stop (their solver and the interface are freed) and the
-//          heat runs alone (adaptive) to -final_time, landing on output times
-//          and on the camera's frame windows.
-//          After every heat step: the field's peak rise and the camera's pixels.
+//   Run    the observers registered once (run_observers.hpp: probes, energy, crack
+//          state, fields, field peak, camera, progress; checkpoints), then the
+//          phases in one loop (RunPhases):
+//          coupled    per heat step (-couple_dt / -heat_substeps) the waves
+//                     advance a whole number of steps, then the heat takes one step
+//                     with the energy its sources deposited in it (friction_heat.hpp);
+//                     per coupling interval: the records, the periodic detector, the
+//                     quiet test, a checkpoint when due;
+//          continued  a periodic state found: the continuation (coupling/continuation)
+//                     feeds the heat the recorded period, the waves suspended, then
+//                     resumes them (back to coupled);
+//          stop waves after the source, once the waves are quiet (-wave_quiet_fraction)
+//                     or at -final_time: their solver and the interface are freed;
+//          heat alone (adaptive) to -final_time, landing on output times and on the
+//                     camera's frame windows.
+//          Each phase tells the observers of its steps; none writes a record itself.
 // Checkpoints (simulation_checkpoint.cpp): between coupling intervals, every
 // -checkpoint_every_s and on SIGTERM/SIGINT/SIGUSR1 (the run then stops); a
 // restart restores every component and the recorder and goes on as if never
@@ -68,7 +75,20 @@ class Simulation {
  private:
   /// The IR camera when the scene asks for one (-camera) and heat runs.
   PetscErrorCode SetupCamera(const Scene& scene);
-  PetscErrorCode RunCoupled(Recorder& recorder, RunObservers& observers, io::RunSummary* summary);
+  /// The run's phases in one loop: coupled intervals (waves and heat), continued (the periodic
+  /// continuation's heat, the waves suspended), the waves stopped, then the heat alone.
+  enum class RunPhase { kCoupled, kContinued, kStopWaves, kHeatAlone, kDone };
+  PetscErrorCode RunPhases(RunObservers& observers, io::RunSummary* summary);
+  /// The waves' phase begins (or goes on after a restart): their step, the progress line, the stage.
+  PetscErrorCode StartWaves(RunObservers& observers);
+  /// One coupling interval; then a continuation, the quiet test or the waves' end decide what is next.
+  PetscErrorCode CoupledInterval(RunObservers& observers, RunPhase* next);
+  /// The quiet test and a checkpoint when due, after an interval (or the continuation it started).
+  PetscErrorCode AfterCoupledInterval(RunPhase* next);
+  /// The periodic continuation's phase: its heat, then the waves resumed.
+  PetscErrorCode Continued(RunPhase* next);
+  /// The waves are quiet or at the final time: their records closed, their solvers freed.
+  PetscErrorCode EndWaves(RunObservers& observers, io::RunSummary* summary, RunPhase* next);
   /// One coupling interval: waves and the heat's substeps of about heat_dt each
   /// (whole wave steps), then the records of the interval.
   PetscErrorCode Interval(RunObservers& observers, double heat_dt, io::EnergyRow* row);
@@ -94,6 +114,13 @@ class Simulation {
   bool waves_quiet_at_restart_ = false;  ///< the checkpoint restarted from was written as the waves stopped
   double heat_alone_from_ = -1.0;  ///< where a stop in the heat-alone phase resumes (< 0: no checkpoint there)
   int interrupted_by_ = 0;
+  Recorder* recorder_ = nullptr;  ///< Run's, while it runs
+  // The waves' phase (RunPhases).
+  io::EnergyRow row_;          ///< the waves' energy row at the last interval's end
+  bool quiet_ = false;         ///< the waves went quiet (they stop)
+  double heat_dt_ = 0.0;       ///< the coupled heat step
+  double waves_began_ = 0.0;   ///< wall time the waves' phase began
+  bool continuation_restarted_ = false;  ///< restarted inside a continuation's ladder
   std::unique_ptr<WaveComponent> waves_;
   std::unique_ptr<HeatComponent> heat_;
   std::unique_ptr<HeatCamera> camera_;  ///< -camera: the IR camera's view of the heat field
