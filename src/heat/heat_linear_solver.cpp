@@ -6,6 +6,8 @@
 
 #include "vibrotherm/heat/heat_solver.hpp"
 
+#include "vibrotherm/options/query/option_query.hpp"
+
 namespace vibrotherm::heat {
 
 namespace {
@@ -13,8 +15,8 @@ namespace {
 /// Puts -<prefix>name value in the options database unless the user gave it.
 PetscErrorCode DefaultOption(const char* prefix, const char* name, const char* value) {
   PetscFunctionBeginUser;
-  PetscBool given;
-  PetscCall(PetscOptionsHasName(nullptr, prefix, name, &given));
+  bool given;
+  PetscCall(OptionGiven(prefix, name, &given));
   const std::string full = "-" + std::string(prefix ? prefix : "") + (name + 1);  // name without its '-'
   if (!given) PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
   PetscFunctionReturn(0);
@@ -23,10 +25,8 @@ PetscErrorCode DefaultOption(const char* prefix, const char* name, const char* v
 /// The -<prefix>pc_type the user gave ("" when none).
 PetscErrorCode UserPcType(const char* prefix, std::string* type) {
   PetscFunctionBeginUser;
-  char value[64] = "";
-  PetscBool given;
-  PetscCall(PetscOptionsGetString(nullptr, prefix, "-pc_type", value, sizeof value, &given));
-  *type = given ? value : "";
+  type->clear();
+  PetscCall(OptionText(prefix, "-pc_type", type));
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 
 #include "vibrotherm/contact/contact_parameter_list.hpp"
 #include "vibrotherm/contact/crack_law.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm {
@@ -13,8 +14,8 @@ namespace {
 PetscErrorCode RejectRenamedOptions(MPI_Comm comm) {
   PetscFunctionBeginUser;
   for (const contact::RenamedOption& r : contact::renamed_contact_options()) {
-    PetscBool set = PETSC_FALSE;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, r.old_name, &set));
+    bool set;
+    PetscCall(OptionGiven(nullptr, r.old_name, &set));
     PetscCheck(!set, comm, PETSC_ERR_USER_INPUT, "%s", contact::renamed_message(r).c_str());
   }
   PetscFunctionReturn(0);
@@ -43,8 +44,8 @@ PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p) 
   PetscCall(RejectRenamedOptions(comm));
   // vibrotherm-contact's one cell starts at -contact_a0; a crack's faces start at -crack_a0 and its
   // profile (interface/approach_profile): one name here, the other refused, not silently ignored.
-  PetscBool cell_a0 = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-contact_a0", &cell_a0));
+  bool cell_a0;
+  PetscCall(OptionGiven(nullptr, "-contact_a0", &cell_a0));
   PetscCheck(!cell_a0, comm, PETSC_ERR_USER_INPUT,
              "-contact_a0 is vibrotherm-contact's (one contact cell); the crack faces' initial approach in vibrotherm "
              "is -crack_a0 [m] (with -crack_a0_profile)");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/store/atomic_file.hpp"
 #include "vibrotherm/io/json_writer.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -175,8 +176,8 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  char* options = nullptr;
-  PetscCall(PetscOptionsGetAll(nullptr, &options));  // collective
+  std::string options;
+  PetscCall(AllOptions(&options));
   if (rank == 0) {
     VibrothermCallIo(PETSC_COMM_SELF, {
       store::AtomicFile file(path);
@@ -229,13 +230,12 @@ PetscErrorCode WriteRunSummary(MPI_Comm comm, const std::string& path, const Run
       for (const auto& [name, seconds] : s.stages) json.value(name.c_str(), seconds);
       json.end_object();
       WriteMesh(json, s.mesh);
-      json.value("options", options ? options : "");
+      json.value("options", options);
       WriteRecord(json, s);
       json.end_object();
       file.commit();
     });
   }
-  PetscCall(PetscFree(options));
   PetscFunctionReturn(0);
 }
 

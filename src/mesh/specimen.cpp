@@ -10,6 +10,7 @@
 #include "vibrotherm/mesh/mesh_data.hpp"
 #include "vibrotherm/mesh/plex/metis_partitioner.hpp"
 #include "vibrotherm/mesh/plex_builder.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/root_task.hpp"
 
@@ -65,8 +66,8 @@ PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
              m->refinements);
   // -dm_refine has PETSc's dm_ prefix, so the audit of missing values leaves it to PETSc,
   // which takes "-dm_refine" with no value as not given: vibrotherm reads it, so it checks.
-  PetscBool refine_named;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_refine", &refine_named));
+  bool refine_named;
+  PetscCall(OptionGiven(nullptr, "-dm_refine", &refine_named));
   PetscCheck(!refine_named || refine_given, comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
   PetscCheck(!m->from_file || m->file[0], comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->heat_file[0], comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
@@ -149,9 +150,9 @@ PetscErrorCode AnnounceMeshing(MPI_Comm comm, const MeshSource& source, const Sp
 /// Said loudly, with the cost and the ways out, unless -heat_mesh wave asked for it.
 PetscErrorCode WarnUngradedHeatMesh(MPI_Comm comm, const char* file, const std::string& ungraded, double exchange_length) {
   PetscFunctionBeginUser;
-  char kind[16] = "";
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-heat_mesh", kind, sizeof(kind), nullptr));
-  if (std::string(kind) == "wave") PetscFunctionReturn(0);
+  std::string kind;
+  PetscCall(OptionText(nullptr, "-heat_mesh", &kind));
+  if (kind == "wave") PetscFunctionReturn(0);
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0)
@@ -338,8 +339,8 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
                                       "-source_patch_edge", "-source_patch_center", "-source_patch_width"};
   std::string given;
   for (const char* name : names) {
-    PetscBool set;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    bool set;
+    PetscCall(OptionGiven(nullptr, name, &set));
     if (set) given += std::string(given.empty() ? "" : ", ") + name;
   }
   if (!given.empty())

@@ -8,6 +8,7 @@
 
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::modes {
@@ -33,8 +34,8 @@ PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, Cr
       };
     PetscFunctionReturn(0);
   }
-  PetscBool from_file;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mesh_file", &from_file));
+  bool from_file;
+  PetscCall(OptionGiven(nullptr, "-mesh_file", &from_file));
   if (from_file) PetscFunctionReturn(0);  // a 3D mesh file's cracks are surfaces of its own: no distance yet
   mesh::SpecimenGeometry geometry;
   PetscCall(mesh::ReadSpecimenGeometry(comm, &geometry));

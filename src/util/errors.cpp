@@ -1,4 +1,5 @@
 #include "vibrotherm/util/errors.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 
 #include <dlfcn.h>
@@ -55,10 +56,9 @@ const ValueMessage kValueMessages[] = {
 /// The options whose value, or one of its comma-separated entries, is `value`
 /// ("-a, -b"; "" when none).
 std::string OptionsHolding(const std::string& value) {
-  char* all = nullptr;
-  if (value.empty() || PetscOptionsGetAll(nullptr, &all) || !all) return "";
+  std::string all;
+  if (value.empty() || AllOptions(&all) || all.empty()) return "";
   std::istringstream words(all);
-  PetscFree(all);
   std::string word, option, names;
   while (words >> word) {
     if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.' &&
@@ -167,8 +167,8 @@ PetscErrorCode PushUserErrorHandler(const char* program) {
   HandlerContext& context = g_context;  // PETSc keeps the context pointer for the whole run
   context.program = program;
   PetscCall(PetscPushErrorHandler(UserErrorHandler, &context));
-  PetscBool debug = PETSC_FALSE;  // read under the handler: a bad value is one line, exit 2
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-debug", &debug, nullptr));
+  bool debug = false;  // read under the handler: a bad value is one line, exit 2
+  PetscCall(OptionFlag(nullptr, "-debug", &debug));
   context.debug = debug;
   // HDF5 prints its error stack (~20 lines) on every failed call, even those the
   // program reports itself in one line: only with -debug.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "vibrotherm/mesh/memory_estimate.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 
@@ -35,9 +36,9 @@ PetscErrorCode CheckFactorMemory(Mat A, const char* prefix, const FactorMemoryLi
   PetscFunctionBeginUser;
   if (fits) *fits = true;
   MPI_Comm comm = PetscObjectComm((PetscObject)A);
-  char solver[64] = MATSOLVERMUMPS;
-  PetscCall(PetscOptionsGetString(nullptr, prefix, "-pc_factor_mat_solver_type", solver, sizeof solver, nullptr));
-  if (std::string(solver) != MATSOLVERMUMPS) PetscFunctionReturn(0);  // another solver: no MUMPS estimate
+  std::string solver = MATSOLVERMUMPS;
+  PetscCall(OptionText(prefix, "-pc_factor_mat_solver_type", &solver));
+  if (solver != MATSOLVERMUMPS) PetscFunctionReturn(0);  // another solver: no MUMPS estimate
   double needed;
   {
     const Heartbeat beat(comm, std::string(options.who) + ": MUMPS's analysis (its memory estimate)");

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "vibrotherm/util/heartbeat.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/harmonic_krylov.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -236,12 +237,12 @@ PetscErrorCode WaveSolver::SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) co
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   HarmonicSolver solver = options_.harmonic_solver;
   if (solver != HarmonicSolver::kKrylov) {
-    PetscBool force = PETSC_FALSE;
-    PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-force", &force, nullptr));  // declared with the mesh options
+    bool force = false;
+    PetscCall(OptionFlag(nullptr, "-force", &force));  // declared with the mesh options
     bool fits = true;
     PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
                                 {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
-                                 force == PETSC_TRUE, solver == HarmonicSolver::kAuto},
+                                 force, solver == HarmonicSolver::kAuto},
                                 &fits));
     solver = fits ? HarmonicSolver::kDirect : HarmonicSolver::kKrylov;
   }

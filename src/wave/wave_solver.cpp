@@ -5,6 +5,7 @@
 #include <string>
 
 #include "vibrotherm/options/petsc/option_choice.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/wave/elastic_operator.hpp"
 #include "vibrotherm/wave/stability.hpp"
 #include "vibrotherm/wave/verlet_ts.hpp"
@@ -168,10 +169,10 @@ PetscErrorCode WaveSolver::CreateTS(MPI_Comm comm) {
     PetscCall(VelocityVerletSetPositionRateIsMomentum(ts_, PETSC_TRUE));  // RHSPosition is u̇ = v
   }
   // Types 1 and 2 kick once per step with coefficient 1: the trapezoidal dashpot is exact there.
-  char scheme[16] = TSBASICSYMPLECTICVELVERLET;
-  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_basicsymplectic_type", scheme, sizeof(scheme), nullptr));
-  trapezoidal_kick_ = own_verlet || (symplectic_ && (std::string(scheme) == "1" || std::string(scheme) == "2"));
-  velocity_verlet_ = own_verlet || (symplectic_ && std::string(scheme) == "2");
+  std::string scheme = TSBASICSYMPLECTICVELVERLET;
+  PetscCall(OptionText("wave_", "-ts_basicsymplectic_type", &scheme));
+  trapezoidal_kick_ = own_verlet || (symplectic_ && (scheme == "1" || scheme == "2"));
+  velocity_verlet_ = own_verlet || (symplectic_ && scheme == "2");
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,10 @@ included): no folder includes one above it, so no two folders include each other
 The order, bottom to top, is that of docs/ARCHITECTURE.md's map. A new folder must be
 placed here before it can be used.
 
+Requirement (issue 42): PETSc's options database is looked at directly (PetscOptionsGet*,
+PetscOptionsHasName) only in src/options/: modules read their options in their readers,
+and the few checks of whether an option was given go through options/query.
+
 usage: test_layers.py REPO"""
 import os
 import re
@@ -13,6 +17,7 @@ import sys
 LAYERS = [
     "contact",            # crack laws, PETSc-free
     "options",            # command line and options files, PETSc-free
+    "options/query",      # the one direct look at PETSc's options database (was an option given, its value)
     "util",               # errors, stages, gathers across ranks, version
     "geometry",           # points and frames, PETSc-free
     "store",              # atomic files, the checkpoint store
@@ -31,7 +36,7 @@ LAYERS = [
     "modes",              # modal analysis run
     "app",                # executables
 ]
-NESTED = ("coupling/", "mesh/plex", "options/petsc")
+NESTED = ("coupling/", "mesh/plex", "options/petsc", "options/query")
 
 
 def folder_of(path):
@@ -57,6 +62,15 @@ def main(repo):
                     other = folder_of(header)
                     if rank.get(other, len(LAYERS)) > rank[own]:
                         failures.append("%s (%s) includes %s (%s, a layer above)" % (path, own, header, other))
+    direct = re.compile(r"PetscOptions(Get[A-Za-z]*|HasName)\s*\(")
+    for dirpath, _, names in os.walk(os.path.join(repo, "src")):
+        if os.path.relpath(dirpath, os.path.join(repo, "src")).split(os.sep)[0] == "options":
+            continue
+        for name in names:
+            path = os.path.join(dirpath, name)
+            for number, line in enumerate(open(path), 1):
+                if direct.search(line):
+                    failures.append("%s:%d reads PETSc's options database directly (options/query)" % (path, number))
     for f in failures:
         print("FAILED:", f)
     print("folder layers: %d files, %d violations" % (files, len(failures)))

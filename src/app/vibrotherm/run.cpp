@@ -21,6 +21,7 @@
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/options/petsc/option_audit.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 #include "vibrotherm/util/version.hpp"
 #include "output_directory.hpp"
@@ -61,8 +62,8 @@ PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
   PetscCall(PetscOptionsBool("-debug", "Errors with PETSc's full trace after the one line, MPI_Abort's banner and HDF5's "
                              "diagnostics", nullptr, o->debug, &o->debug, nullptr));
   PetscOptionsEnd();
-  PetscBool dir_set = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-output_dir", &dir_set));
+  bool dir_set;
+  PetscCall(OptionGiven(nullptr, "-output_dir", &dir_set));
   if (o->restart[0]) {
     PetscCheck(!dir_set || SameDirectory(o->output_dir, o->restart), comm, PETSC_ERR_USER_INPUT,
                "-restart %s writes into that directory: -output_dir %s is another one", o->restart, o->output_dir);
@@ -177,8 +178,8 @@ std::vector<io::OptionRecord> OptionRecords(const std::vector<std::string>& comm
                                             const std::vector<DeclaredOption>& declared) {
   std::vector<io::OptionRecord> records;
   for (const DeclaredOption& d : declared) {
-    PetscBool given = PETSC_FALSE;
-    PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given);
+    bool given = false;
+    (void)OptionGiven(nullptr, d.name.c_str(), &given);
     const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
     records.push_back({d.name, given ? d.value : RecordedDefault(d.value),
                        typed ? "command line" : given ? "options file" : "default"});
@@ -224,8 +225,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   PetscFunctionBeginUser;
   *status = 0;
   const double t0 = MPI_Wtime();
-  PetscBool version = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-version", &version));
+  bool version;
+  PetscCall(OptionGiven(nullptr, "-version", &version));
   if (version) {  // PETSc has printed its own version already
     PetscCall(PetscPrintf(comm, "vibrotherm %s\n", vibrotherm::version()));
     PetscFunctionReturn(0);

@@ -7,6 +7,7 @@
 
 #include "vibrotherm/coupling/run/scene_dimension.hpp"
 #include "vibrotherm/interface/contact_options.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -40,15 +41,15 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
     PetscCheck(std::isfinite(value), comm, PETSC_ERR_USER_INPUT, "%s must be finite, got %g", option, value);
   // Implicit types other than alpha2 would build a dense Jacobian; rk types with an
   // embedded error estimate reject steps rank by rank (a deadlock on 2 ranks).
-  char type[64] = "velocityverlet", rk[64] = "4";
-  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
-  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_rk_type", rk, sizeof(rk), nullptr));
+  std::string type = "velocityverlet", rk = "4";
+  PetscCall(OptionText("wave_", "-ts_type", &type));
+  PetscCall(OptionText("wave_", "-ts_rk_type", &rk));
   const std::vector<std::string> types = {"velocityverlet", "basicsymplectic", "rk", "ssp", "alpha2"};
-  PetscCheck(std::find(types.begin(), types.end(), std::string(type)) != types.end(), comm, PETSC_ERR_USER_INPUT,
-             "-wave_ts_type %s is not supported for waves (velocityverlet|basicsymplectic|rk|ssp|alpha2)", type);
+  PetscCheck(std::find(types.begin(), types.end(), type) != types.end(), comm, PETSC_ERR_USER_INPUT,
+             "-wave_ts_type %s is not supported for waves (velocityverlet|basicsymplectic|rk|ssp|alpha2)", type.c_str());
   const std::vector<std::string> rk_types = {"1fe", "2a", "3", "4"};
-  PetscCheck(std::string(type) != "rk" || std::find(rk_types.begin(), rk_types.end(), std::string(rk)) != rk_types.end(),
-             comm, PETSC_ERR_USER_INPUT, "-wave_ts_rk_type %s is not supported for waves (1fe|2a|3|4: fixed steps)", rk);
+  PetscCheck(type != "rk" || std::find(rk_types.begin(), rk_types.end(), rk) != rk_types.end(),
+             comm, PETSC_ERR_USER_INPUT, "-wave_ts_rk_type %s is not supported for waves (1fe|2a|3|4: fixed steps)", rk.c_str());
   // Options of the TS objects that vibrotherm sets itself: refused, not ignored.
   const std::pair<const char*, const char*> owned[] = {
       {"-wave_ts_dt", "-wave_dt or -wave_cfl"}, {"-wave_ts_max_time", "-final_time"},
@@ -57,8 +58,8 @@ PetscErrorCode CheckScene(MPI_Comm comm, const Scene& s) {
       {"-heat_ts_max_steps", "-final_time"}, {"-heat_free_ts_max_time", "-final_time"},
       {"-heat_free_ts_max_steps", "-final_time"}};
   for (const auto& [option, instead] : owned) {
-    PetscBool given;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, option, &given));
+    bool given;
+    PetscCall(OptionGiven(nullptr, option, &given));
     PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is set by vibrotherm itself: use %s", option, instead);
   }
   PetscFunctionReturn(0);

@@ -1,6 +1,7 @@
 #include "vibrotherm/coupling/run/scene_dimension.hpp"
 
 #include "vibrotherm/mesh/mesh_file_3d.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 
 #include <initializer_list>
 #include <string>
@@ -14,8 +15,8 @@ PetscErrorCode FirstGiven(std::initializer_list<const char*> names, const char**
   PetscFunctionBeginUser;
   *given = nullptr;
   for (const char* name : names) {
-    PetscBool set;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+    bool set;
+    PetscCall(OptionGiven(nullptr, name, &set));
     if (set && !*given) *given = name;
   }
   PetscFunctionReturn(0);
@@ -25,14 +26,14 @@ PetscErrorCode FirstGiven(std::initializer_list<const char*> names, const char**
 
 PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension) {
   PetscFunctionBeginUser;
-  PetscReal depth = 0.0;
-  char file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool from_file = PETSC_FALSE;
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-specimen_depth", &depth, nullptr));
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mesh_file", file, sizeof(file), &from_file));
+  double depth = 0.0;
+  std::string file;
+  bool from_file = false;
+  PetscCall(OptionReal(nullptr, "-specimen_depth", &depth));
+  PetscCall(OptionText(nullptr, "-mesh_file", &file, &from_file));
   *dimension = depth > 0.0 ? 3 : 2;
   int in_file = 0;
-  if (from_file && file[0]) PetscCall(mesh::MeshFileDimension(comm, file, &in_file));
+  if (from_file && !file.empty()) PetscCall(mesh::MeshFileDimension(comm, file, &in_file));
   if (in_file) *dimension = in_file == 3 ? 3 : 2;  // the file decides
   PetscFunctionReturn(0);
 }
@@ -48,15 +49,15 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   }
   PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
-  char type[64] = "velocityverlet", cell[16] = "quad";
+  std::string type = "velocityverlet", cell = "quad";
   PetscInt refine = 0;
-  PetscCall(PetscOptionsGetString(nullptr, "wave_", "-ts_type", type, sizeof(type), nullptr));
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mesh_cell", cell, sizeof(cell), nullptr));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-dm_refine", &refine, nullptr));
-  PetscCheck(std::string(type) != "alpha2", comm, PETSC_ERR_USER_INPUT,
+  PetscCall(OptionText("wave_", "-ts_type", &type));
+  PetscCall(OptionText(nullptr, "-mesh_cell", &cell));
+  PetscCall(OptionInt(nullptr, "-dm_refine", &refine));
+  PetscCheck(type != "alpha2", comm, PETSC_ERR_USER_INPUT,
              "-wave_ts_type alpha2 is not supported in 3D yet (explicit steppers only)");
-  PetscCheck(std::string(cell) == "quad", comm, PETSC_ERR_USER_INPUT,
-             "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell);
+  PetscCheck(cell == "quad", comm, PETSC_ERR_USER_INPUT,
+             "-mesh_cell %s: a 3D box is meshed with hexahedra only (tetrahedra need a mass-lumped P2 element)", cell.c_str());
   PetscCheck(refine == 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine is not supported in 3D yet: refine with -mesh_h");
   PetscFunctionReturn(0);
 }

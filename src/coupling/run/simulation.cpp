@@ -6,6 +6,7 @@
 #include "vibrotherm/coupling/run/run_observers.hpp"
 #include "vibrotherm/coupling/observe/heat_camera.hpp"
 #include "vibrotherm/coupling/continuation/periodic_continuation.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 
 namespace vibrotherm::coupling {
@@ -42,8 +43,8 @@ PetscErrorCode Simulation::Setup(const mesh::Specimen& specimen, const Scene& sc
     heat_ = std::make_unique<HeatComponent>();
     PetscCall(heat_->Setup(specimen, scene, waves_.get(), summary));
     PetscCall(SetupCamera(scene));
-    PetscBool every = PETSC_FALSE;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-energy_every", &every));
+    bool every;
+    PetscCall(OptionGiven(nullptr, "-energy_every", &every));
     if (every && waves_)
       PetscCall(PetscPrintf(comm, "vibrotherm: warning: -energy_every is not used while heat runs: energy.csv gets a "
                                   "row per coupling interval (-couple_dt), where every column is known\n"));
