@@ -112,14 +112,12 @@ BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSi
                       : BoxGridSizes{geometry.h_crack, geometry.h, geometry.grading};
 }
 
-PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
+PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& heat_sizes,
                                  Specimen* s) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   std::unique_ptr<BoxGrid> grid;
   VibrothermCallCpp(comm, grid = std::make_unique<BoxGrid>(geometry));
-  HeatMeshSizes heat_sizes;
-  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
   if (geometry.cracks.empty())
     PetscCall(PetscPrintf(comm, "Meshing: a 3D box of %d x %d x %d hexahedra on rank 0 (no crack)\n", grid->cells(0),
                           grid->cells(1), grid->cells(2)));

@@ -36,46 +36,6 @@ PetscErrorCode RegisterMeshLogging(MeshLog* log) {
   PetscFunctionReturn(0);
 }
 
-struct MeshSource {
-  char file[PETSC_MAX_PATH_LEN] = "", heat_file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool from_file = PETSC_FALSE, heat_from_file = PETSC_FALSE;
-  PetscInt refinements = 0;
-  PetscBool force = PETSC_FALSE;  ///< run even above the memory estimate
-};
-
-PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
-  PetscFunctionBeginUser;
-  PetscBool refine_given = PETSC_FALSE;
-  PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, "
-                               "absorbing, free, roller, fixed, sink, crack*); default: generate from -specimen_* "
-                               "and -crack_*",
-                               nullptr, m->file, m->file, sizeof(m->file), &m->from_file));
-  PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
-                               "physical curve names; default: the unsplit -mesh_file mesh)",
-                               nullptr, m->heat_file, m->heat_file, sizeof(m->heat_file), &m->heat_from_file));
-  PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
-                            m->refinements, &m->refinements, &refine_given));
-  PetscCall(PetscOptionsBool("-force",
-                             "Run even when a memory estimate exceeds the memory available (the scene's; MUMPS's for "
-                             "-modes and -wave_start harmonic)",
-                             nullptr, m->force, &m->force, nullptr));
-  PetscOptionsEnd();
-  // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
-  PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
-             m->refinements);
-  // -dm_refine has PETSc's dm_ prefix, so the audit of missing values leaves it to PETSc,
-  // which takes "-dm_refine" with no value as not given: vibrotherm reads it, so it checks.
-  bool refine_named;
-  PetscCall(OptionGiven(nullptr, "-dm_refine", &refine_named));
-  PetscCheck(!refine_named || refine_given, comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
-  PetscCheck(!m->from_file || m->file[0], comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
-  PetscCheck(!m->heat_from_file || m->heat_file[0], comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
-  PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
-             "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
-  PetscFunctionReturn(0);
-}
-
 /// Crack names and requested lengths on every rank (rank 0 read them).
 PetscErrorCode ShareCrackNames(MPI_Comm comm, const MeshData& data, const SpecimenGeometry& geometry, bool from_file,
                                std::vector<CrackInfo>* cracks) {
@@ -133,7 +93,7 @@ PetscErrorCode ShareGeometry(MPI_Comm comm, bool* usable, SpecimenGeometry* g) {
 PetscErrorCode AnnounceMeshing(MPI_Comm comm, const MeshSource& source, const SpecimenGeometry& geometry) {
   PetscFunctionBeginUser;
   if (source.from_file) {
-    PetscCall(PetscPrintf(comm, "Meshing: reading %s\n", source.file));
+    PetscCall(PetscPrintf(comm, "Meshing: reading %s\n", source.file.c_str()));
     PetscFunctionReturn(0);
   }
   const double cells = EstimateMemory(geometry, 0, 1, 1).wave_cells;
@@ -148,11 +108,10 @@ PetscErrorCode AnnounceMeshing(MPI_Comm comm, const MeshSource& source, const Sp
 /// A mesh file whose heat mesh cannot be graded to its cracks (ungraded: why, on
 /// rank 0): the heat falls back to the wave mesh, far too coarse at the cracks.
 /// Said loudly, with the cost and the ways out, unless -heat_mesh wave asked for it.
-PetscErrorCode WarnUngradedHeatMesh(MPI_Comm comm, const char* file, const std::string& ungraded, double exchange_length) {
+PetscErrorCode WarnUngradedHeatMesh(MPI_Comm comm, const std::string& file, const HeatMeshOptions& heat,
+                                    const std::string& ungraded, double exchange_length) {
   PetscFunctionBeginUser;
-  std::string kind;
-  PetscCall(OptionText(nullptr, "-heat_mesh", &kind));
-  if (kind == "wave") PetscFunctionReturn(0);
+  if (!heat.graded) PetscFunctionReturn(0);
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0)
@@ -162,7 +121,7 @@ PetscErrorCode WarnUngradedHeatMesh(MPI_Comm comm, const char* file, const std::
                           "layer friction heats in one exchange (crack temperatures tens of percent low early on: "
                           "-50 %% at 0.1 ms in the paper scene). Give -heat_mesh_file with a heat mesh graded to the "
                           "cracks, or -heat_mesh wave to accept this\n",
-                          file, ungraded.c_str(), exchange_length));
+                          file.c_str(), ungraded.c_str(), exchange_length));
   PetscFunctionReturn(0);
 }
 
@@ -183,7 +142,7 @@ PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const Mesh
       check_crack_lines(data, std::string("-heat_mesh_file ") + source.heat_file);
       check_cracks_apart(data, std::string("-heat_mesh_file ") + source.heat_file);
       if (data.crack_names != names)
-        throw std::invalid_argument(std::string("-heat_mesh_file ") + source.heat_file +
+        throw std::invalid_argument("-heat_mesh_file " + source.heat_file +
                                     ": its crack curves must be those of -mesh_file, in the same order");
     } else {
       data = generate_heat_mesh(geometry, sizes);
@@ -210,23 +169,22 @@ PetscErrorCode DistributeSpecimen(const MeshLog& log, const LtsWeighting& lts, S
 
 }  // namespace
 
-PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s, const LtsWeighting& lts) {
+PetscErrorCode SpecimenCreate(MPI_Comm comm, const SpecimenOptions& options, double exchange_length, Specimen* s,
+                              const LtsWeighting& lts) {
   PetscFunctionBeginUser;
   MeshLog log;
   PetscCall(RegisterMeshLogging(&log));
   PetscCall(RegisterMetisPartitioner());
   PetscCall(PetscLogStagePush(log.stage));
-  MeshSource source;
-  PetscCall(ReadMeshSource(comm, &source));
-  SpecimenGeometry geometry;
-  if (!source.from_file) PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  const MeshSource& source = options.source;
+  SpecimenGeometry geometry = source.from_file ? SpecimenGeometry{} : options.geometry;  // a file: read from it
   int file_dimension = 0;
   if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
   if (file_dimension == 3 || geometry.depth > 0.0) {
     if (file_dimension == 3)
       PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", s));
     else
-      PetscCall(CreateBoxSpecimen(comm, geometry, exchange_length, s));
+      PetscCall(CreateBoxSpecimen(comm, geometry, HeatMeshSizesFor(options.heat, geometry, exchange_length), s));
     PetscCall(DistributeSpecimen(log, lts, s));
     PetscCall(PetscLogStagePop());
     PetscFunctionReturn(0);
@@ -249,10 +207,11 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscCall(PetscLogEventEnd(log.generate, 0, 0, 0, 0));
   if (source.from_file) PetscCall(ShareGeometry(comm, &generate_heat, &geometry));
   HeatMeshSizes heat_sizes;
-  if (generate_heat) PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat_sizes));
+  if (generate_heat) heat_sizes = HeatMeshSizesFor(options.heat, geometry, exchange_length);
+  if (generate_heat && heat_sizes.graded) VibrothermCallCpp(comm, heat_sizes.validate());
   PetscCall(ShareCrackNames(comm, data, geometry, source.from_file, &s->cracks));
   if (!generate_heat && !source.heat_from_file && !s->cracks.empty())
-    PetscCall(WarnUngradedHeatMesh(comm, source.file, ungraded, exchange_length));
+    PetscCall(WarnUngradedHeatMesh(comm, source.file, options.heat, ungraded, exchange_length));
   s->source = source.from_file ? source.file : "generated";
   std::vector<std::string> names;
   for (const CrackInfo& c : s->cracks) names.push_back(c.name);
@@ -285,32 +244,17 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* s
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FinestRequestedElement(MPI_Comm comm, double* h) {
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, const SpecimenOptions& options, PetscInt wave_degree,
+                                   double exchange_length) {
   PetscFunctionBeginUser;
-  *h = 0.0;
-  MeshSource source;
-  PetscCall(ReadMeshSource(comm, &source));
-  if (source.from_file) PetscFunctionReturn(0);
-  SpecimenGeometry geometry;
-  PetscCall(ReadSpecimenGeometry(comm, &geometry));
-  *h = std::ldexp(std::min(geometry.h, geometry.h_crack), -static_cast<int>(source.refinements));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length) {
-  PetscFunctionBeginUser;
-  MeshSource source;
-  PetscCall(ReadMeshSource(comm, &source));
+  const MeshSource& source = options.source;
   if (source.from_file) PetscFunctionReturn(0);  // its size is known only once read
-  SpecimenGeometry geometry;
-  PetscCall(ReadSpecimenGeometry(comm, &geometry));
+  const SpecimenGeometry& geometry = options.geometry;
   PetscMPIInt ranks;
   PetscCallMPI(MPI_Comm_size(comm, &ranks));
   BoxGridSizes heat_grid{};
   if (geometry.depth > 0.0) {  // the 3D heat grid is known before meshing too
-    HeatMeshSizes heat;
-    PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &heat));
-    heat_grid = BoxHeatGridSizes(geometry, heat);
+    heat_grid = BoxHeatGridSizes(geometry, HeatMeshSizesFor(options.heat, geometry, exchange_length));
   }
   const MemoryEstimate e = EstimateMemory(geometry, static_cast<int>(source.refinements), static_cast<int>(wave_degree),
                                           ranks, geometry.depth > 0.0 ? &heat_grid : nullptr);
@@ -322,44 +266,6 @@ PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double e
              "the scene needs about %.3g GB (%.3g wave cells, %.3g wave dofs), more than the %.3g GB available: coarsen "
              "-mesh_h or -mesh_h_crack, lower -dm_refine, or -force",
              e.bytes / 1e9, e.wave_cells, e.wave_dofs, available / 1e9);
-  PetscFunctionReturn(0);
-}
-
-namespace {
-
-/// -mesh_file sets the specimen's outline, cracks, mesh and edges: the options of a
-/// generated specimen given with it (an options file written for one, such as
-/// paper.opts) are ignored, said in one note.
-PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const char* file) {
-  PetscFunctionBeginUser;
-  static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
-                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell", "-mesh_crack_mirror",
-                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
-                                      "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape", "-crack_tilt",
-                                      "-source_patch_edge", "-source_patch_center", "-source_patch_width"};
-  std::string given;
-  for (const char* name : names) {
-    bool set;
-    PetscCall(OptionGiven(nullptr, name, &set));
-    if (set) given += std::string(given.empty() ? "" : ", ") + name;
-  }
-  if (!given.empty())
-    PetscCall(PetscPrintf(comm, "vibrotherm: note: -mesh_file %s sets the specimen, its cracks, mesh and edges: %s "
-                                "ignored\n", file, given.c_str()));
-  PetscFunctionReturn(0);
-}
-
-}  // namespace
-
-PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length) {
-  PetscFunctionBeginUser;
-  MeshSource source;
-  PetscCall(ReadMeshSource(comm, &source));
-  SpecimenGeometry geometry;
-  PetscCall(ReadSpecimenGeometry(comm, &geometry, !source.from_file));
-  if (source.from_file) PetscCall(NoteIgnoredGeometry(comm, source.file));
-  HeatMeshSizes sizes;  // a mesh file's are derived from the file once read
-  PetscCall(ReadHeatMeshSizes(comm, geometry, exchange_length, &sizes, !source.from_file));
   PetscFunctionReturn(0);
 }
 

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "vibrotherm/mesh/box_grid.hpp"
-#include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/mesh/specimen_options.hpp"
+#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/options/petsc/option_list.hpp"
 #include "vibrotherm/options/petsc/option_choice.hpp"
@@ -139,8 +140,6 @@ PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, SpecimenGeo
   PetscFunctionReturn(0);
 }
 
-}  // namespace
-
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
   std::vector<double> centers, lengths, angles, widths, tilts;
@@ -214,40 +213,135 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
-                                 HeatMeshSizes* sizes, bool check) {
+/// Reads the -heat_mesh* options given (-help shows the defaults for this geometry);
+/// check: refuse sizes that do not nest.
+PetscErrorCode ReadHeatMeshOptions(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
+                                   HeatMeshOptions* o, bool check) {
   PetscFunctionBeginUser;
-  // Defaults from the physics: the first layer resolves the layer one exchange
-  // heats; layers grow to the wave mesh's crack spacing / 2 (the Q2 contact-node
-  // spacing). Each default is capped by the next size: a slow source (1 Hz: a 2 mm
-  // exchange layer) must not fail on sizes the user never set.
-  sizes->h = g.h;
-  sizes->h_along = std::min(0.5 * g.h_crack, sizes->h);
-  sizes->h_crack = std::min(0.5 * exchange_length, sizes->h_along);
-  sizes->grading = 2.0 * g.grading;  // diffusion smooths: the heat mesh may coarsen faster
-  PetscBool h_crack_set = PETSC_FALSE, h_along_set = PETSC_FALSE;
-  PetscInt kind = sizes->graded ? 1 : 0;
+  HeatMeshSizes shown = HeatMeshSizesFor(HeatMeshOptions{}, g, exchange_length);  // the defaults
+  PetscInt kind = o->graded ? 1 : 0;
+  PetscBool set[5] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
   PetscOptionsBegin(comm, nullptr, "Heat mesh (generated specimens)", nullptr);
   PetscCall(OptionsChoice(PetscOptionsObject, "-heat_mesh",
                           "Heat mesh: its own, graded to the cracks, or the unsplit wave mesh", {"wave", "graded"},
                           &kind, nullptr));
   PetscCall(PetscOptionsReal("-heat_mesh_h_crack", "First layer thickness at the cracks [m] (default: half of sqrt(alpha couple_dt))",
-                             nullptr, sizes->h_crack, &sizes->h_crack, &h_crack_set));
-  PetscCall(PetscOptionsReal("-heat_mesh_growth", "Thickness ratio of successive layers", nullptr, sizes->growth,
-                             &sizes->growth, nullptr));
+                             nullptr, shown.h_crack, &shown.h_crack, &set[0]));
+  PetscCall(PetscOptionsReal("-heat_mesh_growth", "Thickness ratio of successive layers", nullptr, shown.growth,
+                             &shown.growth, &set[1]));
   PetscCall(PetscOptionsReal("-heat_mesh_h_along", "Element length along the cracks [m] (default: -mesh_h_crack / 2)",
-                             nullptr, sizes->h_along, &sizes->h_along, &h_along_set));
+                             nullptr, shown.h_along, &shown.h_along, &set[2]));
   PetscCall(PetscOptionsReal("-heat_mesh_h", "Element size away from the cracks [m] (default: -mesh_h)", nullptr,
-                             sizes->h, &sizes->h, nullptr));
+                             shown.h, &shown.h, &set[3]));
   PetscCall(PetscOptionsReal("-heat_mesh_grading", "Element size growth per metre away from the crack bands (default: 2 x -mesh_grading)",
-                             nullptr, sizes->grading, &sizes->grading, nullptr));
+                             nullptr, shown.grading, &shown.grading, &set[4]));
   PetscOptionsEnd();
-  sizes->graded = kind == 1;
-  // A default follows the size the user set next to it (a bad one is refused below, naming it).
-  if (!h_along_set && sizes->h > 0.0) sizes->h_along = std::min(sizes->h_along, sizes->h);
-  if (!h_crack_set && sizes->h_along > 0.0) sizes->h_crack = std::min(sizes->h_crack, sizes->h_along);
-  if (sizes->graded && check) VibrothermCallCpp(comm, sizes->validate());
+  o->graded = kind == 1;
+  std::optional<double>* given[5] = {&o->h_crack, &o->growth, &o->h_along, &o->h, &o->grading};
+  const double values[5] = {shown.h_crack, shown.growth, shown.h_along, shown.h, shown.grading};
+  for (int k = 0; k < 5; ++k)
+    if (set[k]) *given[k] = values[k];
+  if (o->graded && check) VibrothermCallCpp(comm, HeatMeshSizesFor(*o, g, exchange_length).validate());
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
+  PetscFunctionBeginUser;
+  char file[PETSC_MAX_PATH_LEN] = "", heat_file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool from_file = PETSC_FALSE, heat_from_file = PETSC_FALSE, force = PETSC_FALSE, refine_given = PETSC_FALSE;
+  PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, "
+                               "absorbing, free, roller, fixed, sink, crack*); default: generate from -specimen_* "
+                               "and -crack_*",
+                               nullptr, file, file, sizeof(file), &from_file));
+  PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
+                               "physical curve names; default: the unsplit -mesh_file mesh)",
+                               nullptr, heat_file, heat_file, sizeof(heat_file), &heat_from_file));
+  PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
+                            m->refinements, &m->refinements, &refine_given));
+  PetscCall(PetscOptionsBool("-force",
+                             "Run even when a memory estimate exceeds the memory available (the scene's; MUMPS's for "
+                             "-modes and -wave_start harmonic)",
+                             nullptr, force, &force, nullptr));
+  PetscOptionsEnd();
+  m->file = file;
+  m->heat_file = heat_file;
+  m->from_file = from_file;
+  m->heat_from_file = heat_from_file;
+  m->force = force;
+  // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
+  PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
+             m->refinements);
+  // -dm_refine has PETSc's dm_ prefix, so the audit of missing values leaves it to PETSc,
+  // which takes "-dm_refine" with no value as not given: vibrotherm reads it, so it checks.
+  bool refine_named;
+  PetscCall(OptionGiven(nullptr, "-dm_refine", &refine_named));
+  PetscCheck(!refine_named || refine_given, comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
+  PetscCheck(!m->from_file || !m->file.empty(), comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
+  PetscCheck(!m->heat_from_file || !m->heat_file.empty(), comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
+  PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
+             "-heat_mesh_file goes with -mesh_file (a generated specimen gets its heat mesh from -heat_mesh_*)");
+  PetscFunctionReturn(0);
+}
+
+/// -mesh_file sets the specimen's outline, cracks, mesh and edges: the options of a
+/// generated specimen given with it (an options file written for one, such as
+/// paper.opts) are ignored, said in one note.
+PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const std::string& file) {
+  PetscFunctionBeginUser;
+  static const char* const names[] = {"-specimen_width", "-specimen_height", "-crack_center", "-crack_length",
+                                      "-crack_angle", "-mesh_h", "-mesh_h_crack", "-mesh_grading", "-mesh_cell", "-mesh_crack_mirror",
+                                      "-edge_top", "-edge_bottom", "-edge_left", "-edge_right", "-crack_width",
+                                      "-edge_front", "-edge_back", "-specimen_depth", "-crack_shape", "-crack_tilt",
+                                      "-source_patch_edge", "-source_patch_center", "-source_patch_width"};
+  std::string given;
+  for (const char* name : names) {
+    bool set;
+    PetscCall(OptionGiven(nullptr, name, &set));
+    if (set) given += std::string(given.empty() ? "" : ", ") + name;
+  }
+  if (!given.empty())
+    PetscCall(PetscPrintf(comm, "vibrotherm: note: -mesh_file %s sets the specimen, its cracks, mesh and edges: %s "
+                                "ignored\n", file.c_str(), given.c_str()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* o) {
+  PetscFunctionBeginUser;
+  PetscCall(ReadMeshSource(comm, &o->source));
+  const bool generated = !o->source.from_file;
+  PetscCall(ReadSpecimenGeometry(comm, &o->geometry, generated));
+  if (!generated) PetscCall(NoteIgnoredGeometry(comm, o->source.file));
+  // A mesh file's heat mesh sizes are checked against the geometry read from it (SpecimenCreate).
+  PetscCall(ReadHeatMeshOptions(comm, o->geometry, exchange_length, &o->heat, generated));
+  PetscFunctionReturn(0);
+}
+
+HeatMeshSizes HeatMeshSizesFor(const HeatMeshOptions& o, const SpecimenGeometry& g, double exchange_length) {
+  // Each default is capped by the next size: a slow source (1 Hz: a 2 mm exchange layer) must
+  // not fail on sizes the user never set; diffusion smooths, so the heat mesh may coarsen faster.
+  HeatMeshSizes s;
+  s.h = g.h;
+  s.h_along = std::min(0.5 * g.h_crack, s.h);
+  s.h_crack = std::min(0.5 * exchange_length, s.h_along);
+  s.grading = 2.0 * g.grading;
+  s.graded = o.graded;
+  if (o.h_crack) s.h_crack = *o.h_crack;
+  if (o.growth) s.growth = *o.growth;
+  if (o.h_along) s.h_along = *o.h_along;
+  if (o.h) s.h = *o.h;
+  if (o.grading) s.grading = *o.grading;
+  // A default follows the size the user set next to it (a bad one is refused, naming it).
+  if (!o.h_along && s.h > 0.0) s.h_along = std::min(s.h_along, s.h);
+  if (!o.h_crack && s.h_along > 0.0) s.h_crack = std::min(s.h_crack, s.h_along);
+  return s;
+}
+
+double FinestRequestedElement(const SpecimenOptions& o) {
+  if (o.source.from_file) return 0.0;
+  return std::ldexp(std::min(o.geometry.h, o.geometry.h_crack), -static_cast<int>(o.source.refinements));
 }
 
 }  // namespace vibrotherm::mesh

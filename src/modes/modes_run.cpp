@@ -8,7 +8,6 @@
 
 #include "vibrotherm/contact/crack_law.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
-#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::modes {
@@ -17,8 +16,8 @@ namespace {
 /// The distance to the specimen's cracks (empty without one) and the longest crack's
 /// length: the 2D cracks as gathered lines, a 3D box's as the rectangles of its options (a
 /// 3D mesh file: none).
-PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, CrackDistance* distance,
-                               double* longest) {
+PetscErrorCode CrackDistanceOf(const mesh::Specimen& specimen, const mesh::SpecimenOptions& options,
+                               CrackDistance* distance, double* longest) {
   PetscFunctionBeginUser;
   *longest = 0.0;
   PetscInt dim;
@@ -34,12 +33,8 @@ PetscErrorCode CrackDistanceOf(MPI_Comm comm, const mesh::Specimen& specimen, Cr
       };
     PetscFunctionReturn(0);
   }
-  bool from_file;
-  PetscCall(OptionGiven(nullptr, "-mesh_file", &from_file));
-  if (from_file) PetscFunctionReturn(0);  // a 3D mesh file's cracks are surfaces of its own: no distance yet
-  mesh::SpecimenGeometry geometry;
-  PetscCall(mesh::ReadSpecimenGeometry(comm, &geometry));
-  const std::vector<mesh::Crack> rectangles = geometry.cracks;
+  if (options.source.from_file) PetscFunctionReturn(0);  // a 3D mesh file's cracks are surfaces of its own: no distance yet
+  const std::vector<mesh::Crack> rectangles = options.geometry.cracks;
   for (const mesh::Crack& c : rectangles) *longest = std::max(*longest, c.length);
   if (!rectangles.empty())
     *distance = [rectangles](const std::array<double, 3>& p) {
@@ -77,7 +72,7 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
   const wave::WaveOptions& wave_options = scene.wave;
   CrackDistance crack_distance;
   double longest;
-  PetscCall(CrackDistanceOf(comm, specimen, &crack_distance, &longest));
+  PetscCall(CrackDistanceOf(specimen, scene.specimen, &crack_distance, &longest));
   PetscCall(modes::ReadModesOptions(comm, excitation.signal.frequency, longest / 2, &options_));
   PetscLogStage stage;
   PetscCall(PetscLogStageRegister("Modes", &stage));

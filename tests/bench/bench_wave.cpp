@@ -39,7 +39,7 @@ static PetscErrorCode Run() {
   coupling::Scene scene;
   PetscCall(coupling::ReadScene(comm, &scene));
   const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
-  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), &specimen, lts));
+  PetscCall(mesh::SpecimenCreate(comm, scene.specimen, scene.exchange_length(), &specimen, lts));
   wave::ElasticMaterial material;
   wave::Excitation excitation;
   wave::WaveOptions options;

@@ -27,7 +27,7 @@ struct ScopedSpecimen {
     if (!status) status = PetscOptionsInsertString(nullptr, options.c_str());
     coupling::Scene scene;
     if (!status) status = coupling::ReadScene(PETSC_COMM_WORLD, &scene);
-    if (!status) status = mesh::SpecimenCreate(PETSC_COMM_WORLD, scene.exchange_length(), &specimen);
+    if (!status) status = mesh::SpecimenCreate(PETSC_COMM_WORLD, scene.specimen, scene.exchange_length(), &specimen);
     if (!status) status = mesh::ComputeMeshSummary(specimen, &summary);
   }
   ~ScopedSpecimen() { (void)mesh::SpecimenDestroy(&specimen); }

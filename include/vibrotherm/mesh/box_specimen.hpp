@@ -29,9 +29,9 @@ int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array
 /// multiple of 1/m of its wave cell (exact), else 16 (exact false).
 int CrackFaceSubdivisions(const BoxGrid& wave, const BoxGrid& heat, bool* exact);
 
-/// geometry: checked by ReadSpecimenGeometry (depth > 0); exchange_length: as
-/// SpecimenCreate's (the heat mesh's default first layer). Collective.
-PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
+/// geometry: checked by ReadSpecimenOptions (depth > 0); heat_sizes: the heat grid's
+/// (HeatMeshSizesFor). Collective.
+PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& heat_sizes,
                                  Specimen* specimen);
 
 }  // namespace vibrotherm::mesh

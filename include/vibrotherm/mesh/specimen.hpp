@@ -19,6 +19,7 @@
 #include "vibrotherm/mesh/plex/lts_partition.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
+#include "vibrotherm/mesh/specimen_options.hpp"
 
 namespace vibrotherm::mesh {
 
@@ -43,37 +44,19 @@ struct Specimen {
   int crack_face_subdivisions = 4;
 };
 
-/// Reads -mesh_file or the generated-specimen options (-specimen_*, -crack_*,
-/// -mesh_*, -edge_*), meshes, refines (-dm_refine), splits and distributes
-/// (-petscpartitioner_type, metis registered); the heat mesh from the
-/// -heat_mesh* options. `exchange_length` = √(α · coupling interval), the
-/// layer friction heats in one exchange: the default first heat layer is half
-/// of it. Collective.
-/// lts: the wave's local-time-stepping options, for the partition's weights (lts_partition.hpp).
-PetscErrorCode SpecimenCreate(MPI_Comm comm, double exchange_length, Specimen* specimen,
-                              const LtsWeighting& lts = {});
+/// Meshes what the specimen options describe (-mesh_file, or the generated specimen),
+/// refines (-dm_refine), splits and distributes (-petscpartitioner_type, metis registered);
+/// the heat mesh from the -heat_mesh* options. `exchange_length` = √(α · heat step), the
+/// layer friction heats in one exchange: the default first heat layer is half of it.
+/// lts: the wave's local-time-stepping options, for the partition's weights
+/// (lts_partition.hpp). Collective.
+PetscErrorCode SpecimenCreate(MPI_Comm comm, const SpecimenOptions& options, double exchange_length,
+                              Specimen* specimen, const LtsWeighting& lts = {});
 PetscErrorCode SpecimenDestroy(Specimen* specimen);
 
-/// Reads (declares, for -help and the check of the command line before meshing)
-/// every mesh option and checks the values without building anything; with
-/// -mesh_file, the generated-specimen options given are noted as ignored (the
-/// file sets the specimen) instead of checked. Collective.
-PetscErrorCode DeclareSpecimenOptions(MPI_Comm comm, double exchange_length);
 /// Prints the memory estimate of a generated specimen (memory_estimate.hpp) and
 /// refuses, naming the options, one beyond the memory available unless -force.
-PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, PetscInt wave_degree, double exchange_length);
-
-/// The finest wave element edge the options ask for before meshing [m]: the least of
-/// -mesh_h and -mesh_h_crack, halved per -dm_refine; 0 for a -mesh_file (known once read).
-PetscErrorCode FinestRequestedElement(MPI_Comm comm, double* h);
-
-/// Reads the generated-specimen options into geometry (used by SpecimenCreate);
-/// check: refuse a specimen that cannot be meshed (false: declare them only).
-PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* geometry, bool check = true);
-/// Reads -heat_mesh, -heat_mesh_h_crack, -heat_mesh_growth, -heat_mesh_h_along,
-/// -heat_mesh_h (defaults from the wave mesh sizes and exchange_length, each
-/// capped by the next size); check: refuse sizes that do not nest.
-PetscErrorCode ReadHeatMeshSizes(MPI_Comm comm, const SpecimenGeometry& geometry, double exchange_length,
-                                 HeatMeshSizes* sizes, bool check = true);
+PetscErrorCode CheckSpecimenMemory(MPI_Comm comm, const SpecimenOptions& options, PetscInt wave_degree,
+                                   double exchange_length);
 
 }  // namespace vibrotherm::mesh

@@ -113,7 +113,6 @@ PetscErrorCode ListSolverOptions(MPI_Comm comm) {
 /// checks the command line against them before meshing), with their values checked.
 PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
   PetscFunctionBeginUser;
-  PetscCall(mesh::DeclareSpecimenOptions(comm, scene.exchange_length()));
   modes::ModesOptions modes;
   PetscCall(modes::ReadModesOptions(comm, scene.excitation.signal.frequency, 0.01, &modes));
   PetscFunctionReturn(0);
@@ -132,9 +131,7 @@ PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const co
   PetscCall(CheckMissingValues(comm, *declared));
   // A wave no mesh of the requested sizes can carry, refused before meshing with them.
   if (scene.run.physics != coupling::PhysicsChoice::Heat && !app.modes && !app.mesh_only) {
-    double finest_h;
-    PetscCall(mesh::FinestRequestedElement(comm, &finest_h));
-    PetscCall(coupling::CheckSourceBeforeMeshing(comm, scene, finest_h, summary));
+    PetscCall(coupling::CheckSourceBeforeMeshing(comm, scene, mesh::FinestRequestedElement(scene.specimen), summary));
   }
   // A file in its place, another run there, an interrupted run's checkpoint, an earlier run's results: refused now.
   PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
@@ -146,11 +143,11 @@ PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const co
 PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
-  PetscCall(mesh::CheckSpecimenMemory(comm, scene.wave.degree, scene.exchange_length()));
+  PetscCall(mesh::CheckSpecimenMemory(comm, scene.specimen, scene.wave.degree, scene.exchange_length()));
   const double t = MPI_Wtime();
   const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
   stop_signals::EnterSetup("meshing");
-  PetscCall(mesh::SpecimenCreate(comm, scene.exchange_length(), specimen, lts));
+  PetscCall(mesh::SpecimenCreate(comm, scene.specimen, scene.exchange_length(), specimen, lts));
   summary->stages["mesh"] = MPI_Wtime() - t;
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));

@@ -168,6 +168,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
                             t, s->final_time));
   }
   s->run.output_times = kept;
+  PetscCall(mesh::ReadSpecimenOptions(comm, s->exchange_length(), &s->specimen));  // its heat mesh: after the heat step
   PetscFunctionReturn(0);
 }
 

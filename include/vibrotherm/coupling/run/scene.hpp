@@ -10,6 +10,7 @@
 #include "vibrotherm/coupling/continuation/continued_parts.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
+#include "vibrotherm/mesh/specimen_options.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -26,6 +27,7 @@ struct Scene {
   heat::HeatOptions heat;
   CameraOptions camera;  ///< -camera*: the IR camera filming the heat field
   PeriodicOptions periodic;  ///< -periodic*: continuation of a periodic state
+  mesh::SpecimenOptions specimen;  ///< -mesh_file, -specimen_*, -crack_*, -mesh_*, -edge_*, -heat_mesh*
   double final_time = 0.0;  ///< -final_time, or the source duration
   double couple_dt = 0.0;   ///< -couple_dt, or 1/8 of the source period
 
