@@ -22,6 +22,7 @@
 #include "vibrotherm/util/heartbeat.hpp"
 #include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
+#include "vibrotherm/wave/harmonic_start.hpp"
 #include "vibrotherm/wave/harmonic_krylov.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 
@@ -94,88 +95,88 @@ PetscErrorCode ReportHarmonicSolve(KSP ksp, Mat Z, Vec rhs, Vec U) {
 
 }  // namespace
 
-PetscErrorCode WaveSolver::AddLinearizedStiffness(double mass_coefficient, const EntryAdder& add) const {
+PetscErrorCode HarmonicStart::AddLinearizedStiffness(double mass_coefficient, const EntryAdder& add) const {
   PetscFunctionBeginUser;
   PetscInt rstart, rend;
-  PetscCall(VecGetOwnershipRange(M_, &rstart, &rend));
+  PetscCall(VecGetOwnershipRange(op_.M, &rstart, &rend));
   const PetscScalar* m;
-  PetscCall(VecGetArrayRead(M_, &m));
+  PetscCall(VecGetArrayRead(op_.M, &m));
   for (PetscInt g = rstart; g < rend; ++g) {  // K = −M A (A = −M⁻¹K), then the mass term
     const PetscInt i = g - rstart, *cols;
     const PetscScalar* values;
     PetscInt ncols;
-    PetscCall(MatGetRow(A_, g, &ncols, &cols, &values));
+    PetscCall(MatGetRow(op_.A, g, &ncols, &cols, &values));
     for (PetscInt k = 0; k < ncols; ++k) PetscCall(add(g, cols[k], -m[i] * PetscRealPart(values[k])));
-    PetscCall(MatRestoreRow(A_, g, &ncols, &cols, &values));
+    PetscCall(MatRestoreRow(op_.A, g, &ncols, &cols, &values));
     PetscCall(add(g, g, mass_coefficient * m[i]));
   }
-  PetscCall(VecRestoreArrayRead(M_, &m));
-  if (interface_) {
+  PetscCall(VecRestoreArrayRead(op_.M, &m));
+  if (op_.interface) {
     std::vector<PetscInt> rows, cols;
     std::vector<double> values;
-    PetscCall(interface_->TangentStiffness(&rows, &cols, &values));
+    PetscCall(op_.interface->TangentStiffness(&rows, &cols, &values));
     for (std::size_t k = 0; k < rows.size(); ++k) PetscCall(add(rows[k], cols[k], values[k]));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::HarmonicConstraints(std::vector<PetscInt>* dofs, std::vector<double>* values) const {
+PetscErrorCode HarmonicStart::Constraints(std::vector<PetscInt>* dofs, std::vector<double>* values) const {
   PetscFunctionBeginUser;
   PetscInt rstart;
-  PetscCall(VecGetOwnershipRange(M_, &rstart, nullptr));
-  const int D = boundary_.dim;
-  for (const Constraint& c : boundary_.constraints) {
+  PetscCall(VecGetOwnershipRange(op_.M, &rstart, nullptr));
+  const int D = op_.boundary->dim;
+  for (const Constraint& c : op_.boundary->constraints) {
     int axis = 0;
     while (axis + 1 < D && !(std::abs(c.d[axis]) > 1.0 - 1e-12)) ++axis;
-    PetscCheck(std::abs(c.d[axis]) > 1.0 - 1e-12, PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
+    PetscCheck(std::abs(c.d[axis]) > 1.0 - 1e-12, PetscObjectComm((PetscObject)op_.dm), PETSC_ERR_SUP,
                "-wave_start harmonic: a constrained direction (%g, %g, %g) is not along a coordinate axis", c.d[0],
                c.d[1], c.d[2]);
     dofs->push_back(rstart + D * c.node + axis);
-    values->push_back(c.source ? excitation_.signal.amplitude * c.d[axis] : 0.0);
+    values->push_back(c.source ? op_.excitation->signal.amplitude * c.d[axis] : 0.0);
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const {
+PetscErrorCode HarmonicStart::Assemble(double omega, Mat* Z, Vec* rhs) const {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  MPI_Comm comm = PetscObjectComm((PetscObject)op_.dm);
   PetscInt n, rstart;
-  PetscCall(VecGetLocalSize(M_, &n));
-  PetscCall(VecGetOwnershipRange(M_, &rstart, nullptr));
+  PetscCall(VecGetLocalSize(op_.M, &n));
+  PetscCall(VecGetOwnershipRange(op_.M, &rstart, nullptr));
   std::vector<PetscInt> nnz;
-  PetscCall(StiffnessRowLengths(A_, 2, 16, &nnz));  // K on both parts, the damping blocks, a contact cell
+  PetscCall(StiffnessRowLengths(op_.A, 2, 16, &nnz));  // K on both parts, the damping blocks, a contact cell
   PetscCall(MatCreateAIJ(comm, 2 * n, 2 * n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0, nnz.data(), Z));
   PetscCall(MatSetOption(*Z, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(MatCreateVecs(*Z, nullptr, rhs));
   PetscCall(AddLinearizedStiffness(-omega * omega, [Z](PetscInt r, PetscInt c, double v) { return AddBoth(*Z, r, c, v); }));
-  if (material_.damping_rate > 0.0) {  // ω α M
+  if (op_.material->damping_rate > 0.0) {  // ω α M
     const PetscScalar* m;
-    PetscCall(VecGetArrayRead(M_, &m));
-    for (PetscInt i = 0; i < n; ++i) PetscCall(AddDamping(*Z, rstart + i, rstart + i, omega * material_.damping_rate * m[i]));
-    PetscCall(VecRestoreArrayRead(M_, &m));
+    PetscCall(VecGetArrayRead(op_.M, &m));
+    for (PetscInt i = 0; i < n; ++i) PetscCall(AddDamping(*Z, rstart + i, rstart + i, omega * op_.material->damping_rate * m[i]));
+    PetscCall(VecRestoreArrayRead(op_.M, &m));
   }
-  const int D = boundary_.dim;
-  for (std::size_t k = 0; k < boundary_.dashpots.size(); ++k) {
-    const PetscInt first = rstart + D * boundary_.dashpots.nodes[k];
+  const int D = op_.boundary->dim;
+  for (std::size_t k = 0; k < op_.boundary->dashpots.size(); ++k) {
+    const PetscInt first = rstart + D * op_.boundary->dashpots.nodes[k];
     for (int p = 0; p < D; ++p)
       for (int q = 0; q < D; ++q)
-        PetscCall(AddDamping(*Z, first + p, first + q, omega * boundary_.dashpots.at(k, p, q)));
+        PetscCall(AddDamping(*Z, first + p, first + q, omega * op_.boundary->dashpots.at(k, p, q)));
   }
   PetscCall(MatAssemblyBegin(*Z, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*Z, MAT_FINAL_ASSEMBLY));
-  if (excitation_.type == SourceType::Traction) {  // F = A · shape, a real phasor
+  if (op_.excitation->type == SourceType::Traction) {  // F = A · shape, a real phasor
     const PetscScalar* shape;
     PetscScalar* f;
-    PetscCall(VecGetArrayRead(boundary_.traction_shape, &shape));
+    PetscCall(VecGetArrayRead(op_.boundary->traction_shape, &shape));
     PetscCall(VecGetArray(*rhs, &f));
-    for (PetscInt i = 0; i < n; ++i) f[2 * i] = excitation_.signal.amplitude * shape[i];
+    for (PetscInt i = 0; i < n; ++i) f[2 * i] = op_.excitation->signal.amplitude * shape[i];
     PetscCall(VecRestoreArray(*rhs, &f));
-    PetscCall(VecRestoreArrayRead(boundary_.traction_shape, &shape));
+    PetscCall(VecRestoreArrayRead(op_.boundary->traction_shape, &shape));
   }
   // Constrained components: their rows and columns by the prescribed values (real A on the source's).
   std::vector<PetscInt> dofs, fixed;
   std::vector<double> values;
-  PetscCall(HarmonicConstraints(&dofs, &values));
+  PetscCall(Constraints(&dofs, &values));
   Vec known;
   PetscCall(VecDuplicate(*rhs, &known));
   for (std::size_t k = 0; k < dofs.size(); ++k) {
@@ -189,15 +190,15 @@ PetscErrorCode WaveSolver::AssembleHarmonic(double omega, Mat* Z, Vec* rhs) cons
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::AssembleHarmonicPreconditioner(double omega, Mat* P) const {
+PetscErrorCode HarmonicStart::AssemblePreconditioner(double omega, Mat* P) const {
   PetscFunctionBeginUser;
   PetscInt n;
-  PetscCall(VecGetLocalSize(M_, &n));
+  PetscCall(VecGetLocalSize(op_.M, &n));
   std::vector<PetscInt> nnz;
-  PetscCall(StiffnessRowLengths(A_, 1, 8, &nnz));
-  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)dm_), n, n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0,
+  PetscCall(StiffnessRowLengths(op_.A, 1, 8, &nnz));
+  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)op_.dm), n, n, PETSC_DETERMINE, PETSC_DETERMINE, 0, nnz.data(), 0,
                          nnz.data(), P));
-  PetscCall(MatSetBlockSize(*P, boundary_.dim));
+  PetscCall(MatSetBlockSize(*P, op_.boundary->dim));
   PetscCall(MatSetOption(*P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(AddLinearizedStiffness(omega * omega, [P](PetscInt r, PetscInt c, double v) {
     return MatSetValue(*P, r, c, v, ADD_VALUES);
@@ -206,17 +207,17 @@ PetscErrorCode WaveSolver::AssembleHarmonicPreconditioner(double omega, Mat* P) 
   PetscCall(MatAssemblyEnd(*P, MAT_FINAL_ASSEMBLY));
   std::vector<PetscInt> dofs;
   std::vector<double> values;
-  PetscCall(HarmonicConstraints(&dofs, &values));
+  PetscCall(Constraints(&dofs, &values));
   PetscCall(MatZeroRowsColumns(*P, static_cast<PetscInt>(dofs.size()), dofs.data(), 1.0, nullptr, nullptr));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::NodePositionVector(Vec* coordinates) const {
+PetscErrorCode HarmonicStart::NodePositionVector(Vec* coordinates) const {
   PetscFunctionBeginUser;
   std::vector<double> positions;  // in the local section's layout: dof (node, axis) holds x_axis
-  PetscCall(space_.NodePositions(&positions));
+  PetscCall(op_.space->NodePositions(&positions));
   Vec local;
-  PetscCall(DMGetLocalVector(dm_, &local));
+  PetscCall(DMGetLocalVector(op_.dm, &local));
   PetscInt size;
   PetscCall(VecGetLocalSize(local, &size));
   PetscCheck(static_cast<std::size_t>(size) == positions.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
@@ -225,23 +226,23 @@ PetscErrorCode WaveSolver::NodePositionVector(Vec* coordinates) const {
   PetscCall(VecGetArray(local, &x));
   std::copy(positions.begin(), positions.end(), x);
   PetscCall(VecRestoreArray(local, &x));
-  PetscCall(DMCreateGlobalVector(dm_, coordinates));
-  PetscCall(DMLocalToGlobal(dm_, local, INSERT_VALUES, *coordinates));
-  PetscCall(DMRestoreLocalVector(dm_, &local));
-  PetscCall(VecSetBlockSize(*coordinates, boundary_.dim));
+  PetscCall(DMCreateGlobalVector(op_.dm, coordinates));
+  PetscCall(DMLocalToGlobal(op_.dm, local, INSERT_VALUES, *coordinates));
+  PetscCall(DMRestoreLocalVector(op_.dm, &local));
+  PetscCall(VecSetBlockSize(*coordinates, op_.boundary->dim));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) const {
+PetscErrorCode HarmonicStart::SolveSystem(double omega, Mat Z, Vec rhs, Vec U) const {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
-  HarmonicSolver solver = options_.harmonic_solver;
+  MPI_Comm comm = PetscObjectComm((PetscObject)op_.dm);
+  HarmonicSolver solver = op_.options->harmonic_solver;
   if (solver != HarmonicSolver::kKrylov) {
     bool force = false;
     PetscCall(OptionFlag(nullptr, "-force", &force));  // declared with the mesh options
     bool fits = true;
     PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
-                                {"Harmonic start", "-wave_harmonic_memory_limit", options_.harmonic_memory_limit_gb,
+                                {"Harmonic start", "-wave_harmonic_memory_limit", op_.options->harmonic_memory_limit_gb,
                                  force, solver == HarmonicSolver::kAuto},
                                 &fits));
     solver = fits ? HarmonicSolver::kDirect : HarmonicSolver::kKrylov;
@@ -263,7 +264,7 @@ PetscErrorCode WaveSolver::SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) co
     PetscCall(PetscPrintf(comm, "Harmonic start: factoring and solving the %" PetscInt_FMT " doubled dofs (MUMPS)\n",
                           n_dofs));
   } else {
-    PetscCall(AssembleHarmonicPreconditioner(omega, &P));
+    PetscCall(AssemblePreconditioner(omega, &P));
     PetscCall(NodePositionVector(&coordinates));
     PetscCall(ConfigureHarmonicKrylov(ksp, P, coordinates));
     PetscCall(PetscPrintf(comm, "Harmonic start: GMRES on the %" PetscInt_FMT " doubled dofs, multigrid on "
@@ -281,19 +282,15 @@ PetscErrorCode WaveSolver::SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) co
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::StartHarmonic() {
+PetscErrorCode HarmonicStart::Solve(Vec u, Vec v) const {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
-  PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-wave_start harmonic: not with the implicit wave TS (alpha2)");
-  const double omega = 2.0 * M_PI * excitation_.signal.frequency;
+  const double omega = 2.0 * M_PI * op_.excitation->signal.frequency;
   Mat Z;
   Vec rhs, U;
-  PetscCall(AssembleHarmonic(omega, &Z, &rhs));
+  PetscCall(Assemble(omega, &Z, &rhs));
   PetscCall(VecDuplicate(rhs, &U));
-  PetscCall(SolveHarmonic(omega, Z, rhs, U));
+  PetscCall(SolveSystem(omega, Z, rhs, U));
   // u(0) = Im U, v(0) = ω Re U.
-  Vec u, v;
-  PetscCall(GetFields(&u, &v));
   PetscScalar *pu, *pv;
   const PetscScalar* pU;
   PetscInt n;
@@ -305,10 +302,21 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscCall(VecRestoreArrayRead(U, &pU));
   PetscCall(VecRestoreArray(v, &pv));
   PetscCall(VecRestoreArray(u, &pu));
-  PetscCall(RestoreFields(&u, &v));
   PetscCall(VecDestroy(&U));
   PetscCall(VecDestroy(&rhs));
   PetscCall(MatDestroy(&Z));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::StartHarmonic() {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-wave_start harmonic: not with the implicit wave TS (alpha2)");
+  const HarmonicStart start({dm_, &space_, A_, M_, &boundary_, &excitation_, &material_, &options_, interface_});
+  Vec u, v;
+  PetscCall(GetFields(&u, &v));
+  PetscCall(start.Solve(u, v));
+  PetscCall(RestoreFields(&u, &v));
   PetscCall(BookInitialEnergy());
   PetscFunctionReturn(0);
 }

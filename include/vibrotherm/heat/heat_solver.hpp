@@ -109,7 +109,6 @@ class HeatSolver {
   PetscErrorCode UseFreeIntegrator();
   /// Back to the coupled phase's TS at the current time (after a periodic continuation's free steps).
   PetscErrorCode UseCoupledIntegrator();
-  bool free_integrator() const { return ts_ == free_ts_ && free_ts_ != nullptr; }
   /// Advances with the free integrator (its own step schedule) to exactly t_end.
   PetscErrorCode AdvanceTo(double t_end);
   /// Advances to t_end in `steps` equal steps (coupling intervals: the source
@@ -146,9 +145,6 @@ class HeatSolver {
   /// Linear solvers set up so far by the free TS's steps (one per step length: rung_solvers.hpp).
   PetscInt free_solver_setups() const { return rungs_.count(free_ts_) ? rungs_.at(free_ts_)->setups() : 0; }
   PetscInt dofs() const { return global_dofs_; }
-  /// max_i K_ii / (shift M_ii): how far K + shift·M is from its mass (a step dt of
-  /// backward Euler: shift = 1/dt). Collective.
-  PetscErrorCode StiffnessToMassRatio(double shift, double* ratio) const;
   /// That ratio for the coupled step (HeatOptions::coupled_step; < 0 when not given).
   double coupled_stiffness_ratio() const { return coupled_stiffness_ratio_; }
   /// Up to this ratio an iterative solve uses CG with Jacobi (ConfigurePc).
@@ -195,6 +191,11 @@ class HeatSolver {
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
   std::vector<fe::LocatedPoint> probes_;
   PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
+  /// Whether the free (adaptive) TS is the one in use.
+  bool free_integrator() const { return ts_ == free_ts_ && free_ts_ != nullptr; }
+  /// max_i K_ii / (shift M_ii): how far K + shift·M is from its mass (a step dt of
+  /// backward Euler: shift = 1/dt). Collective.
+  PetscErrorCode StiffnessToMassRatio(double shift, double* ratio) const;
   // The linear solvers (heat_linear_solver.cpp): per shift of K + shift·M, Cholesky when the
   // mesh is small (direct_solve) and the user names no other PC, else CG with Jacobi when the
   // mass dominates every row (StiffnessToMassRatio ≤ kJacobiStiffnessRatio), else CG with BoomerAMG.

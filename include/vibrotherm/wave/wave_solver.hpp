@@ -123,8 +123,6 @@ class WaveSolver {
   /// worst case a0 + worst_approach); the check after every step shrinks it when
   /// the contact stiffens beyond that (see step_control.hpp).
   PetscErrorCode SetInterface(WaveInterface* interface, double worst_approach);
-  /// The lumped mass (global vector).
-  Vec mass() const { return M_; }
   /// Attaches a body force (not owned; null detaches); its stiffness bound enters the step.
   PetscErrorCode SetBodyForce(BodyForce* force);
 
@@ -162,7 +160,6 @@ class WaveSolver {
   /// The stepping operator A = −M⁻¹K (one product per force evaluation, by -wave_kernel).
   Mat stepping_operator() const { return A_; }
   Vec lumped_mass() const { return M_; }
-  TS ts() const { return ts_; }
   /// The state between steps (u, v keyed by dof origin; time, steps, step
   /// control, energy accounts) into a checkpoint, and back (wave_solver_state.cpp).
   /// Restore after Setup and SetInterface; the interface restores itself.
@@ -196,19 +193,7 @@ class WaveSolver {
   PetscErrorCode CheckMacroStep();
   /// The boundary terms on an interior acceleration a (kick_dt as in Acceleration).
   PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
-  // The harmonic start (harmonic_start.cpp).
-  /// add(row, col, value) for every entry of K + K_c + mass_coefficient · M (owned rows; K_c this rank's cells').
-  using EntryAdder = std::function<PetscErrorCode(PetscInt, PetscInt, double)>;
-  PetscErrorCode AddLinearizedStiffness(double mass_coefficient, const EntryAdder& add) const;
-  /// The constrained dofs (global) and their prescribed amplitudes.
-  PetscErrorCode HarmonicConstraints(std::vector<PetscInt>* dofs, std::vector<double>* values) const;
-  PetscErrorCode AssembleHarmonic(double omega, Mat* Z, Vec* rhs) const;
-  /// K + K_c + ω² M, constrained rows and columns identity: the Krylov solve's preconditioner.
-  PetscErrorCode AssembleHarmonicPreconditioner(double omega, Mat* P) const;
-  /// The wave nodes' positions as a global vector (block size = dimension).
-  PetscErrorCode NodePositionVector(Vec* coordinates) const;
-  /// Z U = rhs by -wave_harmonic_solver.
-  PetscErrorCode SolveHarmonic(double omega, Mat Z, Vec rhs, Vec U) const;
+  // The harmonic start (harmonic_start.cpp: HarmonicStart solves it).
   /// The state's energy (the stuck springs' with it) as the source's work at t = 0.
   PetscErrorCode BookInitialEnergy();
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.

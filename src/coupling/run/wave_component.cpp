@@ -84,7 +84,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
   summary->dissipated_energy_by_crack.assign(specimen.cracks.size(), 0.0);  // a crack without contact cells: 0
   if (!specimen.cracks.empty() && law->has_contact()) {
     crack_ = std::make_unique<interface::CrackInterface>();
-    PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->mass(), std::move(law), scene.a0));
+    PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->lumped_mass(), std::move(law), scene.a0));
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
