@@ -63,7 +63,6 @@ PetscErrorCode HeatSolver::Setup(DM dm, const HeatOptions& options) {
   PetscFunctionBeginUser;
   dm_ = dm;
   material_ = options.material;
-  PetscCall(PetscLogEventRegister("HeatSource", TS_CLASSID, &source_event_));
   PetscCall(space_.Setup(dm, options.degree, 1));
   PetscCall(AssembleMassAndConductivity(options.lumped));
   // Edges: the lumped film H on the diagonal of K, G = H (T_ext − T0).
@@ -186,24 +185,6 @@ PetscErrorCode HeatSolver::SetSourceLoad(Vec load) {
   PetscScalar total;
   PetscCall(VecSum(Q_, &total));
   load_total_ = PetscRealPart(total);
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::SetProbePoints(const std::vector<double>& xy) {
-  PetscFunctionBeginUser;
-  std::vector<bool> inside;
-  PetscCall(fe::LocatePoints(space_, xy, &probes_, &inside));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::ProbeTemperatures(std::vector<double>* T) const {
-  PetscFunctionBeginUser;
-  Vec local;
-  PetscCall(DMGetLocalVector(dm_, &local));
-  PetscCall(DMGlobalToLocal(dm_, theta_, INSERT_VALUES, local));
-  PetscCall(fe::EvaluateScalarAtPoints(space_, local, probes_, T));
-  PetscCall(DMRestoreLocalVector(dm_, &local));
-  for (double& t : *T) t += material_.T0;
   PetscFunctionReturn(0);
 }
 
@@ -392,36 +373,14 @@ PetscErrorCode HeatSolver::AdvanceTo(double t_end) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode HeatSolver::TemperatureAt(double x, double y, double* T) const {
+PetscErrorCode HeatSolver::Accounts(HeatAccounts* accounts) const {
   PetscFunctionBeginUser;
-  PetscCheck(space_.dim() == 2, PetscObjectComm((PetscObject)dm_), PETSC_ERR_SUP,
-             "TemperatureAt(x, y) on a %dD heat mesh: give the point's %d coordinates", space_.dim(), space_.dim());
-  const double point[2] = {x, y};
-  PetscCall(TemperatureAt(point, T));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::TemperatureAt(const double* point, double* T) const {
-  PetscFunctionBeginUser;
-  std::vector<fe::LocatedPoint> points;
-  std::vector<bool> inside;
-  PetscCall(fe::LocatePoints(space_, std::vector<double>(point, point + space_.dim()), &points, &inside));
-  Vec local;
-  std::vector<double> values;
-  PetscCall(DMGetLocalVector(dm_, &local));
-  PetscCall(DMGlobalToLocal(dm_, theta_, INSERT_VALUES, local));
-  PetscCall(fe::EvaluateScalarAtPoints(space_, local, points, &values));
-  PetscCall(DMRestoreLocalVector(dm_, &local));
-  *T = inside[0] ? material_.T0 + values[0] : NAN;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::HeatContent(double* content) const {
-  PetscFunctionBeginUser;
-  PetscCall(MatMult(M_, theta_, work_));
+  accounts->deposited = deposited_;
+  accounts->boundary_loss = boundary_loss_;
+  PetscCall(MatMult(M_, theta_, work_));  // ∫ρ c_p θ = 1ᵀ M θ
   PetscScalar sum;
   PetscCall(VecSum(work_, &sum));
-  *content = PetscRealPart(sum);
+  accounts->content = PetscRealPart(sum);
   PetscFunctionReturn(0);
 }
 
@@ -436,14 +395,6 @@ PetscErrorCode HeatSolver::LumpedCapacityInverse(Vec* inverse) const {
   PetscCall(VecGetArray(*inverse, &c));
   for (PetscInt row : boundary_.sink_rows) c[row - rstart] = 0.0;
   PetscCall(VecRestoreArray(*inverse, &c));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode HeatSolver::Temperature(Vec* T) const {
-  PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(theta_, T));
-  PetscCall(VecCopy(theta_, *T));
-  PetscCall(VecShift(*T, material_.T0));
   PetscFunctionReturn(0);
 }
 

@@ -18,21 +18,6 @@
 
 namespace vibrotherm::heat {
 
-PetscErrorCode HeatSolver::ProbeFunctional(std::size_t probe, Vec phi) const {
-  PetscFunctionBeginUser;
-  PetscSection section;
-  PetscCall(DMGetLocalSection(dm_, &section));
-  Vec local;
-  PetscCall(DMGetLocalVector(dm_, &local));
-  PetscCall(VecSet(local, 0.0));
-  const fe::LocatedPoint& p = probes_.at(probe);
-  if (p.cell >= 0) PetscCall(DMPlexVecSetClosure(dm_, section, local, p.cell, p.phi.data(), INSERT_VALUES));
-  PetscCall(VecSet(phi, 0.0));
-  PetscCall(DMLocalToGlobal(dm_, local, ADD_VALUES, phi));
-  PetscCall(DMRestoreLocalVector(dm_, &local));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode HeatSolver::ResponseSolver(double dt, double w, KSP* ksp) {
   PetscFunctionBeginUser;
   PetscCall(responses_.Get(1.0 / (w * dt), ksp));

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "graded_box_support.hpp"
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/heat/rung_solvers.hpp"
 
@@ -143,10 +144,11 @@ PetscErrorCode Cool(const char* free_pc, Cooling* out) {
     options.material.density = options.material.capacity = options.material.conductivity = 1.0;
     heat::HeatSolver heat;
     PetscCall(heat.Setup(dm, options));
-    PetscCall(heat.SetProbePoints({0, 0, 0, 0.1, 0.05, 0, 0.3, 0.2, 0.1}));
+    heat::HeatProbes probes;
+    PetscCall(probes.Locate(heat.space(), {0, 0, 0, 0.1, 0.05, 0, 0.3, 0.2, 0.1}));
     Vec Q;  // a point load at the centre: the heat basis there
     PetscCall(DMCreateGlobalVector(dm, &Q));
-    PetscCall(heat.ProbeFunctional(0, Q));
+    PetscCall(probes.Functional(0, Q));
     PetscCall(heat.SetSourceLoad(Q));
     PetscCall(heat.AdvanceInSteps(4e-3, 4));
     PetscCall(VecSet(Q, 0.0));
@@ -163,7 +165,7 @@ PetscErrorCode Cool(const char* free_pc, Cooling* out) {
       for (double stop : {0.1 + 0.02 * k, 0.105 + 0.02 * k}) PetscCall(heat.AdvanceTo(stop));
     PetscCall(heat.AdvanceTo(0.3));
     std::vector<double> T;
-    PetscCall(heat.ProbeTemperatures(&T));
+    PetscCall(probes.Temperatures(heat.rise(), heat.material().T0, &T));
     for (double t : T) out->rise.push_back(t - heat.material().T0);
     out->setups = heat.free_solver_setups();
     out->dofs = heat.dofs();

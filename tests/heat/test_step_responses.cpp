@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mesh_test_support.hpp"
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 
 namespace vibrotherm::testing {
@@ -19,7 +20,8 @@ TEST(StepResponses, ReproduceTheProbeThroughUnequalSteps) {
   ASSERT_EQ(heat::ReadHeatOptions(PETSC_COMM_WORLD, 2700.0, &options), 0);
   heat::HeatSolver solver;
   ASSERT_EQ(solver.Setup(s.specimen.heat, options), 0);
-  ASSERT_EQ(solver.SetProbePoints({0.005, 0.005, 0.0062, 0.0051}), 0);
+  heat::HeatProbes probes;
+  ASSERT_EQ(probes.Locate(solver.space(), {0.005, 0.005, 0.0062, 0.0051}), 0);
   Vec Q, phi;
   ASSERT_EQ(DMCreateGlobalVector(s.specimen.heat, &Q), 0);
   ASSERT_EQ(VecDuplicate(Q, &phi), 0);
@@ -41,10 +43,10 @@ TEST(StepResponses, ReproduceTheProbeThroughUnequalSteps) {
     ASSERT_EQ(solver.AdvanceInSteps(t, 1), 0);
   }
   std::vector<double> T;
-  ASSERT_EQ(solver.ProbeTemperatures(&T), 0);
+  ASSERT_EQ(probes.Temperatures(solver.rise(), options.material.T0, &T), 0);
   const std::vector<double> newest_first(lengths.rbegin(), lengths.rend());
   for (std::size_t p = 0; p < T.size(); ++p) {
-    ASSERT_EQ(solver.ProbeFunctional(p, phi), 0);
+    ASSERT_EQ(probes.Functional(p, phi), 0);
     PetscScalar rise;  // φᵀθ: the probe's rise without T0's rounding
     ASSERT_EQ(VecDot(phi, solver.rise(), &rise), 0);
     EXPECT_NEAR(PetscRealPart(rise), T[p] - options.material.T0, 1e-12 * options.material.T0) << "probe " << p;

@@ -28,6 +28,7 @@
 
 #include "graded_box_support.hpp"
 #include "vibrotherm/coupling/exchange/surface_transfer.hpp"
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
@@ -113,12 +114,14 @@ PetscErrorCode Solve(MPI_Comm comm, const Problem& p, double t_end, int rungs, i
     out->rise.clear();
     for (std::size_t i = 0; i + 2 < p.probes.size(); i += 3) {
       double T;
-      PetscCall(heat.TemperatureAt(&p.probes[i], &T));
+      PetscCall(heat::TemperatureAt(heat, &p.probes[i], &T));
       out->rise.push_back(T - heat.material().T0);
     }
-    PetscCall(heat.HeatContent(&out->content));
-    out->deposited = heat.deposited();
-    out->boundary_loss = heat.boundary_loss();
+    heat::HeatAccounts accounts;
+    PetscCall(heat.Accounts(&accounts));
+    out->content = accounts.content;
+    out->deposited = accounts.deposited;
+    out->boundary_loss = accounts.boundary_loss;
     out->dofs = heat.dofs();
   }
   PetscCall(DMDestroy(&dm));

@@ -9,10 +9,10 @@
 // once. Sink dofs are algebraic rows θ = 0; their columns are zeroed too, which
 // keeps the Jacobian symmetric positive definite.
 //
-// Sources: a load vector Q (SetSourceLoad: the friction heat, assembled by
-// coupling/friction_heat as a line density on the crack) or a uniform power
-// per unit crack area on each crack (SetCrackPower, for prescribed scenes).
-// Both are integrated with the heat basis, so the injected power is exactly 1ᵀQ.
+// Sources: a load vector Q (SetSourceLoad), assembled by its owner: the friction heat
+// (coupling/exchange), or a uniform power per unit crack area on each crack for
+// prescribed scenes (crack_power.hpp). Integrated with the heat basis, the injected
+// power is exactly 1ᵀQ. Probes read θ from outside (heat_probes.hpp).
 //
 // Accounting per accepted step n (h = t_n − t_{n−1}): deposited += h·1ᵀQ_n;
 // boundary loss += h·1ᵀ(H θ_n − G) − Σ_sink r_i with r = M Δθ + h((K+H)θ_n − Q_n − G),
@@ -29,11 +29,9 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
-#include "vibrotherm/fe/point_location.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
 #include "vibrotherm/heat/rung_solvers.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
-#include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 
 namespace vibrotherm::heat {
@@ -61,6 +59,12 @@ struct HeatOptions {
 /// -heat_* (material, degree, mass, edges). Collective.
 PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options);
 
+/// The heat balance of HeatSolver::Accounts: deposited = boundary_loss + content, to the
+/// integrator's accuracy (exactly for backward Euler and Crank–Nicolson).
+struct HeatAccounts {
+  double deposited = 0.0, boundary_loss = 0.0, content = 0.0;
+};
+
 class HeatSolver {
  public:
   HeatSolver() = default;
@@ -70,13 +74,6 @@ class HeatSolver {
 
   /// Builds the space, M, K, the edges and the TS on dm (the heat mesh).
   PetscErrorCode Setup(DM dm, const HeatOptions& options);
-  /// Sets the line source: a uniform power per unit crack area [W/m²] on each
-  /// crack of `cracks` (the heat mesh's; every rank passes the same vector, one
-  /// value per crack). Collective.
-  PetscErrorCode SetCrackPower(const mesh::CrackSurface& cracks, const std::vector<double>& power_by_crack);
-  /// The same on a 3D box's heat mesh: its facets labelled `crack` (value k + 1 for crack
-  /// k) carry power_by_crack[k] [W/m²] (crack_power.cpp). Collective.
-  PetscErrorCode SetLabelledCrackPower(const std::vector<double>& power_by_crack);
   /// Sets the load Q [W/m per dof], a global vector of the heat DM. Collective.
   PetscErrorCode SetSourceLoad(Vec load);
   /// A second rise field stepped with θ's own steps (the same linear system, its own load Q_p,
@@ -88,13 +85,6 @@ class HeatSolver {
   PetscErrorCode SetPartialLoad(Vec load);
   /// The partial rise (null unless enabled): a global vector of the heat DM (read only).
   Vec partial_rise() const { return partial_; }
-  /// Fixes the probe points (x, y pairs; x, y, z triples on a 3D mesh). Collective.
-  PetscErrorCode SetProbePoints(const std::vector<double>& xy);
-  /// Temperatures [K] at the probe points, on every rank. Collective.
-  PetscErrorCode ProbeTemperatures(std::vector<double>* T) const;
-  /// Probe p's rise as a linear functional of θ: sets phi (a global vector of
-  /// the heat DM) to the heat basis at the point, φᵀθ = the rise there. Collective.
-  PetscErrorCode ProbeFunctional(std::size_t probe, Vec phi) const;
   /// What a load does to a functional φᵀθ under the coupled integrator
   /// (step_responses.cpp): lengths = h_n, h_{n−1}, ... of the last steps, newest
   /// first; w[k] such that a load Q applied in step n − k adds w[k]ᵀQ to φᵀθ at
@@ -119,27 +109,16 @@ class HeatSolver {
   /// Ends the running AdvanceTo after the current step (the run was interrupted).
   void RequestStop() { stop_requested_ = true; }
 
-  /// Temperature at a point (collective; NaN outside). 2D only.
-  PetscErrorCode TemperatureAt(double x, double y, double* T) const;
-  /// The same at a point of the mesh's dimension (dim() coordinates: x, y or x, y, z).
-  PetscErrorCode TemperatureAt(const double* point, double* T) const;
-  /// Heat content ∫ρ c_p (T − T0) [J/m] (collective).
-  PetscErrorCode HeatContent(double* content) const;
-  /// The load Q of the next step [W/m per dof] (read only).
-  Vec load() const { return Q_; }
   /// Whether convective edges to an ambient T_ext ≠ T0 heat or cool the specimen (a source G ≠ 0).
   bool film_source() const { return film_total_ != 0.0; }
-  /// Energy injected by the sources so far [J/m].
-  double deposited() const { return deposited_; }
-  /// Energy that left through sink and convective edges so far [J/m].
-  double boundary_loss() const { return boundary_loss_; }
+  /// The heat balance so far [J/m in 2D, J in 3D]: what the sources injected, what left through
+  /// sink and convective edges, and the heat content ∫ρ c_p (T − T0). Collective.
+  PetscErrorCode Accounts(HeatAccounts* accounts) const;
   /// The rise θ = T − T0: the solver's own global vector of the heat DM (read only).
   Vec rise() const { return theta_; }
   /// 1 / (row sums of M) [K m/J per dof], 0 on sink rows (held at T0): the
   /// adiabatic rise of a load deposited at once is its load times this. New global vector.
   PetscErrorCode LumpedCapacityInverse(Vec* inverse) const;
-  /// Temperature (not the rise) as a new global vector of the heat DM.
-  PetscErrorCode Temperature(Vec* T) const;
   double time() const { return time_; }
   PetscInt steps() const { return steps_; }
   /// Linear solvers set up so far by the free TS's steps (one per step length: rung_solvers.hpp).
@@ -175,8 +154,6 @@ class HeatSolver {
   PetscErrorCode AssembleMassAndConductivity(bool lumped);
   PetscErrorCode AddConvectiveFilm();
   PetscErrorCode ScaleTolerance();
-  /// Q from a uniform power per unit area on each facet (this rank's, facet and crack index pairs).
-  PetscErrorCode SetFacetPower(const std::vector<std::pair<PetscInt, int>>& facets, const std::vector<double>& power);
   /// A solver of J = K + M/(w dt) (sinks as the TS's), set up once per step length dt.
   PetscErrorCode ResponseSolver(double dt, double w, KSP* ksp);
 
@@ -189,7 +166,6 @@ class HeatSolver {
   Vec residual_ = nullptr, mix_ = nullptr;  ///< Account's work vectors (every step)
   Vec partial_ = nullptr, partial_load_ = nullptr, partial_step_ = nullptr;  ///< EnablePartialRise
   double load_total_ = 0.0, film_total_ = 0.0;  ///< 1ᵀQ, 1ᵀG
-  std::vector<fe::LocatedPoint> probes_;
   PetscErrorCode CreateTS(const char* prefix, TSType type, TSAdaptType adapt_type, TS* ts);
   /// Whether the free (adaptive) TS is the one in use.
   bool free_integrator() const { return ts_ == free_ts_ && free_ts_ != nullptr; }
@@ -224,7 +200,6 @@ class HeatSolver {
   double peak_rise_ = 0.0;  ///< largest rise seen [K] (sets the absolute tolerance)
   PetscInt steps_ = 0, global_dofs_ = 0;
   bool stop_requested_ = false;
-  PetscLogEvent source_event_ = 0;
   /// Each TS's solvers by step length (rung_solvers.hpp).
   std::map<TS, std::unique_ptr<RungSolvers>> rungs_;
   /// The rungs' kept shifts in a checkpoint and back (heat_solver_state.cpp).

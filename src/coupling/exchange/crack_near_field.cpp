@@ -25,7 +25,7 @@ bool CrackNearField::any() const {
 }
 
 PetscErrorCode CrackNearField::Setup(const interface::CrackInterface& crack, const FrictionHeat& friction,
-                                     heat::HeatSolver* heat, const std::vector<double>& xy, PetscInt steps,
+                                     heat::HeatSolver* heat, const heat::HeatProbes& probes, PetscInt steps,
                                      double heat_step) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventRegister("NearFieldSetup", TS_CLASSID, &setup_event_));
@@ -44,6 +44,7 @@ PetscErrorCode CrackNearField::Setup(const interface::CrackInterface& crack, con
   tau_max_ = 2.0 * static_cast<double>(steps + 1) * heat_step;
   // exp(−reach²/(4ατ_max)) = exp(−25): the continuum heat of cells beyond is below rounding.
   const double reach = 10.0 * std::sqrt(alpha_ * tau_max_);
+  const std::vector<double>& xy = probes.coordinates();  // 2D: x, y pairs
   probes_.resize(xy.size() / 2);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const std::array<double, 2> x = {xy[2 * p], xy[2 * p + 1]};
@@ -53,7 +54,7 @@ PetscErrorCode CrackNearField::Setup(const interface::CrackInterface& crack, con
     probes_[p].active = probes_[p].active && clear;
     if (!probes_[p].active) continue;
     PetscCall(DMCreateGlobalVector(heat->space().dm(), &probes_[p].phi));
-    PetscCall(heat->ProbeFunctional(p, probes_[p].phi));
+    PetscCall(probes.Functional(p, probes_[p].phi));
   }
   ends_ = {heat->time()};
   fine_ = {{heat->time(), std::vector<double>(owned_cells_, 0.0)}};

@@ -16,16 +16,17 @@ std::vector<double> LagrangeWeights(const std::vector<double>& ts, double t) {
 
 }  // namespace
 
-PetscErrorCode ProbeTemperatures::Setup(heat::HeatSolver* heat) {
+PetscErrorCode ProbeTemperatures::Setup(heat::HeatSolver* heat, const std::vector<double>& points) {
   PetscFunctionBeginUser;
   heat_ = heat;
+  PetscCall(probes_.Locate(heat->space(), points));
   std::vector<double> rise;
   PetscCall(FieldRise(&rise));
   functionals_.clear();
   Vec phi;
   PetscCall(DMCreateGlobalVector(heat->space().dm(), &phi));
   for (std::size_t p = 0; p < rise.size(); ++p) {
-    PetscCall(heat->ProbeFunctional(p, phi));
+    PetscCall(probes_.Functional(p, phi));
     const PetscScalar* x;
     PetscInt n;
     PetscCall(VecGetLocalSize(phi, &n));
@@ -53,17 +54,17 @@ PetscErrorCode ProbeTemperatures::PartialRise(std::vector<double>* rise) const {
 }
 
 PetscErrorCode ProbeTemperatures::SetupNearField(const interface::CrackInterface& crack, const FrictionHeat& friction,
-                                                 const std::vector<double>& xy, PetscInt steps, double heat_step) {
+                                                 PetscInt steps, double heat_step) {
   PetscFunctionBeginUser;
   near_ = std::make_unique<CrackNearField>();
-  PetscCall(near_->Setup(crack, friction, heat_, xy, steps, heat_step));
+  PetscCall(near_->Setup(crack, friction, heat_, probes_, steps, heat_step));
   if (!near_->any()) near_.reset();
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ProbeTemperatures::FieldRise(std::vector<double>* rise) const {
   PetscFunctionBeginUser;
-  PetscCall(heat_->ProbeTemperatures(rise));
+  PetscCall(probes_.Temperatures(heat_->rise(), heat_->material().T0, rise));
   for (double& r : *rise) r -= heat_->material().T0;
   PetscFunctionReturn(0);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::coupling {
@@ -181,7 +182,7 @@ PetscErrorCode Recorder::WriteFields(double t, const wave::WaveSolver* w, const 
   if (heat) {
     if (!fields_.has_grid("heat")) PetscCall(fields_.AddMesh("heat", heat->space()));
     Vec T;
-    PetscCall(heat->Temperature(&T));
+    PetscCall(heat::TemperatureField(*heat, &T));
     PetscCall(fields_.WriteField("heat", "temperature", "K", T, k, t));
     // The rise is what changes (µK on T0 ≈ 293 K): a colour bar of T reads T0 at every tick.
     PetscCall(VecShift(T, -heat->material().T0));

@@ -6,6 +6,7 @@
 #include "vibrotherm/coupling/exchange/thermal_stress.hpp"
 #include "vibrotherm/coupling/exchange/thermoelastic_source.hpp"
 #include "vibrotherm/coupling/exchange/thermoelastic_transfer.hpp"
+#include "vibrotherm/heat/crack_power.hpp"
 #include "vibrotherm/util/timed_stage.hpp"
 
 namespace vibrotherm::coupling {
@@ -14,6 +15,7 @@ HeatComponent::HeatComponent() = default;
 HeatComponent::~HeatComponent() {
   (void)VecDestroy(&load_);
   (void)VecDestroy(&defect_load_);
+  (void)VecDestroy(&crack_load_);
 }
 
 PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene& scene, WaveComponent* waves,
@@ -34,8 +36,10 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCheck(ncracks > 0 || scene.run.heat_crack_power == 0.0, comm, PETSC_ERR_USER_INPUT,
                "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
     const std::vector<double> power(ncracks, scene.run.heat_crack_power);
-    if (scene.run.dimension == 3) PetscCall(solver_.SetLabelledCrackPower(power));
-    else PetscCall(solver_.SetCrackPower(specimen.heat_cracks, power));
+    PetscCall(DMCreateGlobalVector(specimen.heat, &crack_load_));
+    if (scene.run.dimension == 3) PetscCall(heat::LabelledCrackPowerLoad(solver_.space(), power, crack_load_));
+    else PetscCall(heat::CrackPowerLoad(solver_.space(), specimen.heat_cracks, power, crack_load_));
+    PetscCall(solver_.SetSourceLoad(crack_load_));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
     PetscCall(friction->Setup(waves->crack(), waves->solver().space(), solver_.space(), specimen));
@@ -64,11 +68,10 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   }
   std::vector<double> probes = scene.run.probe_points;
   probes.insert(probes.end(), crack_probe_xy_.begin(), crack_probe_xy_.end());
-  PetscCall(solver_.SetProbePoints(probes));
-  PetscCall(probe_temperatures_.Setup(&solver_));
+  PetscCall(probe_temperatures_.Setup(&solver_, probes));
   if (friction_ && scene.run.near_field)
-    PetscCall(probe_temperatures_.SetupNearField(friction_->crack(), friction_->transfer(), probes,
-                                                 scene.run.near_field_steps, scene.couple_dt / scene.run.heat_substeps));
+    PetscCall(probe_temperatures_.SetupNearField(friction_->crack(), friction_->transfer(), scene.run.near_field_steps,
+                                                 scene.couple_dt / scene.run.heat_substeps));
   PetscCall(stage.End(&summary->stages["heat_setup"]));
   PetscFunctionReturn(0);
 }
@@ -104,7 +107,7 @@ PetscErrorCode HeatComponent::SetupDefectShare(const Scene& scene) {
   PetscCall(solver_.EnablePartialRise());
   PetscCall(VecDuplicate(load_, &defect_load_));
   PetscCall(VecSet(defect_load_, 0.0));
-  if (!friction_) PetscCall(solver_.SetPartialLoad(solver_.load()));  // -physics heat: the crack's given power
+  if (crack_load_) PetscCall(solver_.SetPartialLoad(crack_load_));  // -physics heat: the crack's given power
   PetscFunctionReturn(0);
 }
 
@@ -163,7 +166,9 @@ PetscErrorCode HeatComponent::StopSources(const std::string& dir) {
 
 PetscErrorCode HeatComponent::Energy(io::EnergyRow* row) const {
   PetscFunctionBeginUser;
-  row->heat_deposited = solver_.deposited();
+  heat::HeatAccounts accounts;
+  PetscCall(solver_.Accounts(&accounts));
+  row->heat_deposited = accounts.deposited;
   const auto by = [this](const char* name) {
     const auto it = deposited_by_source_.find(name);
     return it == deposited_by_source_.end() ? 0.0 : it->second;
@@ -171,8 +176,8 @@ PetscErrorCode HeatComponent::Energy(io::EnergyRow* row) const {
   row->heat_friction = by("friction");
   row->heat_thermoelastic = by("thermoelastic");
   row->heat_damping = by("damping");
-  row->heat_boundary_loss = solver_.boundary_loss();
-  PetscCall(solver_.HeatContent(&row->heat_content));
+  row->heat_boundary_loss = accounts.boundary_loss;
+  row->heat_content = accounts.content;
   PetscFunctionReturn(0);
 }
 
@@ -181,9 +186,11 @@ PetscErrorCode HeatComponent::Summarise(io::RunSummary* summary) const {
   summary->physics_ran.push_back("heat");
   summary->physics_time["heat"] = {0.0, solver_.time()};
   summary->steps_heat = solver_.steps();
-  summary->heat_deposited = solver_.deposited();
-  summary->heat_boundary_loss = solver_.boundary_loss();
-  PetscCall(solver_.HeatContent(&summary->heat_content));
+  heat::HeatAccounts accounts;
+  PetscCall(solver_.Accounts(&accounts));
+  summary->heat_deposited = accounts.deposited;
+  summary->heat_boundary_loss = accounts.boundary_loss;
+  summary->heat_content = accounts.content;
   summary->stages["heat_steps"] = seconds_;
   for (const auto& [name, energy] : deposited_by_source_) summary->heat_deposited_by[name] = energy;
   if (deposited_by_source_.count("thermoelastic")) summary->physics_ran.push_back("thermoelastic");

@@ -38,6 +38,7 @@
 
 #include "vibrotherm/coupling/exchange/friction_heat.hpp"
 #include "vibrotherm/coupling/exchange/line_kernel.hpp"
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
@@ -52,11 +53,11 @@ class CrackNearField {
   CrackNearField& operator=(const CrackNearField&) = delete;
   ~CrackNearField();
 
-  /// For every probe of `heat` (its probe points, xy): a near field when a
+  /// For every probe of `heat` (probes: its points in the heat mesh): a near field when a
   /// contact cell lies within reach (and no outer edge does). `heat_step`: the
   /// expected heat step (the window's reach); `steps`: K. Collective.
   PetscErrorCode Setup(const interface::CrackInterface& crack, const FrictionHeat& friction, heat::HeatSolver* heat,
-                       const std::vector<double>& xy, PetscInt steps, double heat_step);
+                       const heat::HeatProbes& probes, PetscInt steps, double heat_step);
   /// Whether probe p has a near field (the same on every rank).
   bool active(std::size_t probe) const { return probe < probes_.size() && probes_[probe].active; }
   bool any() const;

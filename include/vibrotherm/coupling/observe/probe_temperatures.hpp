@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/exchange/crack_near_field.hpp"
+#include "vibrotherm/heat/heat_probes.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/io/point_probes.hpp"
@@ -22,12 +23,12 @@ namespace vibrotherm::coupling {
 
 class ProbeTemperatures {
  public:
-  /// The heat solver with its probes set. Collective.
-  PetscErrorCode Setup(heat::HeatSolver* heat);
-  /// Friction heats: the crack's near field for the probes at points xy (K = steps
-  /// heat steps, expected heat step length heat_step). Collective.
-  PetscErrorCode SetupNearField(const interface::CrackInterface& crack, const FrictionHeat& friction,
-                                const std::vector<double>& xy, PetscInt steps, double heat_step);
+  /// The probes at `points` (x, y pairs; x, y, z triples in 3D) of the heat solver's field. Collective.
+  PetscErrorCode Setup(heat::HeatSolver* heat, const std::vector<double>& points);
+  /// Friction heats: the crack's near field for the probes (K = steps heat steps,
+  /// expected heat step length heat_step). Collective.
+  PetscErrorCode SetupNearField(const interface::CrackInterface& crack, const FrictionHeat& friction, PetscInt steps,
+                                double heat_step);
   /// The friction has stopped (the crack interface goes): the field alone from here on.
   void StopNearField() { near_.reset(); }
   const CrackNearField* near_field() const { return near_.get(); }
@@ -71,6 +72,7 @@ class ProbeTemperatures {
   PetscErrorCode FieldRise(std::vector<double>* rise) const;
   std::vector<std::vector<std::pair<PetscInt, double>>> functionals_;  ///< per probe: (owned local row, weight)
   heat::HeatSolver* heat_ = nullptr;
+  heat::HeatProbes probes_;  ///< the points located in the heat mesh
   std::unique_ptr<CrackNearField> near_;
   std::deque<Sample> samples_;  ///< the last three heat steps (t = 0 counts)
   std::vector<double> rows_;    ///< row times not yet closed by a heat step

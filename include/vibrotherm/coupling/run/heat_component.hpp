@@ -93,6 +93,7 @@ class HeatComponent final : public ContinuedHeat {
   ProbeTemperatures probe_temperatures_;          ///< the probes between heat steps
   FrictionHeatSource* friction_ = nullptr;        ///< among sources_, when friction heats
   Vec load_ = nullptr, defect_load_ = nullptr;
+  Vec crack_load_ = nullptr;  ///< -physics heat: the prescribed crack power's load (crack_power.hpp)
   DefectShare defect_share_ = DefectShare::Whole;
   std::vector<double> crack_probe_xy_;
   std::map<std::string, double> deposited_by_source_;  ///< kept after the sources go
