@@ -38,17 +38,7 @@ PetscErrorCode FacetPowerLoad(const fe::LagrangeSpace& space, const std::vector<
 
 }  // namespace
 
-PetscErrorCode CrackPowerLoad(const fe::LagrangeSpace& space, const mesh::CrackSurface& cracks,
-                              const std::vector<double>& power, Vec Q) {
-  PetscFunctionBeginUser;
-  std::vector<std::pair<PetscInt, int>> facets;
-  for (const mesh::OwnedCrackFacet& owned : cracks.owned())
-    facets.emplace_back(owned.facet, cracks.facets()[owned.index].crack);
-  PetscCall(FacetPowerLoad(space, facets, power, Q));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode LabelledCrackPowerLoad(const fe::LagrangeSpace& space, const std::vector<double>& power, Vec Q) {
+PetscErrorCode CrackPowerLoad(const fe::LagrangeSpace& space, const std::vector<double>& power, Vec Q) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
   DMLabel crack;

@@ -312,7 +312,7 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-wave_start harmonic: not with the implicit wave TS (alpha2)");
-  const HarmonicStart start({dm_, &space_, A_, M_, &boundary_, &excitation_, &material_, &options_, interface_});
+  const HarmonicStart start({dm_, &op_.space(), op_.stepping(), op_.mass(), &boundary_, &excitation_, &material_, &options_, interface_});
   Vec u, v;
   PetscCall(GetFields(&u, &v));
   PetscCall(start.Solve(u, v));

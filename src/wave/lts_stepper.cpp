@@ -386,4 +386,17 @@ double LtsStepper::speedup_bound() const {
   return local > 0.0 ? global / local : 1.0;
 }
 
+PetscErrorCode LtsStepper::View(MPI_Comm comm) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "wave: local time stepping, macro step %g s, %" PetscInt_FMT " levels (speed-up bound %.2f):\n",
+                        macro_step(), levels(), speedup_bound()));
+  for (PetscInt l = 0; l < levels(); ++l) {
+    const LtsLevelInfo& level = info()[l];
+    PetscCall(PetscPrintf(comm, "  level %" PetscInt_FMT ": step %g s, %" PetscInt_FMT " cells, %" PetscInt_FMT
+                          " dofs, omega %g rad/s%s\n", l, std::ldexp(macro_step(), -static_cast<int>(l)),
+                          level.cells, level.dofs, level.omega, l == contact_level() ? " (contact)" : ""));
+  }
+  PetscFunctionReturn(0);
+}
+
 }  // namespace vibrotherm::wave

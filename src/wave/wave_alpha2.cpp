@@ -26,16 +26,16 @@ PetscErrorCode WaveSolver::SetupAlpha2(MPI_Comm comm) {
 
 PetscErrorCode WaveSolver::Forces(double t, Vec u, Vec v, Vec f) const {
   PetscFunctionBeginUser;
-  PetscCall(ApplyStepping(u, f));
-  PetscCall(VecPointwiseMult(f, f, M_));  // −K u
+  PetscCall(op_.Apply(u, f));
+  PetscCall(VecPointwiseMult(f, f, op_.mass()));  // −K u
   ForceState state;
   state.signal = SignalValues::At(excitation_.signal, t);
   PetscScalar* F;
   PetscCall(VecGetArray(f, &F));
   PetscCall(VecGetArrayRead(v, &state.velocity));
-  PetscCall(VecGetArrayRead(M_, &state.mass));
+  PetscCall(VecGetArrayRead(op_.mass(), &state.mass));
   for (const auto& term : terms_) term->AddForce(state, F);
-  PetscCall(VecRestoreArrayRead(M_, &state.mass));
+  PetscCall(VecRestoreArrayRead(op_.mass(), &state.mass));
   PetscCall(VecRestoreArrayRead(v, &state.velocity));
   PetscCall(VecRestoreArray(f, &F));
   PetscFunctionReturn(0);
@@ -46,7 +46,7 @@ PetscErrorCode WaveSolver::I2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec 
   auto* self = static_cast<WaveSolver*>(ctx);
   PetscCall(self->Forces(t, U, V, F));  // F = f(U, V, t)
   PetscCall(VecScale(F, -1.0));
-  PetscCall(VecPointwiseMult(self->force_, self->M_, A));
+  PetscCall(VecPointwiseMult(self->force_, self->op_.mass(), A));
   PetscCall(VecAXPY(F, 1.0, self->force_));  // M A − f
   ForceState state;
   state.signal = SignalValues::At(self->excitation_.signal, t);
@@ -54,9 +54,9 @@ PetscErrorCode WaveSolver::I2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec 
   const PetscScalar* Acc;
   PetscCall(VecGetArray(F, &R));
   PetscCall(VecGetArrayRead(A, &Acc));
-  PetscCall(VecGetArrayRead(self->M_, &state.mass));
+  PetscCall(VecGetArrayRead(self->op_.mass(), &state.mass));
   for (const auto& term : self->terms_) term->ConstrainResidual(state, Acc, R);
-  PetscCall(VecRestoreArrayRead(self->M_, &state.mass));
+  PetscCall(VecRestoreArrayRead(self->op_.mass(), &state.mass));
   PetscCall(VecRestoreArrayRead(A, &Acc));
   PetscCall(VecRestoreArray(F, &R));
   PetscFunctionReturn(0);
@@ -66,19 +66,19 @@ PetscErrorCode WaveSolver::I2Jacobian(TS, PetscReal, Vec, Vec, Vec, PetscReal sh
                                       void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<WaveSolver*>(ctx);
-  PetscCall(MatCopy(self->K_, J, SAME_NONZERO_PATTERN));
-  PetscCall(VecCopy(self->M_, self->force_));
+  PetscCall(MatCopy(self->op_.stiffness(), J, SAME_NONZERO_PATTERN));
+  PetscCall(VecCopy(self->op_.mass(), self->force_));
   PetscCall(VecScale(self->force_, shiftA));
   PetscCall(MatDiagonalSet(J, self->force_, ADD_VALUES));
   PetscInt rstart;
-  PetscCall(VecGetOwnershipRange(self->M_, &rstart, nullptr));
+  PetscCall(VecGetOwnershipRange(self->op_.mass(), &rstart, nullptr));
   for (const auto& term : self->terms_) PetscCall(term->AddJacobian(shiftV, rstart, J));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   const PetscScalar* mass;
-  PetscCall(VecGetArrayRead(self->M_, &mass));
+  PetscCall(VecGetArrayRead(self->op_.mass(), &mass));
   for (const auto& term : self->terms_) PetscCall(term->ConstrainJacobian(shiftA, rstart, mass, J));
-  PetscCall(VecRestoreArrayRead(self->M_, &mass));
+  PetscCall(VecRestoreArrayRead(self->op_.mass(), &mass));
   PetscFunctionReturn(0);
 }
 

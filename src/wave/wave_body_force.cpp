@@ -17,12 +17,12 @@ PetscErrorCode WaveSolver::SetBodyForce(BodyForce* force) {
   PetscCheck(steps_ == 0, comm, PETSC_ERR_ORDER, "%s: a body force is attached before the first wave step",
              force->name());
   if (!body_f_)
-    for (Vec* v : {&body_f_, &body_u_, &body_a_, &body_f_end_}) PetscCall(VecDuplicate(M_, v));
+    for (Vec* v : {&body_f_, &body_u_, &body_a_, &body_f_end_}) PetscCall(VecDuplicate(op_.mass(), v));
   PetscCall(VecSet(body_f_, 0.0));
   PetscCall(VecCopy(u_, body_u_));
   PetscCall(force->Force(time_, u_, body_f_end_));
   double omega2;
-  PetscCall(force->MaxFrequencySquared(M_, &omega2));
+  PetscCall(force->MaxFrequencySquared(op_.mass(), &omega2));
   PetscCall(step_.IncludeBulkStiffness(omega2, force->name()));
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
   PetscFunctionReturn(0);
@@ -31,7 +31,7 @@ PetscErrorCode WaveSolver::SetBodyForce(BodyForce* force) {
 PetscErrorCode WaveSolver::AddBodyForce(double t, Vec u, Vec a) {
   PetscFunctionBeginUser;
   PetscCall(body_->Force(t, u, body_f_));
-  PetscCall(VecPointwiseMult(body_a_, body_f_, Minv_));
+  PetscCall(VecPointwiseMult(body_a_, body_f_, op_.inverse_mass()));
   PetscCall(VecAXPY(a, 1.0, body_a_));
   PetscFunctionReturn(0);
 }

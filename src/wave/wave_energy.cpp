@@ -55,8 +55,8 @@ PetscErrorCode WaveSolver::IntegratorTerm(double dt, double* term) const {
   PetscCall(GetFields(&u, &v));
   PetscCall(VecDuplicate(v, &Av));
   PetscCall(VecDuplicate(v, &Mv));
-  PetscCall(VecPointwiseMult(Mv, v, M_));
-  PetscCall(ApplyStepping(v, Av));
+  PetscCall(VecPointwiseMult(Mv, v, op_.mass()));
+  PetscCall(op_.Apply(v, Av));
   PetscScalar vKv;
   PetscCall(VecDot(Mv, Av, &vKv));
   PetscCall(VecDestroy(&Av));
@@ -72,11 +72,11 @@ PetscErrorCode WaveSolver::Energy(WaveEnergy* e) const {
   PetscCall(GetFields(&u, &v));
   PetscCall(VecDuplicate(u, &Au));
   PetscCall(VecDuplicate(u, &Mu));
-  PetscCall(VecPointwiseMult(Mu, v, M_));
+  PetscCall(VecPointwiseMult(Mu, v, op_.mass()));
   PetscScalar kinetic, strain;
   PetscCall(VecDot(Mu, v, &kinetic));
-  PetscCall(VecPointwiseMult(Mu, u, M_));
-  PetscCall(ApplyStepping(u, Au));
+  PetscCall(VecPointwiseMult(Mu, u, op_.mass()));
+  PetscCall(op_.Apply(u, Au));
   PetscCall(VecDot(Mu, Au, &strain));  // −uᵀKu
   PetscCall(VecDestroy(&Au));
   PetscCall(VecDestroy(&Mu));

@@ -1,6 +1,5 @@
 // The wave solver with clustered local time stepping (lts_stepper.hpp): when
 // it applies, and the macro step the velocity Verlet TS calls.
-#include <cmath>
 #include <string>
 
 #include "vibrotherm/wave/verlet_ts.hpp"
@@ -23,12 +22,12 @@ PetscErrorCode WaveSolver::SetupLts() {
   }
   if (!lts_note_.empty()) PetscFunctionReturn(0);
   LtsLevels levels;
-  PetscCall(AssignCellLevels(space_, material_, options_.lts, &levels));
+  PetscCall(AssignCellLevels(op_.space(), material_, options_.lts, &levels));
   if (levels.levels < 2) {
     lts_note_ = "off: every cell has the same level";
     PetscFunctionReturn(0);
   }
-  PetscCall(lts_.Setup(space_, material_, M_, levels, boundary_, excitation_, step_.omega_dt_max(), options_.lts));
+  PetscCall(lts_.Setup(op_.space(), material_, op_.mass(), levels, boundary_, excitation_, step_.omega_dt_max(), options_.lts));
   if (lts_.macro_step() <= step_.dt()) {
     lts_note_ = "off: the levels' macro step is not longer than the global step";
     PetscFunctionReturn(0);
@@ -36,21 +35,6 @@ PetscErrorCode WaveSolver::SetupLts() {
   step_.UseMacroStep(lts_.macro_step());
   PetscCall(VelocityVerletSetMacroStep(ts_, MacroStep, this));
   lts_active_ = true;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode WaveSolver::ViewLts() const {
-  PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
-  if (!lts_active_) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(comm, "wave: local time stepping, macro step %g s, %" PetscInt_FMT " levels (speed-up bound %.2f):\n",
-                        lts_.macro_step(), lts_.levels(), lts_.speedup_bound()));
-  for (PetscInt l = 0; l < lts_.levels(); ++l) {
-    const LtsLevelInfo& info = lts_.info()[l];
-    PetscCall(PetscPrintf(comm, "  level %" PetscInt_FMT ": step %g s, %" PetscInt_FMT " cells, %" PetscInt_FMT
-                          " dofs, omega %g rad/s%s\n", l, std::ldexp(lts_.macro_step(), -static_cast<int>(l)),
-                          info.cells, info.dofs, info.omega, l == lts_.contact_level() ? " (contact)" : ""));
-  }
   PetscFunctionReturn(0);
 }
 

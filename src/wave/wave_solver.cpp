@@ -78,11 +78,9 @@ WaveSolver::~WaveSolver() {
   if (u_view_) (void)VecRestoreSubVector(X_, is_u_, &u_view_);
   if (v_view_) (void)VecRestoreSubVector(X_, is_v_, &v_view_);
   (void)MatDestroy(&J_);
-  for (Vec* v : {&u_, &v_, &X_, &force_, &M_, &Minv_, &body_f_, &body_u_, &body_a_, &body_f_end_}) (void)VecDestroy(v);
+  for (Vec* v : {&u_, &v_, &X_, &force_, &body_f_, &body_u_, &body_a_, &body_f_end_}) (void)VecDestroy(v);
   (void)ISDestroy(&is_u_);
   (void)ISDestroy(&is_v_);
-  (void)MatDestroy(&K_);
-  (void)MatDestroy(&A_);
 }
 
 PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const Excitation& excitation,
@@ -93,32 +91,25 @@ PetscErrorCode WaveSolver::Setup(DM dm, const ElasticMaterial& material, const E
   material_ = material;
   excitation_ = excitation;
   options_ = options;
-  PetscInt dim;  // one displacement component per dimension of the mesh
-  PetscCall(DMGetDimension(dm, &dim));
-  PetscCall(space_.Setup(dm, options.degree, dim));
-  PetscCall(AssembleElasticOperators(space_, material, &K_, &M_));
-  PetscCall(VecDuplicate(M_, &Minv_));
-  PetscCall(VecCopy(M_, Minv_));
-  PetscCall(VecReciprocal(Minv_));
-  PetscCall(BuildWaveBoundary(space_, material, excitation, &boundary_));
-  PetscCall(CreateBoundaryTerms(boundary_, M_, excitation.type == SourceType::Displacement, &terms_));
+  PetscCall(op_.Setup(dm, material, options.degree));
+  PetscCall(BuildWaveBoundary(op_.space(), material, excitation, &boundary_));
+  PetscCall(CreateBoundaryTerms(boundary_, op_.mass(), excitation.type == SourceType::Displacement, &terms_));
 
   PetscInt n, rstart;
-  PetscCall(VecGetLocalSize(M_, &n));
-  PetscCall(VecGetSize(M_, &global_dofs_));
+  PetscCall(VecGetLocalSize(op_.mass(), &n));
   PetscCall(VecCreateMPI(comm, 2 * n, PETSC_DETERMINE, &X_));
   PetscCall(VecSet(X_, 0.0));
   PetscCall(VecGetOwnershipRange(X_, &rstart, nullptr));
   PetscCall(ISCreateStride(comm, n, rstart, 1, &is_u_));
   PetscCall(ISCreateStride(comm, n, rstart + n, 1, &is_v_));
   PetscCall(CreateFieldViews(comm, n));
-  PetscCall(VecDuplicate(M_, &force_));
+  PetscCall(VecDuplicate(op_.mass(), &force_));
   PetscCall(CreateTS(comm));
   PetscCall(SetupStepControl(comm));
   PetscCall(SetupLts());
   if (material.damping_rate > 0.0) {  // first: the later terms see the damped mass; LTS accounts it per kick
     std::unique_ptr<BoundaryTerm> damping;
-    PetscCall(CreateMaterialDamping(material.damping_rate, M_, !lts_active_, &damping));
+    PetscCall(CreateMaterialDamping(material.damping_rate, op_.mass(), !lts_active_, &damping));
     terms_.insert(terms_.begin(), std::move(damping));
   }
   PetscCall(TSSetTimeStep(ts_, step_.dt()));
@@ -132,8 +123,8 @@ PetscErrorCode WaveSolver::CreateFieldViews(MPI_Comm comm, PetscInt n) {
   // per use creates a vector (a layout set up by collectives) each time.
   PetscScalar* x;
   PetscCall(VecGetArray(X_, &x));
-  PetscCall(VecCreateMPIWithArray(comm, 1, n, global_dofs_, x, &u_));
-  PetscCall(VecCreateMPIWithArray(comm, 1, n, global_dofs_, x + n, &v_));
+  PetscCall(VecCreateMPIWithArray(comm, 1, n, op_.dofs(), x, &u_));
+  PetscCall(VecCreateMPIWithArray(comm, 1, n, op_.dofs(), x + n, &v_));
   PetscCall(VecRestoreArray(X_, &x));
   PetscFunctionReturn(0);
 }
@@ -181,16 +172,9 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
   // Stable step: ω_max (SLEPc) and the measured (ω dt)_max of this TS type.
   double omega_dt_max;
   bool implicit;
-  PetscCall(LargestAngularFrequency(K_, M_, &omega_max_));
-  // A = −M⁻¹K scaled in place; alpha2 keeps K for its Jacobian.
-  if (second_order_) {
-    PetscCall(MatDuplicate(K_, MAT_COPY_VALUES, &A_));
-  } else {
-    A_ = K_;
-    K_ = nullptr;
-  }
-  PetscCall(ScaleToAcceleration(A_, M_));
-  if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Setup(A_));
+  PetscCall(op_.LargestFrequency(&omega_max_));
+  // alpha2 keeps K for its Jacobian, and multiplies by PETSc (the blocked kernel serves explicit types).
+  PetscCall(op_.MakeStepping(second_order_, second_order_ ? StiffnessKernel::kPetsc : options_.kernel));
   TSType type;
   PetscCall(TSGetType(ts_, &type));
   PetscCall(OscillatorStabilityLimit("wave_", &omega_dt_max, &implicit));
@@ -203,16 +187,9 @@ PetscErrorCode WaveSolver::SetupStepControl(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::ApplyStepping(Vec u, Vec a) const {
-  PetscFunctionBeginUser;
-  if (options_.kernel == StiffnessKernel::kBlocked && !second_order_) PetscCall(kernel_.Apply(u, a));
-  else PetscCall(MatMult(A_, u, a));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode WaveSolver::Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt) {
   PetscFunctionBeginUser;
-  PetscCall(ApplyStepping(u, a));  // −M⁻¹K u
+  PetscCall(op_.Apply(u, a));  // −M⁻¹K u
   if (interface_) PetscCall(interface_->AddAcceleration(u, a));
   if (body_) PetscCall(AddBodyForce(t, u, a));
   PetscCall(ApplyTerms(t, v, a, kick_dt));
@@ -228,9 +205,9 @@ PetscErrorCode WaveSolver::ApplyTerms(double t, Vec v, Vec a, double kick_dt) {
   PetscScalar* acc;
   PetscCall(VecGetArray(a, &acc));
   PetscCall(VecGetArrayRead(v, &state.velocity));
-  PetscCall(VecGetArrayRead(M_, &state.mass));
+  PetscCall(VecGetArrayRead(op_.mass(), &state.mass));
   for (auto& term : terms_) term->Accelerate(state, acc);
-  PetscCall(VecRestoreArrayRead(M_, &state.mass));
+  PetscCall(VecRestoreArrayRead(op_.mass(), &state.mass));
   PetscCall(VecRestoreArrayRead(v, &state.velocity));
   PetscCall(VecRestoreArray(a, &acc));
   PetscFunctionReturn(0);

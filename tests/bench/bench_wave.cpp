@@ -50,12 +50,12 @@ static PetscErrorCode Run() {
   PetscCall(solver.Setup(specimen.wave, material, excitation, options));
   PetscCall(solver.AdvanceSteps(10));  // warm up
   Vec x, y;
-  PetscCall(MatCreateVecs(solver.stepping_operator(), &x, &y));
+  PetscCall(MatCreateVecs(solver.op().stepping(), &x, &y));
   PetscCall(VecSet(x, 1.0));
-  PetscCall(MatMult(solver.stepping_operator(), x, y));
+  PetscCall(MatMult(solver.op().stepping(), x, y));
   wave::BlockKernel kernel, portable;
-  PetscCall(kernel.Setup(solver.stepping_operator()));
-  PetscCall(portable.Setup(solver.stepping_operator(), false));
+  PetscCall(kernel.Setup(solver.op().stepping()));
+  PetscCall(portable.Setup(solver.op().stepping(), false));
   PetscCall(kernel.Apply(x, y));
   PetscCall(portable.Apply(x, y));
   // Alternate the measurements and keep the best of five: the machine is shared.
@@ -67,7 +67,7 @@ static PetscErrorCode Run() {
     PetscCallMPI(MPI_Barrier(comm));
     wave_time = std::min(wave_time, Now(cpu_time) - t0);
     t0 = Now(cpu_time);
-    for (PetscInt k = 0; k < steps; ++k) PetscCall(MatMult(solver.stepping_operator(), x, y));
+    for (PetscInt k = 0; k < steps; ++k) PetscCall(MatMult(solver.op().stepping(), x, y));
     PetscCallMPI(MPI_Barrier(comm));
     matmult_time = std::min(matmult_time, Now(cpu_time) - t0);
     t0 = Now(cpu_time);
@@ -81,7 +81,7 @@ static PetscErrorCode Run() {
   }
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  const double dofs = solver.dofs(), wave_rate = dofs * steps / wave_time, mm_rate = dofs * steps / matmult_time;
+  const double dofs = solver.op().dofs(), wave_rate = dofs * steps / wave_time, mm_rate = dofs * steps / matmult_time;
   const double blocked_rate = dofs * steps / blocked_time;
   PetscCall(PetscPrintf(comm, "%d %" PetscInt_FMT " %.0f %.4g %.4g %.4g %.3f %.4g %.3f %.3f\n", size, options.degree,
                         dofs, steps / wave_time, wave_rate, mm_rate, wave_rate / mm_rate, blocked_rate,

@@ -39,7 +39,7 @@ TEST(HeatLineSource, MatchesCarslawJaeger) {
   ASSERT_EQ(solver.Setup(s.specimen.heat, options), 0);
   Vec load;
   ASSERT_EQ(DMCreateGlobalVector(s.specimen.heat, &load), 0);
-  ASSERT_EQ(heat::CrackPowerLoad(solver.space(), s.specimen.heat_cracks, {q}, load), 0);
+  ASSERT_EQ(heat::CrackPowerLoad(solver.space(), {q}, load), 0);
   ASSERT_EQ(solver.SetSourceLoad(load), 0);
   ASSERT_EQ(VecDestroy(&load), 0);
   const double rho_c = mat.density * mat.capacity, alpha = mat.diffusivity();

@@ -57,7 +57,7 @@ double Scale(Mat A, Vec x) {
 TEST(BlockKernel, EqualsMatMultOnThePaperMesh) {
   ScopedWave w(PaperOptions());
   ASSERT_EQ(w.status, 0);
-  Mat A = w.solver.stepping_operator();
+  Mat A = w.solver.op().stepping();
   Vec x, y_petsc, y_blocked, y_portable;
   ASSERT_EQ(RandomVector(A, &x), 0);
   VecDuplicate(x, &y_petsc);
@@ -83,7 +83,7 @@ TEST(BlockKernel, FollowsTheMatrixWhenItsValuesChange) {
   ScopedWave w(PaperOptions());
   ASSERT_EQ(w.status, 0);
   Mat A;
-  ASSERT_EQ(MatDuplicate(w.solver.stepping_operator(), MAT_COPY_VALUES, &A), 0);
+  ASSERT_EQ(MatDuplicate(w.solver.op().stepping(), MAT_COPY_VALUES, &A), 0);
   wave::BlockKernel kernel;
   ASSERT_EQ(kernel.Setup(A), 0);
   Vec x, y_petsc, y_blocked;

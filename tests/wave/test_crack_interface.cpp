@@ -24,7 +24,7 @@ TEST(CrackInterface, CellsFollowTheGeometry) {
   params.crack_law = "mmd";
   interface::ApproachProfile a0;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.lumped_mass(),
+  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.op().mass(),
                         contact::create_crack_law(params), a0),
             0);
   const PetscInt facets = w.specimen->summary.cracks.at(0).facets;
@@ -58,11 +58,11 @@ TEST(CrackInterface, OpeningTheCrackPullsThePlusFaceAlongN) {
   interface::ApproachProfile a0;
   a0.uniform = 1e-8;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.lumped_mass(),
+  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.op().mass(),
                         contact::create_crack_law(params), a0),
             0);
   Vec u, acc;
-  ASSERT_EQ(VecDuplicate(w.solver.lumped_mass(), &u), 0);
+  ASSERT_EQ(VecDuplicate(w.solver.op().mass(), &u), 0);
   ASSERT_EQ(VecDuplicate(u, &acc), 0);
   VecSet(acc, 0.0);
   PetscSection global;

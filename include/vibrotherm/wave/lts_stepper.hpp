@@ -74,6 +74,8 @@ class LtsStepper {
   double macro_step() const { return H_; }
   PetscInt levels() const { return static_cast<PetscInt>(level_.size()); }
   PetscInt contact_level() const { return contact_level_; }
+  /// Prints the levels (steps, cells, dofs, the contact's) to stdout of rank 0. Collective.
+  PetscErrorCode View(MPI_Comm comm) const;
   /// Times the contact moved to a finer level while stepping.
   PetscInt contact_refinements() const { return refinements_; }
   /// This rank's energy dissipated by material damping (exact per kick: c α Σ m v̄²).

@@ -1,5 +1,7 @@
-// Plane-strain elastodynamics on the crack-split mesh, integrated by one PETSc TS
-// (options prefix -wave_): u̇ = v, M v̇ = −K u − C v + f_source(t) + f_extra(u).
+// Elastodynamics on the crack-split mesh (plane strain in 2D, or 3D: the dimension is the
+// DM's), integrated by one PETSc TS (options prefix -wave_):
+//   u̇ = v, M v̇ = −K u − C v + f_source(t) + f_extra(u),
+// K, M and A = −M⁻¹K from the operator (wave_operator.hpp), which knows nothing of time.
 //
 // State X = [u; v] (per rank: owned u block, then owned v block). Explicit
 // default: velocity Verlet (drift–kick–drift; verlet_ts.hpp, or basicsymplectic type 2), with the
@@ -12,7 +14,8 @@
 // (the crack interface) plug in through WaveInterface; a bulk force affine in u
 // (the two-way thermal stress) through BodyForce (body_force.hpp, wave_body_force.cpp).
 // Files: wave_solver.cpp (setup, TS, explicit stepping), wave_alpha2.cpp
-// (implicit alpha2), wave_energy.cpp (energy accounting).
+// (implicit alpha2), wave_lts.cpp (local time stepping), wave_energy.cpp (energy
+// accounting), wave_body_force.cpp, wave_solver_state.cpp (checkpoints).
 #pragma once
 
 #include <petscts.h>
@@ -34,15 +37,13 @@
 #include "vibrotherm/wave/material.hpp"
 #include "vibrotherm/wave/step_control.hpp"
 #include "vibrotherm/wave/wave_boundary.hpp"
+#include "vibrotherm/wave/wave_operator.hpp"
 
 namespace vibrotherm::wave {
 
 /// How the harmonic start solves its doubled system: MUMPS when its factor fits the memory
 /// limit, else GMRES (auto); always MUMPS (direct); always GMRES with multigrid (krylov).
 enum class HarmonicSolver { kAuto, kDirect, kKrylov };
-
-/// How the explicit step applies A = −M⁻¹K: PETSc's MatMult, or the 2×2-block kernel (block_kernel.hpp).
-enum class StiffnessKernel { kPetsc, kBlocked };
 
 struct WaveOptions {
   PetscInt degree = 2;   ///< -wave_degree 1|2 (Q2/P2 by default: Q1 is 32 % off in dissipated energy on the paper mesh)
@@ -132,22 +133,19 @@ class WaveSolver {
   PetscErrorCode Energy(WaveEnergy* e) const;  ///< kinetic and strain computed now
   double time() const { return time_; }
   PetscInt steps() const { return steps_; }
-  double dt() const { return step_.dt(); }
-  double stable_dt() const { return step_.stable_dt(); }
-  bool implicit() const { return step_.implicit(); }
+  /// The step and its rule: dt(), stable_dt(), implicit() (step_control.hpp).
+  const StepControl& step() const { return step_; }
   double omega_max() const { return omega_max_; }
   PetscInt dt_reductions() const { return lts_active_ ? lts_.contact_refinements() : step_.reductions(); }
   /// -wave_start harmonic: u, v at t = 0 the steady response to the source at its frequency, with the
   /// interface linearized at its initial state (harmonic_start.cpp). After SetInterface. Collective.
   PetscErrorCode StartHarmonic();
-  /// Local time stepping: whether it runs, its levels, and why not when asked for but off.
-  bool lts_active() const { return lts_active_; }
-  const LtsStepper& lts() const { return lts_; }
+  /// Local time stepping: its levels when it runs (null when not), and why not when asked for but off.
+  const LtsStepper* lts() const { return lts_active_ ? &lts_ : nullptr; }
   const std::string& lts_note() const { return lts_note_; }
-  /// Prints the levels (steps, cells, dofs, the contact's) to stdout of rank 0.
-  PetscErrorCode ViewLts() const;
-  PetscInt dofs() const { return global_dofs_; }
-  const fe::LagrangeSpace& space() const { return space_; }
+  /// The elastic operator the integrators step with: K, M, A = −M⁻¹K (wave_operator.hpp).
+  const WaveOperator& op() const { return op_; }
+  const fe::LagrangeSpace& space() const { return op_.space(); }
   /// The material damping's energy per dof kept from now on (the damping heat); kept: false when
   /// there is no damping term or it is accounted elsewhere (local time stepping) ...
   PetscErrorCode KeepDampingEnergy(bool* kept);
@@ -157,9 +155,6 @@ class WaveSolver {
   /// memory, valid until RestoreFields; writes through them change the state).
   PetscErrorCode GetFields(Vec* u, Vec* v) const;
   PetscErrorCode RestoreFields(Vec* u, Vec* v) const;
-  /// The stepping operator A = −M⁻¹K (one product per force evaluation, by -wave_kernel).
-  Mat stepping_operator() const { return A_; }
-  Vec lumped_mass() const { return M_; }
   /// The state between steps (u, v keyed by dof origin; time, steps, step
   /// control, energy accounts) into a checkpoint, and back (wave_solver_state.cpp).
   /// Restore after Setup and SetInterface; the interface restores itself.
@@ -181,8 +176,6 @@ class WaveSolver {
   PetscErrorCode CreateTS(MPI_Comm comm);
   PetscErrorCode SetupStepControl(MPI_Comm comm);
   PetscErrorCode CheckFinite(double t, double h) const;
-  /// a = A u by the -wave_kernel of the options (the steps and the energies).
-  PetscErrorCode ApplyStepping(Vec u, Vec a) const;
   /// a = M⁻¹(−K u − C v + f(t)) with constraints; kick_dt > 0: trapezoidal dashpot over a kick.
   PetscErrorCode Acceleration(double t, Vec u, Vec v, Vec a, double kick_dt);
   /// After a step: the contact's stability check; a changed step keeps the energy budget continuous.
@@ -212,17 +205,13 @@ class WaveSolver {
   PetscErrorCode IntegratorTerm(double dt, double* term) const;
 
   DM dm_ = nullptr;
-  fe::LagrangeSpace space_;
+  WaveOperator op_;
   ElasticMaterial material_;
   Excitation excitation_;
   WaveOptions options_;
   WaveBoundary boundary_;
   std::vector<std::unique_ptr<BoundaryTerm>> terms_;  ///< in the order they act
   StepControl step_;
-  Mat A_ = nullptr;  ///< −M⁻¹K: the explicit step needs no separate mass scaling
-  Mat K_ = nullptr;  ///< the stiffness itself, kept for alpha2's Jacobian only
-  BlockKernel kernel_;  ///< A_ by 2×2 blocks (-wave_kernel blocked, explicit types)
-  Vec M_ = nullptr, Minv_ = nullptr;
   Vec X_ = nullptr, force_ = nullptr;
   Vec u_ = nullptr, v_ = nullptr;  ///< u and v: vectors on X_'s memory (GetFields)
   Vec u_view_ = nullptr, v_view_ = nullptr;  ///< alpha2: the TS's solution and velocity, views into X_
@@ -236,7 +225,7 @@ class WaveSolver {
   Vec body_f_ = nullptr, body_u_ = nullptr, body_a_ = nullptr;  ///< last force (the kick's), u after the last step, work
   Vec body_f_end_ = nullptr;  ///< the force at the last step's end (types other than velocity Verlet)
   double body_work_ = 0.0;  ///< this rank's share of the body force's work so far
-  PetscInt steps_ = 0, global_dofs_ = 0;
+  PetscInt steps_ = 0;
   BoundaryEnergy accounted_;         ///< this rank's radiated energy and source work so far
   double integrator_offset_ = 0.0;   ///< integrator-term jumps of earlier step changes (global)
   bool reaction_from_kick_ = false;  ///< the constraints' support forces are the last kick's

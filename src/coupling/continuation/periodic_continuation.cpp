@@ -37,7 +37,7 @@ PetscErrorCode PeriodicContinuation::Setup(const ContinuationScene& scene, const
   const double bytes = resume ? resume->Scalar("periodic/csv_bytes") : -1.0;
   PetscCall(detector_.Resume(comm, scene.periodic, dir + "/periodic.csv",
                              std::isnan(bytes) ? -1 : static_cast<long long>(bytes)));
-  detector_.Attach(waves->solver().lumped_mass());
+  detector_.Attach(waves->solver().op().mass());
   PetscFunctionReturn(0);
 }
 
@@ -90,7 +90,7 @@ PetscErrorCode PeriodicContinuation::Outlook(double t, double stretch_end) {
   if (to_go < left) {
     const wave::WaveSolver& solver = waves_->solver();
     const double watch = to_go + detector_.window() + 1.0;  // then a window recorded, and compared once more
-    const double resolved = watch * period_ / solver.dt() + TailSteps(stretch_end, outlook_.watched() + watch);
+    const double resolved = watch * period_ / solver.step().dt() + TailSteps(stretch_end, outlook_.watched() + watch);
     std::snprintf(note, sizeof(note), "periodic: change %.2g per period (tolerance %.2g), ~%.0f periods to go", change,
                   tol, to_go);
     observers_->progress().SetOutlook(resolved, solver.steps(), note);
@@ -117,7 +117,7 @@ PetscErrorCode PeriodicContinuation::Outlook(double t, double stretch_end) {
 
 double PeriodicContinuation::TailSteps(double stretch_end, double watched) const {
   const wave::SourceTimeFunction& signal = *scene_.signal;
-  const double dt = waves_->solver().dt();
+  const double dt = waves_->solver().step().dt();
   double steps = std::max(0.0, scene_.waves_expected_end - stretch_end) / dt;
   for (const wave::SourceTimeFunction::Step& step : signal.schedule) {  // later stretches: watched as long, continued
     double start, end;

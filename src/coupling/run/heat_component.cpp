@@ -37,8 +37,7 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
                "-heat_crack_power needs a crack (-crack_center or crack curves in -mesh_file)");
     const std::vector<double> power(ncracks, scene.run.heat_crack_power);
     PetscCall(DMCreateGlobalVector(specimen.heat, &crack_load_));
-    if (scene.run.dimension == 3) PetscCall(heat::LabelledCrackPowerLoad(solver_.space(), power, crack_load_));
-    else PetscCall(heat::CrackPowerLoad(solver_.space(), specimen.heat_cracks, power, crack_load_));
+    PetscCall(heat::CrackPowerLoad(solver_.space(), power, crack_load_));
     PetscCall(solver_.SetSourceLoad(crack_load_));
   } else if (waves && waves->crack()) {
     auto friction = std::make_unique<FrictionHeatSource>();
@@ -49,8 +48,8 @@ PetscErrorCode HeatComponent::Setup(const mesh::Specimen& specimen, const Scene&
   if (waves && scene.run.thermoelastic != ThermoelasticChoice::Off) {
     PetscCall(SetupThermoelastic(scene, waves));
     // two_way: the thermal stress's stiffness may have shortened the wave step set up before.
-    summary->derived["wave_dt"] = waves->solver().dt();
-    summary->derived["wave_stable_dt"] = waves->solver().stable_dt();
+    summary->derived["wave_dt"] = waves->solver().step().dt();
+    summary->derived["wave_stable_dt"] = waves->solver().step().stable_dt();
   }
   if (waves && scene.material.damping_heat) {
     Mat D;

@@ -79,11 +79,10 @@ PetscErrorCode Simulation::Run(const std::string& dir, io::RunSummary* summary, 
                           heat_ ? heat_->crack_probe_xy() : std::vector<double>{}, summary, control.restart));
   if (heat_) PetscCall(recorder.OpenHeatViews(heat_->solver(), camera_.get(), dir, control.restart != nullptr));
   if (waves_) PetscCall(recorder.MeterSource(scene_->excitation.signal, scene_->periodic.window, control.restart));
-  recorder_ = &recorder;
   RunObservers observers(recorder, waves_.get(), heat_.get(), scene_->run.probe_every);
-  observers.OnBetweenSteps([this](bool* stop) {
+  observers.OnBetweenSteps([this, &recorder](bool* stop) {
     PetscFunctionBeginUser;
-    PetscCall(CheckpointIfDue(*recorder_, false));
+    PetscCall(CheckpointIfDue(recorder, false));
     *stop = interrupted_by_ != 0;
     PetscFunctionReturn(0);
   });
@@ -127,7 +126,7 @@ PetscErrorCode Simulation::RunPhases(RunObservers& observers, io::RunSummary* su
         PetscCall(CoupledInterval(observers, &phase));
         break;
       case RunPhase::kContinued:
-        PetscCall(Continued(&phase));
+        PetscCall(Continued(observers, &phase));
         break;
       case RunPhase::kStopWaves:
         PetscCall(EndWaves(observers, summary, &phase));
@@ -158,14 +157,14 @@ PetscErrorCode Simulation::StartWaves(RunObservers& observers) {
   PetscCall(PetscPrintf(comm,
                         "Waves: %" PetscInt_FMT " dofs (degree %" PetscInt_FMT "), dt = %.4g s (limit %.4g s, "
                         "omega_max %.4g rad/s), about %.0f steps at this step to t = %.4g s%s\n",
-                        solver.dofs(), scene_->wave.degree, solver.dt(), solver.stable_dt(), solver.omega_max(),
-                        std::ceil(expected_end / solver.dt()), expected_end,
+                        solver.op().dofs(), scene_->wave.degree, solver.step().dt(), solver.step().stable_dt(), solver.omega_max(),
+                        std::ceil(expected_end / solver.step().dt()), expected_end,
                         expected_end < final_time ? ", where they should be quiet (they stop once they are)" : ""));
   if (heat_)
     PetscCall(PetscPrintf(comm, "Heat: %" PetscInt_FMT " dofs, one step every %" PetscInt_FMT " wave steps (%.4g s)\n",
-                          heat_->solver().dofs(), per_heat_step, per_heat_step * solver.dt()));
+                          heat_->solver().dofs(), per_heat_step, per_heat_step * solver.step().dt()));
   solver.on_step = [&observers](const wave::WaveSolver& w) { return observers.WaveStep(w); };
-  observers.progress().Start(comm, "wave", 0.0, expected_end, solver.dt(), false);
+  observers.progress().Start(comm, "wave", 0.0, expected_end, solver.step().dt(), false);
   waves_began_ = MPI_Wtime();
   PetscCall(PetscLogStagePush(wave_stage_));
   PetscCall(waves_->Energy(&row_));
@@ -187,19 +186,19 @@ PetscErrorCode Simulation::CoupledInterval(RunObservers& observers, RunPhase* ne
     *next = RunPhase::kContinued;
     PetscFunctionReturn(0);
   }
-  PetscCall(AfterCoupledInterval(next));
+  PetscCall(AfterCoupledInterval(observers, next));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::AfterCoupledInterval(RunPhase* next) {
+PetscErrorCode Simulation::AfterCoupledInterval(RunObservers& observers, RunPhase* next) {
   PetscFunctionBeginUser;
   PetscCall(WavesQuiet(row_, &quiet_));
-  PetscCall(CheckpointIfDue(*recorder_, quiet_));
+  PetscCall(CheckpointIfDue(observers.recorder(), quiet_));
   *next = RunPhase::kCoupled;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::Continued(RunPhase* next) {
+PetscErrorCode Simulation::Continued(RunObservers& observers, RunPhase* next) {
   PetscFunctionBeginUser;
   const bool restarted = continuation_restarted_;  // restarted inside its ladder: no interval ended it
   continuation_restarted_ = false;
@@ -213,10 +212,10 @@ PetscErrorCode Simulation::Continued(RunPhase* next) {
   if (resumed) {  // the waves jumped ahead: their energies now, the progress line on from here
     wave::WaveSolver& solver = waves_->solver();
     PetscCall(waves_->Energy(&row_));
-    recorder_->progress().Start(PetscObjectComm((PetscObject)solver.space().dm()), "wave", solver.time(),
-                                scene_->waves_expected_end(), solver.dt(), false);
+    observers.progress().Start(PetscObjectComm((PetscObject)solver.space().dm()), "wave", solver.time(),
+                                scene_->waves_expected_end(), solver.step().dt(), false);
   }
-  PetscCall(AfterCoupledInterval(next));
+  PetscCall(AfterCoupledInterval(observers, next));
   PetscFunctionReturn(0);
 }
 
@@ -232,7 +231,7 @@ PetscErrorCode Simulation::EndWaves(RunObservers& observers, io::RunSummary* sum
 }
 
 PetscInt Simulation::WaveStepsPerHeatStep(double heat_dt) const {
-  return std::max<PetscInt>(1, std::lround(heat_dt / waves_->solver().dt()));
+  return std::max<PetscInt>(1, std::lround(heat_dt / waves_->solver().step().dt()));
 }
 
 PetscErrorCode Simulation::Interval(RunObservers& observers, double heat_dt, io::EnergyRow* row) {

@@ -15,7 +15,7 @@ PetscErrorCode Simulation::CanCheckpoint(bool* can) const {
   if (!waves_) PetscFunctionReturn(0);  // the heat alone is not checkpointed
   MPI_Comm comm = PetscObjectComm((PetscObject)waves_->solver().space().dm());
   const char* why = nullptr;
-  if (waves_->solver().implicit()) why = "the implicit wave TS (alpha2)";
+  if (waves_->solver().step().implicit()) why = "the implicit wave TS (alpha2)";
   if (!why) *can = true;
   else if (scene_->run.checkpoint_every_s > 0.0 || control_.restart)
     PetscCall(PetscPrintf(comm, "vibrotherm: warning: no checkpoints in this run: %s is not checkpointed; a signal stops "

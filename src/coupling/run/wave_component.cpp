@@ -84,7 +84,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
   summary->dissipated_energy_by_crack.assign(specimen.cracks.size(), 0.0);  // a crack without contact cells: 0
   if (!specimen.cracks.empty() && law->has_contact()) {
     crack_ = std::make_unique<interface::CrackInterface>();
-    PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->lumped_mass(), std::move(law), scene.a0));
+    PetscCall(crack_->Setup(solver_->space(), specimen.wave_cracks, solver_->op().mass(), std::move(law), scene.a0));
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
@@ -105,32 +105,32 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     }
   }
   PetscCall(stage.End(&summary->stages["wave_setup"]));
-  PetscCall(solver_->ViewLts());
-  summary->derived["wave_dt"] = solver_->dt();
-  summary->derived["wave_stable_dt"] = solver_->stable_dt();
+  if (solver_->lts()) PetscCall(solver_->lts()->View(comm));
+  summary->derived["wave_dt"] = solver_->step().dt();
+  summary->derived["wave_stable_dt"] = solver_->step().stable_dt();
   const char* rule = scene.wave.contact_step == wave::ContactStepRule::kWorstCase
                          ? "-wave_cfl x the stability limit (bulk, and the contact at a0 + twice the source amplitude), "
                            "rounded down to 4 digits"
                          : "-wave_cfl x the stability limit (bulk, and the contact at its initial approach), rounded down "
                            "to 4 digits; shrunk when the contact stiffens (wave_dt_reductions, wave_dt_final)";
   summary->derived_rules["wave_dt"] = scene.wave.dt > 0 ? "-wave_dt" : rule;
-  if (solver_->lts_active()) {
+  if (solver_->lts()) {
     summary->derived_rules["wave_dt"] =
         "local time stepping: the macro step H, the largest 2^l x -wave_lts_cfl x level l's own stability limit, "
         "rounded down to 4 digits (levels: wave_lts_*)";
-    ReportLevels(solver_->lts(), summary);
+    ReportLevels(*solver_->lts(), summary);
   } else if (scene.wave.lts.on) {
     summary->derived_rules["wave_lts"] = solver_->lts_note();
   }
-  PetscCall(WarnAboutTheSource(specimen.wave, scene, solver_->dt()));
+  PetscCall(WarnAboutTheSource(specimen.wave, scene, solver_->step().dt()));
   // Refused now, not after hours: the step count the run would need (the waves may stop earlier when quiet).
   // A periodic continuation may skip nearly all of them: then the steps taken are counted instead.
-  const double steps = std::ceil(scene.final_time / solver_->dt());
+  const double steps = std::ceil(scene.final_time / solver_->step().dt());
   if (scene.periodic.on) max_steps_ = scene.run.max_steps;
   PetscCheck(scene.periodic.on || steps <= scene.run.max_steps, comm, PETSC_ERR_USER_INPUT,
              "the run needs up to %.3g wave steps (dt = %g s to -final_time %g s), more than -max_steps %.3g: shorten "
              "-final_time, soften the contact law or raise -max_steps",
-             steps, solver_->dt(), scene.final_time, scene.run.max_steps);
+             steps, solver_->step().dt(), scene.final_time, scene.run.max_steps);
   PetscCall(CheckProbePoints(solver_->space(), scene.run.probe_points));
   PetscFunctionReturn(0);
 }
@@ -180,9 +180,9 @@ PetscErrorCode WaveComponent::Stop(io::RunSummary* summary) {
     PetscCall(crack_->MaxFrictionExcess(&summary->max_friction_excess));
   }
   summary->wave_dt_reductions = solver_->dt_reductions();
-  summary->derived["wave_dt_final"] = solver_->dt();
-  if (solver_->lts_active()) ReportLevels(solver_->lts(), summary);
-  summary->dofs_wave = solver_->dofs();
+  summary->derived["wave_dt_final"] = solver_->step().dt();
+  if (solver_->lts()) ReportLevels(*solver_->lts(), summary);
+  summary->dofs_wave = solver_->op().dofs();
   summary->steps_wave = solver_->steps();
   solver_->on_step = nullptr;
   crack_.reset();

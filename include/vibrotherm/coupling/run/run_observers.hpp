@@ -47,6 +47,8 @@ class RunObservers final : public ContinuationObserver {
   PetscErrorCode BetweenSteps(bool* stop) override;
   double NextHeatStop(double t, double end) const override { return recorder_.NextHeatStop(t, end); }
   io::Progress& progress() override { return recorder_.progress(); }
+  /// The recorder they notify (a checkpoint saves its state).
+  Recorder& recorder() { return recorder_; }
   /// Restores the recorder after the components (it replays the field outputs' index).
   PetscErrorCode Restore(const store::Checkpoint& checkpoint);
 

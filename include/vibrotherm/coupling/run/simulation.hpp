@@ -84,9 +84,9 @@ class Simulation {
   /// One coupling interval; then a continuation, the quiet test or the waves' end decide what is next.
   PetscErrorCode CoupledInterval(RunObservers& observers, RunPhase* next);
   /// The quiet test and a checkpoint when due, after an interval (or the continuation it started).
-  PetscErrorCode AfterCoupledInterval(RunPhase* next);
+  PetscErrorCode AfterCoupledInterval(RunObservers& observers, RunPhase* next);
   /// The periodic continuation's phase: its heat, then the waves resumed.
-  PetscErrorCode Continued(RunPhase* next);
+  PetscErrorCode Continued(RunObservers& observers, RunPhase* next);
   /// The waves are quiet or at the final time: their records closed, their solvers freed.
   PetscErrorCode EndWaves(RunObservers& observers, io::RunSummary* summary, RunPhase* next);
   /// One coupling interval: waves and the heat's substeps of about heat_dt each
@@ -114,7 +114,6 @@ class Simulation {
   bool waves_quiet_at_restart_ = false;  ///< the checkpoint restarted from was written as the waves stopped
   double heat_alone_from_ = -1.0;  ///< where a stop in the heat-alone phase resumes (< 0: no checkpoint there)
   int interrupted_by_ = 0;
-  Recorder* recorder_ = nullptr;  ///< Run's, while it runs
   // The waves' phase (RunPhases).
   io::EnergyRow row_;          ///< the waves' energy row at the last interval's end
   bool quiet_ = false;         ///< the waves went quiet (they stop)
