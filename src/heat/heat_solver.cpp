@@ -11,42 +11,40 @@
 
 namespace vibrotherm::heat {
 
+const std::vector<OptionSpec<HeatMaterial>>& HeatMaterialOptionSpecs() {
+  using M = HeatMaterial;
+  using contact::Range;
+  static const std::vector<OptionSpec<M>> specs = {
+      RealOption("-heat_conductivity", &M::conductivity, Range::positive(), "W/(m K)", "Thermal conductivity k"),
+      RealOption("-heat_capacity", &M::capacity, Range::positive(), "J/(kg K)", "Specific heat c_p"),
+      RealOption("-heat_T0", &M::T0, Range::positive(), "K", "Initial and sink temperature"),
+      RealOption("-material_expansion", &M::expansion, Range::at_least(0.0), "1/K",
+                 "Linear thermal expansion coefficient (-thermoelastic)"),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* m) {
   PetscFunctionBeginUser;
   m->density = density;
-  PetscOptionsBegin(comm, nullptr, "Heat conduction", nullptr);
-  PetscCall(PetscOptionsReal("-heat_conductivity", "Thermal conductivity k [W/(m K)]", nullptr, m->conductivity,
-                             &m->conductivity, nullptr));
-  PetscCall(PetscOptionsReal("-heat_capacity", "Specific heat c_p [J/(kg K)]", nullptr, m->capacity, &m->capacity, nullptr));
-  PetscCall(PetscOptionsReal("-heat_T0", "Initial and sink temperature [K]", nullptr, m->T0, &m->T0, nullptr));
-  PetscCall(PetscOptionsReal("-material_expansion", "Linear thermal expansion coefficient [1/K] (-thermoelastic)",
-                             nullptr, m->expansion, &m->expansion, nullptr));
-  PetscOptionsEnd();
   // Finite here too (CheckScene checks them later): -heat_T0 is the default of -heat_T_ext, checked first otherwise.
-  PetscCheck(m->conductivity > 0 && std::isfinite(m->conductivity), comm, PETSC_ERR_USER_INPUT,
-             "-heat_conductivity must be > 0 and finite, got %g", m->conductivity);
-  PetscCheck(m->capacity > 0 && std::isfinite(m->capacity), comm, PETSC_ERR_USER_INPUT,
-             "-heat_capacity must be > 0 and finite, got %g", m->capacity);
-  PetscCheck(m->T0 > 0 && std::isfinite(m->T0), comm, PETSC_ERR_USER_INPUT, "-heat_T0 must be > 0 K and finite, got %g",
-             m->T0);
-  PetscCheck(m->expansion >= 0 && std::isfinite(m->expansion), comm, PETSC_ERR_USER_INPUT,
-             "-material_expansion must be >= 0 and finite, got %g", m->expansion);
+  PetscCall(ReadOptionSpecs(comm, "Heat conduction", HeatMaterialOptionSpecs(), m));
   PetscFunctionReturn(0);
+}
+
+const std::vector<OptionSpec<HeatOptions>>& HeatDiscretisationOptionSpecs() {
+  using O = HeatOptions;
+  static const std::vector<OptionSpec<O>> specs = {
+      IntOption("-heat_degree", &O::degree, contact::Range::between(1, 2), "Lagrange degree of the temperature"),
+      FlagOption("-heat_lumped_mass", &O::lumped, "Row-sum lumped heat capacity matrix (else consistent)"),
+  };
+  return specs;
 }
 
 PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o) {
   PetscFunctionBeginUser;
   PetscCall(ReadHeatMaterial(comm, density, &o->material));
-  PetscBool lumped = o->lumped ? PETSC_TRUE : PETSC_FALSE;
-  PetscOptionsBegin(comm, nullptr, "Heat discretisation", nullptr);
-  PetscCall(PetscOptionsInt("-heat_degree", "Lagrange degree of the temperature (1 or 2)", nullptr, o->degree,
-                            &o->degree, nullptr));
-  PetscCall(PetscOptionsBool("-heat_lumped_mass", "Row-sum lumped heat capacity matrix (else consistent)", nullptr,
-                             lumped, &lumped, nullptr));
-  PetscOptionsEnd();
-  o->lumped = lumped;
-  PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT,
-             "-heat_degree must be 1 or 2, got %" PetscInt_FMT, o->degree);
+  PetscCall(ReadOptionSpecs(comm, "Heat discretisation", HeatDiscretisationOptionSpecs(), o));
   PetscCall(ReadHeatBoundaryOptions(comm, o->material.T0, &o->boundary));
   PetscFunctionReturn(0);
 }

@@ -12,64 +12,45 @@
 
 namespace vibrotherm::wave {
 
+const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs() {
+  using O = WaveOptions;
+  using L = LtsOptions;
+  using contact::Range;
+  static const std::vector<OptionSpec<O>> specs = {
+      IntOption("-wave_degree", &O::degree, Range::between(1, 2), "Lagrange degree of the displacement"),
+      RealOption("-wave_cfl", &O::cfl, Range{0.0, 1.0, true, false}, "",
+                 "Time step as a fraction of the explicit stability limit"),
+      RealOption("-wave_dt", &O::dt, Range::at_least(0.0), "s", "Time step (0: cfl x stability limit)"),
+      ChoiceOption("-wave_contact_step", &O::contact_step, {"current", "worst_case"},
+                   "Contact stiffness in the step: current (the contact as it is, shrunk when it stiffens) or "
+                   "worst_case (every cell pressed twice the source amplitude)"),
+      ChoiceOption("-wave_kernel", &O::kernel, {"petsc", "blocked"},
+                   "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or blocked (2x2-block "
+                   "loop, same result to rounding)"),
+      NestedOption(&O::lts, ChoiceOption("-wave_lts", &L::on, {"off", "on"},
+                                         "Clustered local time stepping: cells step at rates 2^-l of the macro step by "
+                                         "their own stability limit (on) or all at the smallest cell's step (off)")),
+      ChoiceOption("-wave_start", &O::harmonic_start, {"rest", "harmonic"},
+                   "Initial state: rest (the source switches on), or harmonic (the steady response of the linearized "
+                   "waves to the running source: a resonant specimen's build-up skipped)"),
+      RealOption("-wave_harmonic_memory_limit", &O::harmonic_memory_limit_gb, Range::at_least(0.0), "GB",
+                 "Memory the harmonic start's MUMPS factorisation may take (0: 0.9 x available)"),
+      ChoiceOption("-wave_harmonic_solver", &O::harmonic_solver, {"auto", "direct", "krylov"},
+                   "The harmonic start's linear solve: auto (MUMPS if its factor fits the memory limit, else GMRES), "
+                   "direct (MUMPS) or krylov (GMRES, multigrid on each part)"),
+      NestedOption(&O::lts, IntOption("-wave_lts_max_levels", &L::max_levels, Range::between(1, 12),
+                                      "Most levels of local time stepping (rate 2 each)")),
+      NestedOption(&O::lts, RealOption("-wave_lts_cfl", &L::cfl, Range{0.0, 1.0, true, false}, "",
+                                       "Each LTS level's step as a fraction of its own stability limit")),
+      NestedOption(&O::lts, RealOption("-wave_lts_wiggle", &L::wiggle, Range{0.5, 1.0, true, false}, "",
+                                       "LTS cluster boundaries: the finest step times this factor")),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "Elastic waves", nullptr);
-  PetscCall(PetscOptionsInt("-wave_degree", "Lagrange degree of the displacement (1 or 2)", nullptr, o->degree,
-                            &o->degree, nullptr));
-  PetscCall(PetscOptionsReal("-wave_cfl", "Time step as a fraction of the explicit stability limit", nullptr, o->cfl,
-                             &o->cfl, nullptr));
-  PetscCall(PetscOptionsReal("-wave_dt", "Time step [s] (default: cfl x stability limit)", nullptr, o->dt, &o->dt,
-                             nullptr));
-  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_contact_step",
-                              "Contact stiffness in the step: current (the contact as it is, shrunk when it stiffens) "
-                              "or worst_case (every cell pressed twice the source amplitude)",
-                              {"current", "worst_case"}, &o->contact_step));
-  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_kernel",
-                              "Product with the stiffness in the explicit steps and energies: petsc (MatMult) or "
-                              "blocked (2x2-block loop, same result to rounding)",
-                              {"petsc", "blocked"}, &o->kernel));
-  enum class Switch { kOff, kOn };
-  Switch lts = o->lts.on ? Switch::kOn : Switch::kOff;
-  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_lts",
-                              "Clustered local time stepping: cells step at rates 2^-l of the macro step by their own "
-                              "stability limit (on) or all at the smallest cell's step (off)",
-                              {"off", "on"}, &lts));
-  o->lts.on = lts == Switch::kOn;
-  enum class Start { kRest, kHarmonic };
-  Start start = o->harmonic_start ? Start::kHarmonic : Start::kRest;
-  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_start",
-                              "Initial state: rest (the source switches on), or harmonic (the steady response of the "
-                              "linearized waves to the running source: a resonant specimen's build-up skipped)",
-                              {"rest", "harmonic"}, &start));
-  o->harmonic_start = start == Start::kHarmonic;
-  PetscCall(PetscOptionsReal("-wave_harmonic_memory_limit",
-                             "Memory the harmonic start's MUMPS factorisation may take [GB] (0: 0.9 x available)",
-                             nullptr, o->harmonic_memory_limit_gb, &o->harmonic_memory_limit_gb, nullptr));
-  PetscCall(OptionsChoiceEnum(PetscOptionsObject, "-wave_harmonic_solver",
-                              "The harmonic start's linear solve: auto (MUMPS if its factor fits the memory limit, "
-                              "else GMRES), direct (MUMPS) or krylov (GMRES, multigrid on each part)",
-                              {"auto", "direct", "krylov"}, &o->harmonic_solver));
-  PetscCall(PetscOptionsInt("-wave_lts_max_levels", "Most levels of local time stepping (rate 2 each)", nullptr,
-                            o->lts.max_levels, &o->lts.max_levels, nullptr));
-  PetscCall(PetscOptionsReal("-wave_lts_cfl", "Each LTS level's step as a fraction of its own stability limit", nullptr,
-                             o->lts.cfl, &o->lts.cfl, nullptr));
-  PetscCall(PetscOptionsReal("-wave_lts_wiggle", "LTS cluster boundaries: the finest step times this factor in (0.5, 1]",
-                             nullptr, o->lts.wiggle, &o->lts.wiggle, nullptr));
-  PetscOptionsEnd();
-  PetscCheck(o->harmonic_memory_limit_gb >= 0.0 && std::isfinite(o->harmonic_memory_limit_gb), comm,
-             PETSC_ERR_USER_INPUT, "-wave_harmonic_memory_limit must be >= 0 GB and finite, got %g",
-             o->harmonic_memory_limit_gb);
-  PetscCheck(o->lts.max_levels >= 1 && o->lts.max_levels <= 12, comm, PETSC_ERR_USER_INPUT,
-             "-wave_lts_max_levels must be in [1, 12], got %" PetscInt_FMT, o->lts.max_levels);
-  PetscCheck(o->lts.cfl > 0.0 && o->lts.cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_lts_cfl must be in (0, 1], got %g",
-             o->lts.cfl);
-  PetscCheck(o->lts.wiggle > 0.5 && o->lts.wiggle <= 1.0, comm, PETSC_ERR_USER_INPUT,
-             "-wave_lts_wiggle must be in (0.5, 1], got %g", o->lts.wiggle);
-  PetscCheck(o->degree == 1 || o->degree == 2, comm, PETSC_ERR_USER_INPUT, "-wave_degree must be 1 or 2, got %" PetscInt_FMT,
-             o->degree);
-  PetscCheck(o->cfl > 0.0 && o->cfl <= 1.0, comm, PETSC_ERR_USER_INPUT, "-wave_cfl must be in (0, 1], got %g", o->cfl);
-  PetscCheck(o->dt >= 0.0, comm, PETSC_ERR_USER_INPUT, "-wave_dt must be >= 0 (0: -wave_cfl x the stability limit), got %g", o->dt);
+  PetscCall(ReadOptionSpecs(comm, "Elastic waves", WaveOptionSpecs(), o));
   PetscFunctionReturn(0);
 }
 

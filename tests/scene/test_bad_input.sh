@@ -54,7 +54,7 @@ expect_error "lies along an outer edge" $box -crack_center 0.025,0.0 -crack_leng
 
 # Wave-stage input is checked before anything is written too.
 expect_error "-wave_dt 1e-06 s exceeds the stability limit" $box $crack -wave_dt 1e-6
-expect_error "-wave_degree must be 1 or 2" $box $crack -wave_degree 3
+expect_error "-wave_degree must be in [1, 2]" $box $crack -wave_degree 3
 expect_error "-source_type: unknown value 'pulse'" $box $crack -source_type pulse
 expect_error "-probe_points: point 2 (0.2, 0.05) lies outside the specimen" $box $crack -probe_points 0.01,0.01,0.2,0.05
 expect_error "-material_nu must be in (-1, 0.5)" $box $crack -material_nu 0.5
@@ -115,7 +115,7 @@ expect_error "-mesh_file: needs a value" -mesh_file ""
 expect_error "-dm_refine must be >= 0, got -1" $box $crack -dm_refine -1
 expect_error "-heat_h must be >= 0 and finite, got inf" $box $crack -heat_h inf
 expect_error "-heat_T_ext must be > 0 K and finite, got 0" $box $crack -heat_T_ext 0
-expect_error "-heat_T0 must be > 0 K and finite, got inf" $box $crack -heat_T0 inf
+expect_error "-heat_T0 must be finite, got inf" $box $crack -heat_T0 inf
 expect_error "-modes_target_frequency must be > 0 Hz" $box $crack -modes -modes_target_frequency inf
 expect_error "-crack_probe_crack must be >= 1" $box $crack -crack_probe 0.5 -crack_probe_crack 0
 expect_error "-probe_points needs x,y pairs, got 3 numbers" $box $crack -probe_points 0.01,0.01,0.02

@@ -31,7 +31,7 @@ struct Range {
   std::string rule() const;
 };
 
-enum class ParameterType { Real, Integer, Text, Choice };
+enum class ParameterType { Real, Integer, Text, Choice, Flag };  ///< Flag: on/off (the simulator's options)
 
 struct ParameterSpec {
   std::string name;           ///< option with its dash: "-contact_power_C"

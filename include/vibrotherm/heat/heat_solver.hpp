@@ -33,6 +33,7 @@
 #include "vibrotherm/heat/rung_solvers.hpp"
 #include "vibrotherm/store/checkpoint.hpp"
 #include "vibrotherm/mesh/plex/point_origin.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::heat {
 
@@ -44,6 +45,8 @@ struct HeatMaterial {
   double expansion = 23e-6;     ///< -material_expansion: linear thermal expansion α_L [1/K] (thermoelastic heating)
   double diffusivity() const { return conductivity / (density * capacity); }
 };
+/// -heat_conductivity, -heat_capacity, -heat_T0, -material_expansion, declared (option_spec.hpp).
+const std::vector<OptionSpec<HeatMaterial>>& HeatMaterialOptionSpecs();
 PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* material);
 
 /// Everything the heat solver is built from (read once with the scene).
@@ -56,6 +59,8 @@ struct HeatOptions {
   /// their linear solver (ConfigurePc).
   double coupled_step = 0.0;
 };
+/// -heat_degree, -heat_lumped_mass, declared (option_spec.hpp).
+const std::vector<OptionSpec<HeatOptions>>& HeatDiscretisationOptionSpecs();
 /// -heat_* (material, degree, mass, edges). Collective.
 PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options);
 

@@ -4,6 +4,9 @@
 #include <petscsys.h>
 
 #include <cmath>
+#include <vector>
+
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::wave {
 
@@ -25,6 +28,8 @@ struct ElasticMaterial {
   double cs() const { return std::sqrt(shear_modulus() / density); }
 };
 
+/// -material_density, -material_E, -material_nu, declared (option_spec.hpp).
+const std::vector<OptionSpec<ElasticMaterial>>& ElasticMaterialOptionSpecs();
 /// Reads -material_density, -material_E, -material_nu (validated, named errors).
 PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* material);
 /// Reads -material_loss_factor and -material_damping_frequency (default: source_frequency) into

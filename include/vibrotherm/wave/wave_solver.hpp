@@ -30,6 +30,7 @@
 #include "vibrotherm/mesh/plex/point_origin.hpp"
 #include "vibrotherm/wave/body_force.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 #include "vibrotherm/wave/block_kernel.hpp"
 #include "vibrotherm/wave/boundary_terms.hpp"
 #include "vibrotherm/wave/excitation.hpp"
@@ -64,6 +65,8 @@ struct WaveOptions {
   /// so that source periods end on wave steps (set by the scene, not an option).
   double step_quantum = 0.0;
 };
+/// The -wave_* options, declared (option_spec.hpp).
+const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs();
 PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
 
 /// Forces the wave solver does not own (the crack interface): evaluated as a

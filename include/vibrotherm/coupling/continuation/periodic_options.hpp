@@ -3,6 +3,10 @@
 
 #include <petscsys.h>
 
+#include <vector>
+
+#include "vibrotherm/options/petsc/option_spec.hpp"
+
 namespace vibrotherm::coupling {
 
 /// -periodic auto|on|off: auto continues when heat runs (the continuation feeds the heat;
@@ -37,6 +41,8 @@ struct PeriodicOptions {
   bool mean = false;
 };
 
+/// The -periodic* options, declared (option_spec.hpp): name, help, unit, range, field.
+const std::vector<OptionSpec<PeriodicOptions>>& PeriodicOptionSpecs();
 /// Reads -periodic*, checked, named errors. Collective.
 PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* options);
 

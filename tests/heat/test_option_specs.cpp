@@ -1,0 +1,116 @@
+// Requirement (issue 42 item 2): an option declared once (options/petsc/option_spec.hpp)
+// gives its reading, its range check and its one-line error. For every declared list
+// (-periodic*, -heat_* material and discretisation, -wave_*, -material_*):
+//  - the names are unique across the lists and each is read (set alone, it changes its field);
+//  - with nothing given, every default lies in its range (the read succeeds);
+//  - a value just outside a numeric range is refused with PETSC_ERR_USER_INPUT and a message
+//    "<name> must be ..., got <value>"; an unknown choice names the option and the values.
+#include <petscsys.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+
+#include "vibrotherm/coupling/continuation/periodic_options.hpp"
+#include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/wave/wave_solver.hpp"
+#include <gtest/gtest.h>
+
+namespace vibrotherm::testing {
+namespace {
+
+PetscErrorCode KeepFirstMessage(MPI_Comm, int, const char*, const char*, PetscErrorCode n, PetscErrorType p,
+                                const char* message, void* ctx) {
+  auto* kept = static_cast<std::string*>(ctx);
+  if (p == PETSC_ERROR_INITIAL && kept->empty()) *kept = message;
+  return n;
+}
+
+/// Reads `specs` into a default Target with `given` as the only options; *message: the error's, if any.
+template <class Target>
+PetscErrorCode ReadWith(const std::vector<OptionSpec<Target>>& specs, const std::string& given, Target* target,
+                        std::string* message) {
+  PetscOptions own;
+  PetscCall(PetscOptionsCreate(&own));
+  PetscCall(PetscOptionsInsertString(own, given.c_str()));
+  PetscCall(PetscOptionsPush(own));
+  PetscCall(PetscPushErrorHandler(KeepFirstMessage, message));
+  const PetscErrorCode status = ReadOptionSpecs(PETSC_COMM_WORLD, "test", specs, target);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsPop());
+  PetscCall(PetscOptionsDestroy(&own));
+  return status;
+}
+
+/// A value just outside spec's range (lo side if bounded below, else hi side); empty if unbounded.
+std::string Outside(const contact::ParameterSpec& s) {
+  const bool integer = s.type == contact::ParameterType::Integer;
+  const double step = integer ? 1.0 : 1e-3 * std::max(1.0, std::abs(s.range.lo));
+  double value;
+  if (std::isfinite(s.range.lo)) value = s.range.lo_open ? s.range.lo : s.range.lo - step;
+  else if (std::isfinite(s.range.hi)) value = s.range.hi_open ? s.range.hi : s.range.hi + step;
+  else return "";
+  char text[64];
+  if (integer) std::snprintf(text, sizeof(text), "%lld", static_cast<long long>(value));
+  else std::snprintf(text, sizeof(text), "%.17g", value);
+  return text;
+}
+
+template <class Target>
+void CheckList(const std::vector<OptionSpec<Target>>& specs, std::set<std::string>* seen) {
+  std::string message;
+  Target read;
+  ASSERT_EQ(ReadWith(specs, "", &read, &message), 0) << message;  // every default in its range
+  for (const OptionSpec<Target>& o : specs) {
+    const contact::ParameterSpec& s = o.spec;
+    EXPECT_TRUE(seen->insert(s.name).second) << s.name << " declared twice";
+    const std::string bad = s.type == contact::ParameterType::Choice ? "no_such_value" : Outside(s);
+    if (bad.empty()) continue;
+    message.clear();
+    Target target;
+    EXPECT_EQ(ReadWith(specs, s.name + " " + bad, &target, &message), PETSC_ERR_USER_INPUT) << s.name << " " << bad;
+    EXPECT_EQ(message.rfind(s.name, 0), 0u) << message;  // the message starts with the option's name
+    if (s.type == contact::ParameterType::Choice)
+      EXPECT_NE(message.find("unknown value 'no_such_value'"), std::string::npos) << message;
+    else
+      EXPECT_NE(message.find(" must be "), std::string::npos) << message;
+  }
+}
+
+TEST(OptionSpecs, DeclaredOnceCheckedAndRefusedNamingTheOption) {
+  std::set<std::string> seen;
+  CheckList(coupling::PeriodicOptionSpecs(), &seen);
+  CheckList(heat::HeatMaterialOptionSpecs(), &seen);
+  CheckList(heat::HeatDiscretisationOptionSpecs(), &seen);
+  CheckList(wave::WaveOptionSpecs(), &seen);
+  CheckList(wave::ElasticMaterialOptionSpecs(), &seen);
+  EXPECT_GE(seen.size(), 30u);
+}
+
+TEST(OptionSpecs, EachOptionFillsItsField) {
+  // A value inside the range, different from the default, reaches the field it names.
+  std::string message;
+  coupling::PeriodicOptions periodic;
+  ASSERT_EQ(ReadWith(coupling::PeriodicOptionSpecs(), "-periodic_tol 0.25 -periodic_window 7 -periodic_mode mean "
+                     "-periodic off", &periodic, &message), 0) << message;
+  EXPECT_EQ(periodic.tol, 0.25);
+  EXPECT_EQ(periodic.window, 7);
+  EXPECT_TRUE(periodic.mean);
+  EXPECT_EQ(periodic.choice, coupling::PeriodicChoice::Off);
+  heat::HeatOptions heat;
+  ASSERT_EQ(ReadWith(heat::HeatDiscretisationOptionSpecs(), "-heat_degree 2 -heat_lumped_mass 0", &heat, &message), 0);
+  EXPECT_EQ(heat.degree, 2);
+  EXPECT_FALSE(heat.lumped);
+  wave::WaveOptions wave;
+  ASSERT_EQ(ReadWith(wave::WaveOptionSpecs(), "-wave_lts on -wave_lts_cfl 0.5 -wave_start harmonic -wave_degree 1",
+                     &wave, &message), 0) << message;
+  EXPECT_TRUE(wave.lts.on);
+  EXPECT_EQ(wave.lts.cfl, 0.5);
+  EXPECT_TRUE(wave.harmonic_start);
+  EXPECT_EQ(wave.degree, 1);
+}
+
+}  // namespace
+}  // namespace vibrotherm::testing
