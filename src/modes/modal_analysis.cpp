@@ -17,36 +17,30 @@
 
 namespace vibrotherm::modes {
 
+const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs() {
+  using O = ModesOptions;
+  using contact::Range;
+  static const std::vector<OptionSpec<O>> specs = {
+      IntOption("-modes_n", &O::n, Range::at_least(1), "Number of modes"),
+      RealOption("-modes_target_frequency", &O::target_frequency, Range::positive(), "Hz",
+                 "Modes nearest this frequency (a free specimen's rigid motions sit at 0)"),
+      RealOption("-modes_defect_radius", &O::defect_radius, Range::at_least(0.0), "m",
+                 "Distance from the crack counted as the defect"),
+      RealOption("-modes_memory_limit", &O::memory_limit_gb, Range::at_least(0.0), "GB",
+                 "Memory the factorisation may take (0: 0.9 x available)"),
+      FlagOption("-force", &O::force, "Factor even when MUMPS's estimate exceeds the limit"),
+      ChoiceOption("-modes_crack", &O::contact, {"open", "contact"},
+                   "The crack in the modes: open (faces free) or contact (linearised at -crack_a0, as the harmonic "
+                   "start)"),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o) {
   PetscFunctionBeginUser;
   o->target_frequency = default_frequency;
   o->defect_radius = default_radius;
-  PetscOptionsBegin(comm, nullptr, "Natural modes (-modes)", nullptr);
-  PetscCall(PetscOptionsInt("-modes_n", "Number of modes", nullptr, o->n, &o->n, nullptr));
-  PetscCall(PetscOptionsReal("-modes_target_frequency", "Modes nearest this frequency [Hz]", nullptr,
-                             o->target_frequency, &o->target_frequency, nullptr));
-  PetscCall(PetscOptionsReal("-modes_defect_radius", "Distance from the crack counted as the defect [m]", nullptr,
-                             o->defect_radius, &o->defect_radius, nullptr));
-  PetscCall(PetscOptionsReal("-modes_memory_limit", "Memory the factorisation may take [GB] (0: 0.9 x available)",
-                             nullptr, o->memory_limit_gb, &o->memory_limit_gb, nullptr));
-  PetscBool force = o->force ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscOptionsBool("-force", "Factor even when MUMPS's estimate exceeds the limit", nullptr, force, &force,
-                             nullptr));
-  o->force = force;
-  PetscInt crack = o->contact ? 1 : 0;
-  PetscCall(OptionsChoice(PetscOptionsObject, "-modes_crack",
-                          "The crack in the modes: open (faces free) or contact (linearised at -crack_a0, as the "
-                          "harmonic start)", {"open", "contact"}, &crack, nullptr));
-  o->contact = crack == 1;
-  PetscOptionsEnd();
-  PetscCheck(o->n >= 1, comm, PETSC_ERR_USER_INPUT, "-modes_n must be >= 1, got %" PetscInt_FMT, o->n);
-  PetscCheck(o->target_frequency > 0.0 && std::isfinite(o->target_frequency), comm, PETSC_ERR_USER_INPUT,
-             "-modes_target_frequency must be > 0 Hz (a free specimen's rigid motions sit at 0) and finite, got %g",
-             o->target_frequency);
-  PetscCheck(o->defect_radius >= 0.0 && std::isfinite(o->defect_radius), comm, PETSC_ERR_USER_INPUT,
-             "-modes_defect_radius must be >= 0 and finite, got %g", o->defect_radius);
-  PetscCheck(o->memory_limit_gb >= 0.0 && std::isfinite(o->memory_limit_gb), comm, PETSC_ERR_USER_INPUT,
-             "-modes_memory_limit must be >= 0 GB and finite, got %g", o->memory_limit_gb);
+  PetscCall(ReadOptionSpecs(comm, "Natural modes (-modes)", ModesOptionSpecs(), o));
   PetscFunctionReturn(0);
 }
 

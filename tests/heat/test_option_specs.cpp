@@ -1,6 +1,6 @@
 // Requirement (issue 42 item 2): an option declared once (options/petsc/option_spec.hpp)
 // gives its reading, its range check and its one-line error. For every declared list
-// (-periodic*, -heat_* material and discretisation, -wave_*, -material_*):
+// (-periodic*, -heat_* material and discretisation, -wave_*, -material_*, -modes_*):
 //  - the names are unique across the lists and each is read (set alone, it changes its field);
 //  - with nothing given, every default lies in its range (the read succeeds);
 //  - a value just outside a numeric range is refused with PETSC_ERR_USER_INPUT and a message
@@ -15,6 +15,7 @@
 
 #include "vibrotherm/coupling/continuation/periodic_options.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/modes/modal_analysis.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 #include <gtest/gtest.h>
 
@@ -58,10 +59,11 @@ std::string Outside(const contact::ParameterSpec& s) {
   return text;
 }
 
+/// `initial`: the field values before reading (a caller's defaults, such as -modes_target_frequency's).
 template <class Target>
-void CheckList(const std::vector<OptionSpec<Target>>& specs, std::set<std::string>* seen) {
+void CheckList(const std::vector<OptionSpec<Target>>& specs, std::set<std::string>* seen, Target initial = Target{}) {
   std::string message;
-  Target read;
+  Target read = initial;
   ASSERT_EQ(ReadWith(specs, "", &read, &message), 0) << message;  // every default in its range
   for (const OptionSpec<Target>& o : specs) {
     const contact::ParameterSpec& s = o.spec;
@@ -69,7 +71,7 @@ void CheckList(const std::vector<OptionSpec<Target>>& specs, std::set<std::strin
     const std::string bad = s.type == contact::ParameterType::Choice ? "no_such_value" : Outside(s);
     if (bad.empty()) continue;
     message.clear();
-    Target target;
+    Target target = initial;
     EXPECT_EQ(ReadWith(specs, s.name + " " + bad, &target, &message), PETSC_ERR_USER_INPUT) << s.name << " " << bad;
     EXPECT_EQ(message.rfind(s.name, 0), 0u) << message;  // the message starts with the option's name
     if (s.type == contact::ParameterType::Choice)
@@ -86,6 +88,10 @@ TEST(OptionSpecs, DeclaredOnceCheckedAndRefusedNamingTheOption) {
   CheckList(heat::HeatDiscretisationOptionSpecs(), &seen);
   CheckList(wave::WaveOptionSpecs(), &seen);
   CheckList(wave::ElasticMaterialOptionSpecs(), &seen);
+  modes::ModesOptions modes;  // ReadModesOptions's caller gives these two defaults
+  modes.target_frequency = 1e4;
+  modes.defect_radius = 1e-3;
+  CheckList(modes::ModesOptionSpecs(), &seen, modes);
   EXPECT_GE(seen.size(), 30u);
 }
 

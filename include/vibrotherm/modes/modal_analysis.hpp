@@ -31,6 +31,7 @@
 #include "vibrotherm/mesh/crack_surface.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::modes {
 
@@ -42,6 +43,8 @@ struct ModesOptions {
   bool force = false;             ///< -force: factor even above that
   bool contact = false;           ///< -modes_crack contact: the contact linearised at a0 (else open)
 };
+/// The -modes_* options (and -force), declared (option_spec.hpp).
+const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs();
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
 
 struct Mode {

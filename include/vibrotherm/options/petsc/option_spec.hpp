@@ -31,7 +31,7 @@ struct OptionSpec {
 };
 
 /// A one-line user error unless value is finite ("<name> must be finite, got inf") and lies in
-/// spec.range ("<name> <rule>, got <value>").
+/// spec.range ("<name> <rule> <unit>, got <value>": "-modes_target_frequency must be > 0 Hz, got -5").
 PetscErrorCode CheckOptionRange(MPI_Comm comm, const contact::ParameterSpec& spec, double value);
 
 /// A real option [unit] in range.
