@@ -7,8 +7,9 @@
 //   - the reading (PETSc's parsers: what PetscOptionsReal/Int/Bool accept);
 //   - the range check and its one-line error "<name> must be in (0, 1), got 2" (or "must be
 //     finite, got inf");
-//   - -help: "help [unit] (the range, or the values)" with the default;
-//   - the names (OptionSpecNames) for the typo check and the run record.
+//   - -help: "help [unit] (the range, or the values)" with the default.
+// The typo check and the run record still learn the names and values from -help's lines
+// (option_audit.hpp), which ReadOptionSpecs prints like any PETSc options block.
 #pragma once
 
 #include <petscsys.h>
@@ -97,14 +98,6 @@ PetscErrorCode ReadOptionSpecs(MPI_Comm comm, const char* title, const std::vect
   for (const OptionSpec<Target>& o : specs) PetscCall(o.read(PetscOptionsObject, o.spec, target));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
-}
-
-/// The declared names (the registry's part of a module).
-template <class Target>
-std::vector<std::string> OptionSpecNames(const std::vector<OptionSpec<Target>>& specs) {
-  std::vector<std::string> names;
-  for (const OptionSpec<Target>& o : specs) names.push_back(o.spec.name);
-  return names;
 }
 
 }  // namespace vibrotherm
