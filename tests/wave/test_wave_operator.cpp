@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "box_mesh_support.hpp"
@@ -34,26 +35,25 @@ PetscErrorCode RandomLike(Vec like, PetscInt seed, Vec* x) {
   PetscFunctionReturn(0);
 }
 
+/// zᵀ (B y) for a linear map B applied as apply(y, By).
+double DotAfter(Vec y, Vec z, const std::function<void(Vec, Vec)>& apply) {
+  Vec By;
+  VecDuplicate(y, &By);
+  apply(y, By);
+  PetscScalar dot;
+  VecDot(By, z, &dot);
+  VecDestroy(&By);
+  return PetscRealPart(dot);
+}
+
 /// yᵀ M z (M the lumped mass as a vector).
 double MassDot(Vec mass, Vec y, Vec z) {
-  Vec My;
-  VecDuplicate(y, &My);
-  VecPointwiseMult(My, mass, y);
-  PetscScalar dot;
-  VecDot(My, z, &dot);
-  VecDestroy(&My);
-  return PetscRealPart(dot);
+  return DotAfter(y, z, [mass](Vec in, Vec out) { VecPointwiseMult(out, mass, in); });
 }
 
 /// xᵀ K x.
 double Energy(Mat K, Vec x) {
-  Vec Kx;
-  VecDuplicate(x, &Kx);
-  MatMult(K, x, Kx);
-  PetscScalar dot;
-  VecDot(x, Kx, &dot);
-  VecDestroy(&Kx);
-  return PetscRealPart(dot);
+  return DotAfter(x, x, [K](Vec in, Vec out) { MatMult(K, in, out); });
 }
 
 /// max_i Σ_j |K_ij| / M_i (Gershgorin: no eigenvalue of M⁻¹K lies above it), over all ranks.
