@@ -75,6 +75,8 @@ std::string ParameterSpec::describe() const {
   if (!unit.empty()) text += " [" + unit + "]";
   if (type == ParameterType::Real || type == ParameterType::Integer) {
     if (std::isfinite(range.lo) || std::isfinite(range.hi)) text += " (" + range.rule() + ")";
+  } else if (type == ParameterType::RealList) {
+    if (std::isfinite(range.lo) || std::isfinite(range.hi)) text += " (each " + range.rule().substr(8) + ")";  // "must be >= 0" -> "each >= 0"
   } else if (type == ParameterType::Choice) {
     std::string known;
     for (const std::string& c : choices) known += (known.empty() ? "" : "|") + c;

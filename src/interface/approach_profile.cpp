@@ -7,12 +7,11 @@
 #include "vibrotherm/contact/contact_parameters.hpp"
 #include "vibrotherm/contact/csv_rows.hpp"
 #include "vibrotherm/util/errors.hpp"
-#include "vibrotherm/options/petsc/option_choice.hpp"
 
 namespace vibrotherm::interface {
 
 double ApproachProfile::at(double xi) const {
-  double profile = elliptic ? max * std::sqrt(std::max(0.0, 1.0 - (2.0 * xi - 1.0) * (2.0 * xi - 1.0))) : 0.0;
+  double profile = shape == ApproachShape::Elliptic ? max * std::sqrt(std::max(0.0, 1.0 - (2.0 * xi - 1.0) * (2.0 * xi - 1.0))) : 0.0;
   if (!table.empty()) {
     const auto it = std::lower_bound(table.begin(), table.end(), std::make_pair(xi, -1e300));
     if (it == table.begin()) profile = table.front().second;
@@ -26,34 +25,36 @@ double ApproachProfile::at(double xi) const {
   return uniform + profile;
 }
 
+const std::vector<OptionSpec<ApproachProfile>>& ApproachProfileOptionSpecs() {
+  using P = ApproachProfile;
+  using contact::Range;
+  static const std::vector<OptionSpec<P>> specs = {
+      RealOption("-crack_a0", &P::uniform, Range::any(), "m", "Uniform initial approach a0 (> 0: pre-closed)"),
+      ChoiceOption("-crack_a0_profile", &P::shape, {"uniform", "elliptic", "file"},
+                   "Shape of a0 along the crack added to -crack_a0"),
+      RealOption("-crack_a0_max", &P::max, Range::any(), "m", "Elliptic profile: a0 at the crack centre"),
+      TextOption("-crack_a0_file", &P::file, "file profile: CSV with columns xi,a0 (xi in [0,1] along the crack)"),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
   PetscFunctionBeginUser;
-  char file[PETSC_MAX_PATH_LEN] = "";
-  PetscInt kind = 0;  // uniform
-  PetscOptionsBegin(comm, nullptr, "Initial approach of the crack faces", nullptr);
-  PetscCall(PetscOptionsReal("-crack_a0", "Uniform initial approach a0 [m] (> 0: pre-closed)", nullptr, p->uniform,
-                             &p->uniform, nullptr));
-  PetscCall(OptionsChoice(PetscOptionsObject, "-crack_a0_profile", "Shape of a0 along the crack added to -crack_a0",
-                          {"uniform", "elliptic", "file"}, &kind, nullptr));
-  PetscCall(PetscOptionsReal("-crack_a0_max", "Elliptic profile: a0 at the crack centre [m]", nullptr, p->max, &p->max,
-                             nullptr));
-  PetscCall(PetscOptionsString("-crack_a0_file", "file profile: CSV with columns xi,a0 (xi in [0,1] along the crack)",
-                               nullptr, file, file, sizeof(file), nullptr));
-  PetscOptionsEnd();
-  p->elliptic = kind == 1;
-  if (kind == 2) {
-    PetscCheck(file[0], comm, PETSC_ERR_USER_INPUT, "-crack_a0_profile file needs -crack_a0_file FILE");
+  PetscCall(ReadOptionSpecs(comm, "Initial approach of the crack faces", ApproachProfileOptionSpecs(), p));
+  const std::string& file = p->file;
+  if (p->shape == ApproachShape::File) {
+    PetscCheck(!file.empty(), comm, PETSC_ERR_USER_INPUT, "-crack_a0_profile file needs -crack_a0_file FILE");
     VibrothermCallCpp(comm, {
       for (const contact::CsvRow& r : contact::read_csv_rows(file, "-crack_a0_file", {"xi", "a0"})) {
         if (!(r.values[0] >= 0.0 && r.values[0] <= 1.0))
-          throw contact::InputError(std::string("-crack_a0_file ") + file + " line " + std::to_string(r.line) +
+          throw contact::InputError("-crack_a0_file " + file + " line " + std::to_string(r.line) +
                                     ": xi = " + std::to_string(r.values[0]) + " outside [0, 1]");
         if (!p->table.empty() && !(r.values[0] > p->table.back().first))
-          throw contact::InputError(std::string("-crack_a0_file ") + file + " line " + std::to_string(r.line) +
+          throw contact::InputError("-crack_a0_file " + file + " line " + std::to_string(r.line) +
                                     ": xi must increase");
         p->table.emplace_back(r.values[0], r.values[1]);
       }
-      if (p->table.empty()) throw contact::InputError(std::string("-crack_a0_file ") + file + ": no data rows");
+      if (p->table.empty()) throw contact::InputError("-crack_a0_file " + file + ": no data rows");
     });
   }
   PetscFunctionReturn(0);

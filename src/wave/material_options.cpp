@@ -19,28 +19,29 @@ PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* m) {
   PetscFunctionReturn(0);
 }
 
+const std::vector<OptionSpec<ElasticMaterial>>& MaterialDampingOptionSpecs() {
+  using M = ElasticMaterial;
+  using contact::Range;
+  static const std::vector<OptionSpec<M>> specs = {
+      RealOption("-material_loss_factor", &M::loss_factor, Range{0.0, 1.0, false, true}, "",
+                 "Loss factor eta = 1/Q of the solid at -material_damping_frequency (0: no damping); "
+                 "mass-proportional: C = eta 2 pi f_d M"),
+      GivenRealOption("-material_damping_frequency", &M::damping_frequency, Range::positive(), "Hz",
+                      "Frequency the loss factor holds at (default: -source_frequency)"),
+      FlagOption("-material_damping_heat", &M::damping_heat,
+                 "The energy material damping takes heats the specimen where it is taken (a volume heat source; "
+                 "off: only the crack's friction heats)"),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* m) {
   PetscFunctionBeginUser;
   m->damping_frequency = source_frequency;
-  PetscBool frequency_set = PETSC_FALSE;
-  PetscOptionsBegin(comm, nullptr, "Material damping", nullptr);
-  PetscCall(PetscOptionsReal("-material_loss_factor",
-                             "Loss factor eta = 1/Q of the solid at -material_damping_frequency (0: no damping); "
-                             "mass-proportional: C = eta 2 pi f_d M",
-                             nullptr, m->loss_factor, &m->loss_factor, nullptr));
-  PetscCall(PetscOptionsReal("-material_damping_frequency", "Frequency the loss factor holds at [Hz] (default: "
-                             "-source_frequency)", nullptr, m->damping_frequency, &m->damping_frequency, &frequency_set));
-  PetscBool heat = m->damping_heat ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(PetscOptionsBool("-material_damping_heat", "The energy material damping takes heats the specimen where it "
-                             "is taken (a volume heat source; off: only the crack's friction heats)", nullptr, heat,
-                             &heat, nullptr));
-  m->damping_heat = heat;
-  PetscOptionsEnd();
-  PetscCheck(m->loss_factor >= 0.0 && m->loss_factor < 1.0, comm, PETSC_ERR_USER_INPUT,
-             "-material_loss_factor must be in [0, 1), got %g", m->loss_factor);
-  // A value the user gave is always checked; the default (the source's frequency) only when damping is on,
-  // so an unusable -source_frequency is refused under its own name.
-  PetscCheck((!frequency_set && m->loss_factor == 0.0) || (m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency)), comm,
+  PetscCall(ReadOptionSpecs(comm, "Material damping", MaterialDampingOptionSpecs(), m));
+  // The default (the source's frequency) is checked only when damping is on, so an unusable
+  // -source_frequency is refused under its own name.
+  PetscCheck(m->loss_factor == 0.0 || (m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency)), comm,
              PETSC_ERR_USER_INPUT, "-material_damping_frequency must be > 0 and finite, got %g", m->damping_frequency);
   PetscCheck(!m->damping_heat || m->loss_factor > 0.0, comm, PETSC_ERR_USER_INPUT,
              "-material_damping_heat needs material damping (-material_loss_factor > 0)");

@@ -1,6 +1,7 @@
 // Requirement (issue 42 item 2): an option declared once (options/petsc/option_spec.hpp)
 // gives its reading, its range check and its one-line error. For every declared list
-// (-periodic*, -heat_* material and discretisation, -wave_*, -material_*, -modes_*):
+// (-periodic*, -heat_* material and discretisation, -wave_*, -material_* and damping, -modes_*,
+// the run control and recording, -camera*, -crack_a0*):
 //  - the names are unique across the lists and each is read (set alone, it changes its field);
 //  - with nothing given, every default lies in its range (the read succeeds);
 //  - a value just outside a numeric range is refused with PETSC_ERR_USER_INPUT and a message
@@ -14,6 +15,9 @@
 #include <string>
 
 #include "vibrotherm/coupling/continuation/periodic_options.hpp"
+#include "vibrotherm/coupling/observe/camera_options.hpp"
+#include "vibrotherm/coupling/run/driver_options.hpp"
+#include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/modes/modal_analysis.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -47,7 +51,7 @@ PetscErrorCode ReadWith(const std::vector<OptionSpec<Target>>& specs, const std:
 
 /// A value just outside spec's range (lo side if bounded below, else hi side); empty if unbounded.
 std::string Outside(const contact::ParameterSpec& s) {
-  const bool integer = s.type == contact::ParameterType::Integer;
+  const bool integer = s.type == contact::ParameterType::Integer;  // (a RealList: one entry outside)
   const double step = integer ? 1.0 : 1e-3 * std::max(1.0, std::abs(s.range.lo));
   double value;
   if (std::isfinite(s.range.lo)) value = s.range.lo_open ? s.range.lo : s.range.lo - step;
@@ -92,7 +96,11 @@ TEST(OptionSpecs, DeclaredOnceCheckedAndRefusedNamingTheOption) {
   modes.target_frequency = 1e4;
   modes.defect_radius = 1e-3;
   CheckList(modes::ModesOptionSpecs(), &seen, modes);
-  EXPECT_GE(seen.size(), 30u);
+  CheckList(wave::MaterialDampingOptionSpecs(), &seen);
+  CheckList(coupling::DriverOptionSpecs(), &seen);
+  CheckList(coupling::CameraOptionSpecs(), &seen);
+  CheckList(interface::ApproachProfileOptionSpecs(), &seen);
+  EXPECT_GE(seen.size(), 65u);
 }
 
 TEST(OptionSpecs, EachOptionFillsItsField) {
@@ -116,6 +124,20 @@ TEST(OptionSpecs, EachOptionFillsItsField) {
   EXPECT_EQ(wave.lts.cfl, 0.5);
   EXPECT_TRUE(wave.harmonic_start);
   EXPECT_EQ(wave.degree, 1);
+  coupling::DriverOptions driver;  // lists, and a value given where the default is derived
+  ASSERT_EQ(ReadWith(coupling::DriverOptionSpecs(), "-output_times 2e-3,1e-3 -crack_probe 0.25,1 -final_time 0.5 "
+                     "-physics wave -heat_near_field 0", &driver, &message), 0) << message;
+  EXPECT_EQ(driver.output_times, (std::vector<double>{2e-3, 1e-3}));
+  EXPECT_EQ(driver.crack_probes, (std::vector<double>{0.25, 1.0}));
+  EXPECT_EQ(driver.final_time, 0.5);
+  EXPECT_EQ(driver.physics, coupling::PhysicsChoice::Wave);
+  EXPECT_FALSE(driver.near_field);
+  interface::ApproachProfile a0;  // a choice into an enum, a text
+  ASSERT_EQ(ReadWith(interface::ApproachProfileOptionSpecs(), "-crack_a0_profile file -crack_a0_file a0.csv "
+                     "-crack_a0 1e-8", &a0, &message), 0) << message;
+  EXPECT_EQ(a0.shape, interface::ApproachShape::File);
+  EXPECT_EQ(a0.file, "a0.csv");
+  EXPECT_EQ(a0.uniform, 1e-8);
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ struct Range {
   std::string rule() const;
 };
 
-enum class ParameterType { Real, Integer, Text, Choice, Flag };  ///< Flag: on/off (the simulator's options)
+/// Flag: on/off; RealList: x1,x2,... each in range (both the simulator's options).
+enum class ParameterType { Real, Integer, Text, Choice, Flag, RealList };
 
 struct ParameterSpec {
   std::string name;           ///< option with its dash: "-contact_power_C"
@@ -39,7 +40,7 @@ struct ParameterSpec {
   std::string unit;           ///< "" when dimensionless
   ParameterType type;
   std::string default_value;  ///< as a user types it: "1e18", "biwa", "" (no file)
-  Range range;                ///< Real and Integer
+  Range range;                ///< Real and Integer; RealList: each entry
   std::vector<std::string> choices;  ///< Choice: the allowed values
 
   /// "help [unit] (range)" for -help listings.

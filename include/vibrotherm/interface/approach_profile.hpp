@@ -6,17 +6,27 @@
 
 #include <petscsys.h>
 
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "vibrotherm/options/petsc/option_spec.hpp"
+
 namespace vibrotherm::interface {
 
+enum class ApproachShape { Uniform, Elliptic, File };  ///< -crack_a0_profile
+
 struct ApproachProfile {
-  double uniform = 0.0, max = 0.0;
-  bool elliptic = false;
-  std::vector<std::pair<double, double>> table;  ///< (ξ, a0), increasing ξ
+  double uniform = 0.0;  ///< -crack_a0 [m]
+  ApproachShape shape = ApproachShape::Uniform;
+  double max = 0.0;      ///< -crack_a0_max [m] (Elliptic)
+  std::string file;      ///< -crack_a0_file (File)
+  std::vector<std::pair<double, double>> table;  ///< (ξ, a0), increasing ξ, from the file
   double at(double xi) const;
 };
+/// -crack_a0, -crack_a0_profile, -crack_a0_max, -crack_a0_file, declared (option_spec.hpp).
+const std::vector<OptionSpec<ApproachProfile>>& ApproachProfileOptionSpecs();
+/// Reads them and the file's table. Collective.
 PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* profile);
 
 }  // namespace vibrotherm::interface

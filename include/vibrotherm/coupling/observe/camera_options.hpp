@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "vibrotherm/options/petsc/option_spec.hpp"
+
 namespace vibrotherm::coupling {
 
 struct CameraOptions {
@@ -27,6 +29,8 @@ struct CameraOptions {
   double detect_contrast = 1.0;
 };
 
+/// The camera's options, declared (option_spec.hpp).
+const std::vector<OptionSpec<CameraOptions>>& CameraOptionSpecs();
 /// Reads and checks -camera*. Collective. A bad value is one line naming the option.
 PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* options);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vibrotherm/coupling/observe/recording_options.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::coupling {
 
@@ -32,6 +33,9 @@ struct DriverOptions : RecordingOptions {
   double max_steps = 2e8;             ///< -max_steps: a run whose wave steps would exceed it is refused at setup
   double checkpoint_every_s = 600.0;  ///< -checkpoint_every_s: wall seconds between checkpoints (0: only on signals)
 };
+/// The run-control and recording options, declared (option_spec.hpp).
+const std::vector<OptionSpec<DriverOptions>>& DriverOptionSpecs();
+/// Reads and checks them. Collective.
 PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options);
 
 /// The heat exchange interval: -couple_dt, or 1/8 of the source period.

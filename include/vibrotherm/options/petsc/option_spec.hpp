@@ -21,6 +21,7 @@
 
 #include "vibrotherm/contact/parameter_spec.hpp"
 #include "vibrotherm/options/petsc/option_choice.hpp"
+#include "vibrotherm/options/petsc/option_list.hpp"
 
 namespace vibrotherm {
 
@@ -43,6 +44,44 @@ OptionSpec<Target> RealOption(const char* name, double Target::*field, contact::
           [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
             PetscCall(PetscOptionsReal(s.name.c_str(), s.describe().c_str(), nullptr, t->*field, &(t->*field), nullptr));
             return CheckOptionRange(PetscOptionsObject->comm, s, t->*field);
+          }};
+}
+
+/// A real option whose default is derived elsewhere (the field's initial value stands for "not
+/// given", e.g. -final_time: the source's duration): a value given must lie in range.
+template <class Target>
+OptionSpec<Target> GivenRealOption(const char* name, double Target::*field, contact::Range range, const char* unit,
+                                   const char* help) {
+  return {{name, help, unit, contact::ParameterType::Real, "", range, {}},
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+            PetscBool given = PETSC_FALSE;
+            PetscCall(PetscOptionsReal(s.name.c_str(), s.describe().c_str(), nullptr, t->*field, &(t->*field), &given));
+            return given ? CheckOptionRange(PetscOptionsObject->comm, s, t->*field) : PetscErrorCode(0);
+          }};
+}
+
+/// A list x1,x2,... [unit] of reals, each in range (the field's initial value is the default).
+template <class Target>
+OptionSpec<Target> RealListOption(const char* name, std::vector<double> Target::*field, contact::Range range,
+                                  const char* unit, const char* help) {
+  return {{name, help, unit, contact::ParameterType::RealList, "", range, {}},
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+            PetscCall(OptionsRealList(PetscOptionsObject, s.name.c_str(), s.describe().c_str(), &(t->*field), nullptr));
+            for (double value : t->*field) PetscCall(CheckOptionRange(PetscOptionsObject->comm, s, value));
+            return PetscErrorCode(0);
+          }};
+}
+
+/// A text option (a file name, a face name: its owner checks what it names).
+template <class Target>
+OptionSpec<Target> TextOption(const char* name, std::string Target::*field, const char* help) {
+  return {{name, help, "", contact::ParameterType::Text, "", contact::Range::any(), {}},
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+            char text[PETSC_MAX_PATH_LEN];
+            PetscCall(PetscStrncpy(text, (t->*field).c_str(), sizeof(text)));
+            PetscCall(PetscOptionsString(s.name.c_str(), s.help.c_str(), nullptr, text, text, sizeof(text), nullptr));
+            t->*field = text;
+            return PetscErrorCode(0);
           }};
 }
 
