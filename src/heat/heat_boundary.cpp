@@ -82,37 +82,29 @@ PetscErrorCode CollectEdgeRows(DM dm, Vec sink_local, Vec h_local, HeatBoundary*
 
 }  // namespace
 
+const std::vector<OptionSpec<HeatBoundaryOptions>>& HeatBoundaryOptionSpecs() {
+  using O = HeatBoundaryOptions;
+  using contact::Range;
+  static const std::vector<OptionSpec<O>> specs = [] {
+    const std::vector<std::string> kinds = {"sink", "insulated", "convective"};
+    std::vector<OptionSpec<O>> list = {TextChoiceOption<O>(
+        "-heat_bc", [](O* o) { return &o->all; }, kinds, "Every outer edge (default: sink edges)")};
+    for (int s = 0; s < 6; ++s)
+      list.push_back(TextChoiceOption<O>(
+          SideOption(s), [s](O* o) { return &o->side[s]; }, kinds,
+          s < 4 ? "One side of a generated specimen" : "One face of a 3D box (front: z = depth, back: z = 0)"));
+    list.push_back(RealOption("-heat_h", &O::h, Range::at_least(0.0), "W/(m^2 K)", "Convective film coefficient"));
+    list.push_back(RealOption("-heat_T_ext", &O::T_ext, Range::positive(), "K",
+                              "Ambient temperature of convective edges (default: -heat_T0)"));
+    return list;
+  }();
+  return specs;
+}
+
 PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* o) {
   PetscFunctionBeginUser;
-  char value[64];
-  PetscBool set;
-  PetscOptionsBegin(comm, nullptr, "Thermal edges", nullptr);
-  value[0] = 0;
-  PetscCall(PetscOptionsString("-heat_bc", "Every outer edge: sink, insulated, convective (default: sink edges)",
-                               nullptr, value, value, sizeof(value), &set));
-  o->all = set ? value : "";
-  for (int s = 0; s < 6; ++s) {
-    const std::string name = SideOption(s);
-    value[0] = 0;
-    PetscCall(PetscOptionsString(name.c_str(),
-                                 s < 4 ? "One side of a generated specimen: sink, insulated, convective"
-                                       : "One face of a 3D box (front: z = depth, back: z = 0): sink, insulated, convective",
-                                 nullptr, value, value, sizeof(value), &set));
-    o->side[s] = set ? value : "";
-  }
-  PetscCall(PetscOptionsReal("-heat_h", "Convective film coefficient [W/(m^2 K)]", nullptr, o->h, &o->h, nullptr));
   o->T_ext = T0;
-  PetscCall(PetscOptionsReal("-heat_T_ext", "Ambient temperature of convective edges [K] (default: -heat_T0)",
-                             nullptr, o->T_ext, &o->T_ext, nullptr));
-  PetscOptionsEnd();
-  ThermalEdge kind;
-  if (!o->all.empty()) PetscCall(ParseKind(comm, "-heat_bc", o->all, &kind));
-  for (int s = 0; s < 6; ++s)
-    if (!o->side[s].empty()) PetscCall(ParseKind(comm, SideOption(s).c_str(), o->side[s], &kind));
-  PetscCheck(o->h >= 0 && std::isfinite(o->h), comm, PETSC_ERR_USER_INPUT, "-heat_h must be >= 0 and finite, got %g",
-             o->h);
-  PetscCheck(o->T_ext > 0 && std::isfinite(o->T_ext), comm, PETSC_ERR_USER_INPUT,
-             "-heat_T_ext must be > 0 K and finite, got %g", o->T_ext);
+  PetscCall(ReadOptionSpecs(comm, "Thermal edges", HeatBoundaryOptionSpecs(), o));
   PetscFunctionReturn(0);
 }
 

@@ -1,8 +1,5 @@
 #include "vibrotherm/wave/excitation.hpp"
 
-#include "vibrotherm/options/petsc/option_choice.hpp"
-#include "vibrotherm/options/petsc/option_list.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -145,9 +142,6 @@ PetscErrorCode SetSweep(MPI_Comm comm, const std::vector<double>& values, bool n
   if (values.empty()) PetscFunctionReturn(0);
   PetscCheck(values.size() == 2, comm, PETSC_ERR_USER_INPUT, "-source_sweep needs two frequencies F1,F2 [Hz] (got %zu values)",
              values.size());
-  for (double v : values)
-    PetscCheck(std::isfinite(v) && v > 0.0, comm, PETSC_ERR_USER_INPUT,
-               "-source_sweep %g,%g: both frequencies must be finite and > 0", values[0], values[1]);
   PetscCheck(values[0] != values[1], comm, PETSC_ERR_USER_INPUT,
              "-source_sweep %g,%g: the two frequencies are equal (a constant frequency is -source_frequency)", values[0],
              values[1]);
@@ -162,37 +156,40 @@ PetscErrorCode SetSweep(MPI_Comm comm, const std::vector<double>& values, bool n
 
 }  // namespace
 
+const std::vector<OptionSpec<ExcitationOptions>>& ExcitationOptionSpecs() {
+  using O = ExcitationOptions;
+  using contact::Range;
+  const auto signal = [](const OptionSpec<SourceTimeFunction>& option) {
+    return NestedOption(&O::excitation, NestedOption(&Excitation::signal, option));
+  };
+  static const std::vector<OptionSpec<O>> specs = {
+      NestedOption(&O::excitation, ChoiceOption("-source_type", &Excitation::type, {"displacement", "traction"},
+                                                "Source on the source edge")),
+      NestedOption(&O::excitation, ChoiceOption("-source_component", &Excitation::component, {"tangential", "normal"},
+                                                "Direction of the source to the source edge")),
+      signal(RealOption("-source_frequency", &SourceTimeFunction::frequency, Range::positive(), "Hz", "Frequency")),
+      signal(RealOption("-source_amplitude", &SourceTimeFunction::amplitude, Range::any(), "",
+                        "Amplitude: displacement [m] or traction [Pa]")),
+      signal(RealOption("-source_duration", &SourceTimeFunction::duration, Range::at_least(0.0), "s",
+                        "Duration of the excitation")),
+      signal(RealOption("-source_ramp_cycles", &SourceTimeFunction::ramp_cycles, Range::at_least(0.0), "",
+                        "Cycles of smooth switch-on and switch-off")),
+      RealListOption("-source_schedule", &O::schedule, Range::any(), "",
+                     "Amplitude steps t1,A1,t2,A2,...: from t_i [s] on amplitude A_i (blended over "
+                     "max(-source_ramp_cycles, 1) cycles)"),
+      RealListOption("-source_sweep", &O::sweep, Range::positive(), "Hz",
+                     "A frequency sweep F1,F2, linear in time over -source_duration (replaces -source_frequency)"),
+  };
+  return specs;
+}
+
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
   PetscFunctionBeginUser;
-  PetscInt type = e->type == SourceType::Displacement ? 0 : 1, component = e->component == SourceComponent::Tangential ? 0 : 1;
-  std::vector<double> schedule, sweep;
-  PetscOptionsBegin(comm, nullptr, "Excitation on the source edge", nullptr);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-source_type", "Source on the source edge", {"displacement", "traction"},
-                          &type, nullptr));
-  PetscCall(OptionsChoice(PetscOptionsObject, "-source_component", "Direction of the source to the source edge",
-                          {"tangential", "normal"}, &component, nullptr));
-  PetscCall(PetscOptionsReal("-source_frequency", "Frequency [Hz]", nullptr, e->signal.frequency, &e->signal.frequency,
-                             nullptr));
-  PetscCall(PetscOptionsReal("-source_amplitude", "Amplitude: displacement [m] or traction [Pa]", nullptr,
-                             e->signal.amplitude, &e->signal.amplitude, nullptr));
-  PetscCall(PetscOptionsReal("-source_duration", "Duration of the excitation [s]", nullptr, e->signal.duration,
-                             &e->signal.duration, nullptr));
-  PetscCall(PetscOptionsReal("-source_ramp_cycles", "Cycles of smooth switch-on and switch-off", nullptr,
-                             e->signal.ramp_cycles, &e->signal.ramp_cycles, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-source_schedule",
-                            "Amplitude steps t1,A1,t2,A2,...: from t_i [s] on amplitude A_i (blended over "
-                            "max(-source_ramp_cycles, 1) cycles)", &schedule, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-source_sweep",
-                            "A frequency sweep F1,F2 [Hz], linear in time over -source_duration (replaces "
-                            "-source_frequency)", &sweep, nullptr));
-  PetscOptionsEnd();
-  e->type = type == 0 ? SourceType::Displacement : SourceType::Traction;
-  e->component = component == 0 ? SourceComponent::Tangential : SourceComponent::Normal;
-  PetscCheck(e->signal.frequency > 0.0, comm, PETSC_ERR_USER_INPUT, "-source_frequency must be > 0");
-  PetscCheck(e->signal.duration >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_duration must be >= 0");
-  PetscCheck(e->signal.ramp_cycles >= 0.0, comm, PETSC_ERR_USER_INPUT, "-source_ramp_cycles must be >= 0");
-  PetscCall(SetSweep(comm, sweep, schedule.empty(), &e->signal));
-  PetscCall(SetSchedule(comm, schedule, &e->signal));
+  ExcitationOptions o{*e, {}, {}};
+  PetscCall(ReadOptionSpecs(comm, "Excitation on the source edge", ExcitationOptionSpecs(), &o));
+  *e = o.excitation;
+  PetscCall(SetSweep(comm, o.sweep, o.schedule.empty(), &e->signal));
+  PetscCall(SetSchedule(comm, o.schedule, &e->signal));
   PetscFunctionReturn(0);
 }
 

@@ -1,7 +1,7 @@
 // Requirement (issue 42 item 2): an option declared once (options/petsc/option_spec.hpp)
 // gives its reading, its range check and its one-line error. For every declared list
 // (-periodic*, -heat_* material and discretisation, -wave_*, -material_* and damping, -modes_*,
-// the run control and recording, -camera*, -crack_a0*):
+// the run control and recording, -camera*, -crack_a0*, -heat_bc* and the film, -source_*):
 //  - the names are unique across the lists and each is read (set alone, it changes its field);
 //  - with nothing given, every default lies in its range (the read succeeds);
 //  - a value just outside a numeric range is refused with PETSC_ERR_USER_INPUT and a message
@@ -18,8 +18,11 @@
 #include "vibrotherm/coupling/observe/camera_options.hpp"
 #include "vibrotherm/coupling/run/driver_options.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
+#include "vibrotherm/heat/heat_boundary.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
+#include "vibrotherm/mesh/scene_geometry.hpp"
 #include "vibrotherm/modes/modal_analysis.hpp"
+#include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 #include <gtest/gtest.h>
 
@@ -100,7 +103,11 @@ TEST(OptionSpecs, DeclaredOnceCheckedAndRefusedNamingTheOption) {
   CheckList(coupling::DriverOptionSpecs(), &seen);
   CheckList(coupling::CameraOptionSpecs(), &seen);
   CheckList(interface::ApproachProfileOptionSpecs(), &seen);
-  EXPECT_GE(seen.size(), 65u);
+  heat::HeatBoundaryOptions edges;  // ReadHeatBoundaryOptions's caller gives -heat_T_ext's default (T0)
+  edges.T_ext = 293.15;
+  CheckList(heat::HeatBoundaryOptionSpecs(), &seen, edges);
+  CheckList(wave::ExcitationOptionSpecs(), &seen);
+  EXPECT_GE(seen.size(), 80u);
 }
 
 TEST(OptionSpecs, EachOptionFillsItsField) {
@@ -138,6 +145,19 @@ TEST(OptionSpecs, EachOptionFillsItsField) {
   EXPECT_EQ(a0.shape, interface::ApproachShape::File);
   EXPECT_EQ(a0.file, "a0.csv");
   EXPECT_EQ(a0.uniform, 1e-8);
+  heat::HeatBoundaryOptions edges;  // a choice kept as text, into an array's entry
+  ASSERT_EQ(ReadWith(heat::HeatBoundaryOptionSpecs(), "-heat_bc insulated -heat_bc_top convective -heat_T_ext 300",
+                     &edges, &message), 0) << message;
+  EXPECT_EQ(edges.all, "insulated");
+  EXPECT_EQ(edges.side[static_cast<int>(mesh::Side::Top)], "convective");
+  EXPECT_EQ(edges.side[static_cast<int>(mesh::Side::Left)], "");
+  EXPECT_EQ(edges.T_ext, 300.0);
+  wave::ExcitationOptions source;  // nested twice
+  ASSERT_EQ(ReadWith(wave::ExcitationOptionSpecs(), "-source_type traction -source_frequency 2e4 -source_sweep 1e4,3e4",
+                     &source, &message), 0) << message;
+  EXPECT_EQ(source.excitation.type, wave::SourceType::Traction);
+  EXPECT_EQ(source.excitation.signal.frequency, 2e4);
+  EXPECT_EQ(source.sweep, (std::vector<double>{1e4, 3e4}));
 }
 
 }  // namespace

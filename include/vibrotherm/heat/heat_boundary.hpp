@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vibrotherm/fe/lagrange_space.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::heat {
 
@@ -26,6 +27,9 @@ struct HeatBoundaryOptions {
   double h = 10.0;        ///< -heat_h [W/(m² K)]
   double T_ext = -1.0;    ///< -heat_T_ext [K] (default: T0)
 };
+/// -heat_bc, -heat_bc_<side>, -heat_h, -heat_T_ext, declared (option_spec.hpp).
+const std::vector<OptionSpec<HeatBoundaryOptions>>& HeatBoundaryOptionSpecs();
+/// Reads them (-heat_T_ext's default: T0). Collective.
 PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* options);
 
 /// The outer-edge terms of one heat space.

@@ -19,6 +19,8 @@
 
 #include <vector>
 
+#include "vibrotherm/options/petsc/option_spec.hpp"
+
 namespace vibrotherm::wave {
 
 enum class SourceType { Displacement, Traction };
@@ -62,8 +64,17 @@ struct Excitation {
   SourceTimeFunction signal;
 };
 
-/// -source_type, -source_component, -source_frequency, -source_amplitude,
-/// -source_duration, -source_ramp_cycles, -source_schedule, -source_sweep.
+/// The source's options as typed: the schedule and the sweep are lists until checked against
+/// the signal they shape.
+struct ExcitationOptions {
+  Excitation excitation;
+  std::vector<double> schedule;  ///< -source_schedule t1,A1,t2,A2,...
+  std::vector<double> sweep;     ///< -source_sweep F1,F2 [Hz]
+};
+/// -source_type, -source_component, -source_frequency, -source_amplitude, -source_duration,
+/// -source_ramp_cycles, -source_schedule, -source_sweep, declared (option_spec.hpp).
+const std::vector<OptionSpec<ExcitationOptions>>& ExcitationOptionSpecs();
+/// Reads them into excitation (its values are the defaults). Collective.
 PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* excitation);
 
 }  // namespace vibrotherm::wave

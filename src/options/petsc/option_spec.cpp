@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string>
 
+#include "vibrotherm/util/errors.hpp"
+
 namespace vibrotherm {
 
 PetscErrorCode CheckOptionRange(MPI_Comm comm, const contact::ParameterSpec& spec, double value) {
@@ -15,6 +17,17 @@ PetscErrorCode CheckOptionRange(MPI_Comm comm, const contact::ParameterSpec& spe
   const std::string unit = spec.unit.empty() ? "" : " " + spec.unit;  // "must be > 0 Hz"
   PetscCheck(spec.range.contains(value), comm, PETSC_ERR_USER_INPUT, "%s %s%s, got %s", spec.name.c_str(),
              spec.range.rule().c_str(), unit.c_str(), shown.str().c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReadTextChoice(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
+                              std::string* value) {
+  PetscFunctionBeginUser;
+  char text[256] = "";
+  PetscBool given = PETSC_FALSE;
+  PetscCall(PetscOptionsString(spec.name.c_str(), spec.describe().c_str(), nullptr, text, text, sizeof(text), &given));
+  *value = given ? text : "";  // given without a value: the missing-value check names it later
+  if (!value->empty()) VibrothermCallCpp(PetscOptionsObject->comm, contact::check_choice(spec, *value));
   PetscFunctionReturn(0);
 }
 

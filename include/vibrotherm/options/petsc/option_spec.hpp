@@ -85,6 +85,22 @@ OptionSpec<Target> TextOption(const char* name, std::string Target::*field, cons
           }};
 }
 
+/// Reads a text that, when given, must be one of spec.choices (an error naming the option and
+/// the values otherwise); *value: "" when not given.
+PetscErrorCode ReadTextChoice(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
+                              std::string* value);
+
+/// One of `choices` kept as its text, "" when not given (-heat_bc sink: a default that depends
+/// on the scene). field: where in Target it goes (a function, so an array's entry can be one).
+template <class Target>
+OptionSpec<Target> TextChoiceOption(const std::string& name, std::function<std::string*(Target*)> field,
+                                    std::vector<std::string> choices, const char* help) {
+  return {{name, help, "", contact::ParameterType::Choice, "", contact::Range::any(), std::move(choices)},
+          [field](PetscOptionItems* items, const contact::ParameterSpec& s, Target* t) {
+            return ReadTextChoice(items, s, field(t));
+          }};
+}
+
 /// An integer option in range.
 template <class Target>
 OptionSpec<Target> IntOption(const char* name, PetscInt Target::*field, contact::Range range, const char* help) {
