@@ -9,26 +9,36 @@
 #include "vibrotherm/mesh/specimen_options.hpp"
 #include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/errors.hpp"
-#include "vibrotherm/options/petsc/option_list.hpp"
-#include "vibrotherm/options/petsc/option_choice.hpp"
 
 namespace vibrotherm::mesh {
 namespace {
 
-/// -edge_<name> (a side, front or back). *given: whether the option was given.
-PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const char* name, EdgeKind* kind,
-                            PetscBool* given = nullptr) {
-  PetscFunctionBeginUser;
-  char option[32];
-  PetscCall(PetscSNPrintf(option, sizeof(option), "-edge_%s", name));
+/// The mechanical kinds an outer edge can have, by name (in label order).
+std::vector<std::string> EdgeKindNames() {
   std::vector<std::string> names;
   for (EdgeKind k : all_edge_kinds()) names.push_back(to_string(k));
+  return names;
+}
+
+/// An -edge_<name> option (a side, front or back) read into *kind.
+PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, EdgeKind* kind) {
+  PetscFunctionBeginUser;
   PetscInt index = static_cast<PetscInt>(std::find(all_edge_kinds().begin(), all_edge_kinds().end(), *kind) -
                                          all_edge_kinds().begin());
-  PetscCall(OptionsChoice(PetscOptionsObject, option,
-                          "Mechanical kind of this outer edge (front, back: faces of a 3D box)", names, &index, given));
+  PetscCall(OptionsChoice(PetscOptionsObject, spec.name.c_str(), spec.help.c_str(), spec.choices, &index, nullptr));
   *kind = all_edge_kinds()[index];
   PetscFunctionReturn(0);
+}
+
+/// -edge_<side> (side: a mesh::Side), declared.
+OptionSpec<SpecimenGeometryInput> EdgeOption(Side side) {
+  const int s = static_cast<int>(side);
+  return {{std::string("-edge_") + to_string(side), "Mechanical kind of this outer edge (front, back: faces of a 3D box)",
+           "", contact::ParameterType::Choice, "", contact::Range::any(), EdgeKindNames()},
+          [s](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
+            EdgeKind* kind = s < 4 ? &in->geometry.edges[s] : &in->geometry.depth_edges[s - 4];
+            return ReadEdgeKind(items, spec, kind);
+          }};
 }
 
 /// One or (3D) two values of a patch option into *first, *second; one value in 3D
@@ -49,58 +59,63 @@ PetscErrorCode PatchPair(PetscOptionItems* PetscOptionsObject, const char* optio
   PetscFunctionReturn(0);
 }
 
-/// -source_patch_edge (its presence makes the patch), -source_patch_center (default the
-/// middle of the edge or face), -source_patch_width; 3D: two values each, along face_axes().
-PetscErrorCode ReadSourcePatch(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g) {
+/// -source_patch_edge (its presence makes the patch; the default centre is the middle of the edge or face).
+PetscErrorCode ReadPatchEdge(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
+                             SpecimenGeometry* g) {
   PetscFunctionBeginUser;
   PetscInt side = static_cast<PetscInt>(Side::Top);
   PetscBool on = PETSC_FALSE;
-  PetscCall(OptionsChoice(PetscOptionsObject, "-source_patch_edge",
-                          "A transducer patch on this edge (3D: face) is the source (the rest keeps -edge_<side>)",
-                          {"bottom", "right", "top", "left", "front", "back"}, &side, &on));
+  PetscCall(OptionsChoice(PetscOptionsObject, spec.name.c_str(), spec.help.c_str(), spec.choices, &side, &on));
   g->patch.on = on;
   g->patch.side = static_cast<Side>(side);
-  const bool box = g->depth > 0.0;
   const auto axes = face_axes(g->patch.side);
   g->patch.center = 0.5 * g->extent(axes[0]);
   g->patch.center2 = 0.5 * g->extent(axes[1]);
-  PetscBool has_center = PETSC_FALSE, has_width = PETSC_FALSE;
-  PetscCall(PatchPair(PetscOptionsObject, "-source_patch_center",
-                      "Centre of the patch along its edge [m] (x on bottom/top, y on the sides; 3D: then z, "
-                      "front/back: x then y; default the middle)", box, false, &g->patch.center,
-                      &g->patch.center2, &has_center));
-  PetscCall(PatchPair(PetscOptionsObject, "-source_patch_width",
-                      "Width of the transducer patch [m] (3D: along the face's two axes; one value: a square)", box,
-                      true, &g->patch.width, &g->patch.width2, &has_width));
-  PetscCheck(on || (!has_center && !has_width), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-             "-source_patch_%s given without -source_patch_edge (the edge the transducer sits on)",
-             has_width ? "width" : "center");
   PetscFunctionReturn(0);
 }
 
-/// -specimen_depth, -crack_width, -edge_front, -edge_back, -crack_shape, -crack_tilt. *three_d: the first of
-/// the 3D-only ones given (nullptr: none).
-PetscErrorCode ReadBoxOptions(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g, std::vector<double>* widths,
-                              std::vector<double>* tilts, std::vector<PetscInt>* shapes, const char** three_d) {
+/// A patch option of one or (3D: along face_axes()) two values, read by PatchPair.
+OptionSpec<SpecimenGeometryInput> PatchOption(const char* name, bool square, double SourcePatch::*first,
+                                              double SourcePatch::*second, const char* help) {
+  return {{name, help, "m", contact::ParameterType::RealList, "", contact::Range::any(), {}},
+          [=](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
+            SourcePatch& patch = in->geometry.patch;
+            PetscBool given;
+            return PatchPair(items, spec.name.c_str(), spec.describe().c_str(), in->geometry.depth > 0.0, square,
+                             &(patch.*first), &(patch.*second), &given);
+          }};
+}
+
+/// -crack_shape rectangle|ellipse, one for all or one a crack.
+OptionSpec<SpecimenGeometryInput> CrackShapeOption() {
+  return {{"-crack_shape", "3D: the cracks' outlines, the length x width rectangle or the ellipse inscribed in it", "",
+           contact::ParameterType::Choice, "", contact::Range::any(), {"rectangle", "ellipse"}},
+          [](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
+            return OptionsChoiceList(items, spec.name.c_str(), spec.help.c_str(), spec.choices, &in->shapes, nullptr);
+          }};
+}
+
+/// The first of the 3D-only options given (nullptr: none).
+PetscErrorCode FirstThreeDimensionalOption(const char** name) {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsReal("-specimen_depth", "Depth [m] along z: > 0 makes the specimen a 3D box; 0 a 2D "
-                             "plane-strain specimen", nullptr, g->depth, &g->depth, nullptr));
-  PetscBool given[5] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_width",
-                            "3D: crack extent along z, or along its up-dip when tilted [m] (one value applies to all)",
-                            widths, &given[0]));
-  PetscCall(ReadEdgeKind(PetscOptionsObject, "front", &g->depth_edges[0], &given[1]));
-  PetscCall(ReadEdgeKind(PetscOptionsObject, "back", &g->depth_edges[1], &given[2]));
-  PetscCall(OptionsChoiceList(PetscOptionsObject, "-crack_shape",
-                              "3D: the cracks' outlines, the length x width rectangle or the ellipse inscribed in it",
-                              {"rectangle", "ellipse"}, shapes, &given[3]));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_tilt",
-                            "3D: crack planes turned about their strikes [deg] (0: containing z; > 0: the normal "
-                            "toward +z; one value applies to all)", tilts, &given[4]));
-  const char* names[5] = {"-crack_width", "-edge_front", "-edge_back", "-crack_shape", "-crack_tilt"};
-  *three_d = nullptr;
-  for (int k = 4; k >= 0; --k)
-    if (given[k]) *three_d = names[k];
+  *name = nullptr;
+  for (const char* option : {"-crack_width", "-edge_front", "-edge_back", "-crack_shape", "-crack_tilt"}) {
+    bool given;
+    PetscCall(OptionGiven(nullptr, option, &given));
+    if (given && !*name) *name = option;
+  }
+  PetscFunctionReturn(0);
+}
+
+/// A patch's centre or width given without its edge.
+PetscErrorCode CheckPatchGivenWithEdge(MPI_Comm comm, const SourcePatch& patch) {
+  PetscFunctionBeginUser;
+  for (const char* option : {"-source_patch_center", "-source_patch_width"}) {
+    bool given;
+    PetscCall(OptionGiven(nullptr, option, &given));
+    PetscCheck(patch.on || !given, comm, PETSC_ERR_USER_INPUT,
+               "%s given without -source_patch_edge (the edge the transducer sits on)", option);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -121,14 +136,12 @@ T PerCrack(const std::vector<T>& values, PetscInt i) {
 }
 
 /// -mesh_crack_mirror off|on|<half-width [m]> → g->crack_mirror_width (0, −1: DefaultMirrorWidth, the width).
-PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, SpecimenGeometry* g) {
+PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
+                               SpecimenGeometry* g) {
   PetscFunctionBeginUser;
   char text[64] = "";
   PetscBool given = PETSC_FALSE;
-  PetscCall(PetscOptionsString("-mesh_crack_mirror",
-                               "Mesh a band around each crack mirror-symmetric across it (issue 41): off, on (half-width: "
-                               "the distance over which the mesh grades from -mesh_h_crack to -mesh_h) or a half-width [m]",
-                               nullptr, "off", text, sizeof(text), &given));
+  PetscCall(PetscOptionsString(spec.name.c_str(), spec.help.c_str(), nullptr, "off", text, sizeof(text), &given));
   if (!given) PetscFunctionReturn(0);
   const std::string value = text;
   char* end = nullptr;
@@ -142,38 +155,23 @@ PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, SpecimenGeo
 
 PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
   PetscFunctionBeginUser;
-  std::vector<double> centers, lengths, angles, widths, tilts;
-  std::vector<PetscInt> shapes;
-  const char* three_d_given = nullptr;
-  PetscBool has_lengths = PETSC_FALSE, has_angles = PETSC_FALSE;
-  PetscInt cell = g->quads ? 0 : 1;
-  PetscOptionsBegin(comm, nullptr, "Generated specimen (used unless -mesh_file)", nullptr);
-  PetscCall(PetscOptionsReal("-specimen_width", "Width [m]", nullptr, g->width, &g->width, nullptr));
-  PetscCall(PetscOptionsReal("-specimen_height", "Height [m]", nullptr, g->height, &g->height, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_center",
-                            "Crack centres x1,y1,x2,y2,... [m] (origin bottom-left, y up; 3D: x1,y1,z1,x2,y2,z2,...)",
-                            &centers, nullptr));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_length",
-                            "Crack lengths [m] (one value applies to all; 3D: along the strike in the x-y plane)",
-                            &lengths, &has_lengths));
-  PetscCall(OptionsRealList(PetscOptionsObject, "-crack_angle",
-                            "Crack angles to the horizontal [deg] (one value applies to all)", &angles, &has_angles));
-  PetscCall(PetscOptionsReal("-mesh_h", "Element size away from the cracks [m]", nullptr, g->h, &g->h, nullptr));
-  PetscCall(PetscOptionsReal("-mesh_h_crack", "Element size along the cracks [m]", nullptr, g->h_crack, &g->h_crack,
-                             nullptr));
-  PetscCall(PetscOptionsReal("-mesh_grading", "Element size growth per metre of distance from a crack", nullptr,
-                             g->grading, &g->grading, nullptr));
-  PetscCall(OptionsChoice(PetscOptionsObject, "-mesh_cell", "Cell type", {"quad", "tri"}, &cell, nullptr));
-  PetscCall(ReadCrackMirror(PetscOptionsObject, g));
-  for (Side side : {Side::Bottom, Side::Right, Side::Top, Side::Left})
-    PetscCall(ReadEdgeKind(PetscOptionsObject, to_string(side), &g->edges[static_cast<int>(side)]));
-  PetscCall(ReadBoxOptions(PetscOptionsObject, g, &widths, &tilts, &shapes, &three_d_given));
-  PetscCall(ReadSourcePatch(PetscOptionsObject, g));  // after the depth: the patch's axes
-  PetscOptionsEnd();
-  g->quads = cell == 0;
+  SpecimenGeometryInput in;
+  in.geometry = *g;
+  in.cell = g->quads ? MeshCell::Quad : MeshCell::Triangle;
+  PetscCall(ReadOptionSpecs(comm, "Generated specimen (used unless -mesh_file)", SpecimenGeometryOptionSpecs(), &in));
+  *g = in.geometry;
+  g->quads = in.cell == MeshCell::Quad;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry
-  PetscCheck(!(g->depth < 0.0) && std::isfinite(g->depth), comm, PETSC_ERR_USER_INPUT,
-             "-specimen_depth must be >= 0 (0: a 2D specimen), got %g", g->depth);
+  const char* three_d_given;
+  PetscCall(FirstThreeDimensionalOption(&three_d_given));
+  PetscCall(CheckPatchGivenWithEdge(comm, g->patch));
+  const std::vector<double>& centers = in.centers;
+  const std::vector<double>& lengths = in.lengths;
+  const std::vector<double>& angles = in.angles;
+  const std::vector<double>& widths = in.widths;
+  const std::vector<double>& tilts = in.tilts;
+  const std::vector<PetscInt>& shapes = in.shapes;
+  const bool has_lengths = !lengths.empty(), has_angles = !angles.empty();
   PetscCheck(g->depth > 0.0 || !three_d_given, comm, PETSC_ERR_USER_INPUT,
              "%s applies to a 3D box only: give -specimen_depth > 0", three_d_given);
   PetscCheck(!(g->depth > 0.0) || g->crack_mirror_width == 0.0, comm, PETSC_ERR_USER_INPUT,
@@ -213,70 +211,43 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   PetscFunctionReturn(0);
 }
 
+/// -heat_mesh_<size>: -help shows the default for this geometry (in->shown); a value given is kept.
+OptionSpec<HeatMeshInput> HeatMeshSizeOption(const char* name, double HeatMeshSizes::*shown,
+                                             std::optional<double> HeatMeshOptions::*given, const char* unit,
+                                             const char* help) {
+  return {{name, help, unit, contact::ParameterType::Real, "", contact::Range::any(), {}},
+          [=](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, HeatMeshInput* in) {
+            double& value = in->shown.*shown;
+            PetscBool set = PETSC_FALSE;
+            PetscCall(PetscOptionsReal(spec.name.c_str(), spec.describe().c_str(), nullptr, value, &value, &set));
+            if (set) in->options.*given = value;
+            return set ? CheckOptionRange(PetscOptionsObject->comm, spec, value) : PetscErrorCode(0);
+          }};
+}
+
 /// Reads the -heat_mesh* options given (-help shows the defaults for this geometry);
 /// check: refuse sizes that do not nest.
 PetscErrorCode ReadHeatMeshOptions(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
                                    HeatMeshOptions* o, bool check) {
   PetscFunctionBeginUser;
-  HeatMeshSizes shown = HeatMeshSizesFor(HeatMeshOptions{}, g, exchange_length);  // the defaults
-  PetscInt kind = o->graded ? 1 : 0;
-  PetscBool set[5] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
-  PetscOptionsBegin(comm, nullptr, "Heat mesh (generated specimens)", nullptr);
-  PetscCall(OptionsChoice(PetscOptionsObject, "-heat_mesh",
-                          "Heat mesh: its own, graded to the cracks, or the unsplit wave mesh", {"wave", "graded"},
-                          &kind, nullptr));
-  PetscCall(PetscOptionsReal("-heat_mesh_h_crack", "First layer thickness at the cracks [m] (default: half of sqrt(alpha couple_dt))",
-                             nullptr, shown.h_crack, &shown.h_crack, &set[0]));
-  PetscCall(PetscOptionsReal("-heat_mesh_growth", "Thickness ratio of successive layers", nullptr, shown.growth,
-                             &shown.growth, &set[1]));
-  PetscCall(PetscOptionsReal("-heat_mesh_h_along", "Element length along the cracks [m] (default: -mesh_h_crack / 2)",
-                             nullptr, shown.h_along, &shown.h_along, &set[2]));
-  PetscCall(PetscOptionsReal("-heat_mesh_h", "Element size away from the cracks [m] (default: -mesh_h)", nullptr,
-                             shown.h, &shown.h, &set[3]));
-  PetscCall(PetscOptionsReal("-heat_mesh_grading", "Element size growth per metre away from the crack bands (default: 2 x -mesh_grading)",
-                             nullptr, shown.grading, &shown.grading, &set[4]));
-  PetscOptionsEnd();
-  o->graded = kind == 1;
-  std::optional<double>* given[5] = {&o->h_crack, &o->growth, &o->h_along, &o->h, &o->grading};
-  const double values[5] = {shown.h_crack, shown.growth, shown.h_along, shown.h, shown.grading};
-  for (int k = 0; k < 5; ++k)
-    if (set[k]) *given[k] = values[k];
+  HeatMeshInput in{*o, HeatMeshSizesFor(HeatMeshOptions{}, g, exchange_length)};  // the defaults shown
+  PetscCall(ReadOptionSpecs(comm, "Heat mesh (generated specimens)", HeatMeshOptionSpecs(), &in));
+  *o = in.options;
   if (o->graded && check) VibrothermCallCpp(comm, HeatMeshSizesFor(*o, g, exchange_length).validate());
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
   PetscFunctionBeginUser;
-  char file[PETSC_MAX_PATH_LEN] = "", heat_file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool from_file = PETSC_FALSE, heat_from_file = PETSC_FALSE, force = PETSC_FALSE, refine_given = PETSC_FALSE;
-  PetscOptionsBegin(comm, nullptr, "Specimen mesh", nullptr);
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, "
-                               "absorbing, free, roller, fixed, sink, crack*); default: generate from -specimen_* "
-                               "and -crack_*",
-                               nullptr, file, file, sizeof(file), &from_file));
-  PetscCall(PetscOptionsString("-heat_mesh_file", "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
-                               "physical curve names; default: the unsplit -mesh_file mesh)",
-                               nullptr, heat_file, heat_file, sizeof(heat_file), &heat_from_file));
-  PetscCall(PetscOptionsInt("-dm_refine", "Uniform refinements of the wave mesh before splitting", nullptr,
-                            m->refinements, &m->refinements, &refine_given));
-  PetscCall(PetscOptionsBool("-force",
-                             "Run even when a memory estimate exceeds the memory available (the scene's; MUMPS's for "
-                             "-modes and -wave_start harmonic)",
-                             nullptr, force, &force, nullptr));
-  PetscOptionsEnd();
-  m->file = file;
-  m->heat_file = heat_file;
-  m->from_file = from_file;
-  m->heat_from_file = heat_from_file;
-  m->force = force;
-  // Checked here: PetscOptionsBoundedInt's own error is a PETSc trace (exit 1) that does not name the option.
-  PetscCheck(m->refinements >= 0, comm, PETSC_ERR_USER_INPUT, "-dm_refine must be >= 0, got %" PetscInt_FMT,
-             m->refinements);
+  PetscCall(ReadOptionSpecs(comm, "Specimen mesh", MeshSourceOptionSpecs(), m));
+  bool refine_named;
+  std::string refinements;
+  PetscCall(OptionGiven(nullptr, "-mesh_file", &m->from_file));
+  PetscCall(OptionGiven(nullptr, "-heat_mesh_file", &m->heat_from_file));
+  PetscCall(OptionText(nullptr, "-dm_refine", &refinements, &refine_named));
   // -dm_refine has PETSc's dm_ prefix, so the audit of missing values leaves it to PETSc,
   // which takes "-dm_refine" with no value as not given: vibrotherm reads it, so it checks.
-  bool refine_named;
-  PetscCall(OptionGiven(nullptr, "-dm_refine", &refine_named));
-  PetscCheck(!refine_named || refine_given, comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
+  PetscCheck(!refine_named || !refinements.empty(), comm, PETSC_ERR_USER_INPUT, "-dm_refine: needs a value");
   PetscCheck(!m->from_file || !m->file.empty(), comm, PETSC_ERR_USER_INPUT, "-mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || !m->heat_file.empty(), comm, PETSC_ERR_USER_INPUT, "-heat_mesh_file: needs a value");
   PetscCheck(!m->heat_from_file || m->from_file, comm, PETSC_ERR_USER_INPUT,
@@ -307,6 +278,90 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const std::string& file) {
 }
 
 }  // namespace
+
+const std::vector<OptionSpec<MeshSource>>& MeshSourceOptionSpecs() {
+  using M = MeshSource;
+  static const std::vector<OptionSpec<M>> specs = {
+      TextOption("-mesh_file", &M::file, "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, absorbing, "
+                 "free, roller, fixed, sink, crack*); default: generate from -specimen_* and -crack_*"),
+      TextOption("-heat_mesh_file", &M::heat_file, "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
+                 "physical curve names; default: the unsplit -mesh_file mesh)"),
+      // Declared with a range: PetscOptionsBoundedInt's own error is a PETSc trace that does not name the option.
+      IntOption("-dm_refine", &M::refinements, contact::Range::at_least(0.0),
+                "Uniform refinements of the wave mesh before splitting"),
+      FlagOption("-force", &M::force, "Run even when a memory estimate exceeds the memory available (the scene's; "
+                 "MUMPS's for -modes and -wave_start harmonic)"),
+  };
+  return specs;
+}
+
+const std::vector<OptionSpec<HeatMeshInput>>& HeatMeshOptionSpecs() {
+  using In = HeatMeshInput;
+  using S = HeatMeshSizes;
+  using O = HeatMeshOptions;
+  static const std::vector<OptionSpec<In>> specs = {
+      NestedOption(&In::options, ChoiceOption("-heat_mesh", &O::graded, {"wave", "graded"},
+                                              "Heat mesh: its own, graded to the cracks, or the unsplit wave mesh")),
+      HeatMeshSizeOption("-heat_mesh_h_crack", &S::h_crack, &O::h_crack, "m",
+                         "First layer thickness at the cracks (default: half of sqrt(alpha couple_dt))"),
+      HeatMeshSizeOption("-heat_mesh_growth", &S::growth, &O::growth, "", "Thickness ratio of successive layers"),
+      HeatMeshSizeOption("-heat_mesh_h_along", &S::h_along, &O::h_along, "m",
+                         "Element length along the cracks (default: -mesh_h_crack / 2)"),
+      HeatMeshSizeOption("-heat_mesh_h", &S::h, &O::h, "m", "Element size away from the cracks (default: -mesh_h)"),
+      HeatMeshSizeOption("-heat_mesh_grading", &S::grading, &O::grading, "",
+                         "Element size growth per metre away from the crack bands (default: 2 x -mesh_grading)"),
+  };
+  return specs;
+}
+
+const std::vector<OptionSpec<SpecimenGeometryInput>>& SpecimenGeometryOptionSpecs() {
+  using In = SpecimenGeometryInput;
+  using G = SpecimenGeometry;
+  using contact::Range;
+  const auto geometry = [](const OptionSpec<G>& option) { return NestedOption(&In::geometry, option); };
+  static const std::vector<OptionSpec<In>> specs = {
+      geometry(RealOption("-specimen_width", &G::width, Range::any(), "m", "Width")),
+      geometry(RealOption("-specimen_height", &G::height, Range::any(), "m", "Height")),
+      RealListOption("-crack_center", &In::centers, Range::any(), "m",
+                     "Crack centres x1,y1,x2,y2,... (origin bottom-left, y up; 3D: x1,y1,z1,x2,y2,z2,...)"),
+      RealListOption("-crack_length", &In::lengths, Range::any(), "m",
+                     "Crack lengths (one value applies to all; 3D: along the strike in the x-y plane)"),
+      RealListOption("-crack_angle", &In::angles, Range::any(), "deg",
+                     "Crack angles to the horizontal (one value applies to all)"),
+      geometry(RealOption("-mesh_h", &G::h, Range::any(), "m", "Element size away from the cracks")),
+      geometry(RealOption("-mesh_h_crack", &G::h_crack, Range::any(), "m", "Element size along the cracks")),
+      geometry(RealOption("-mesh_grading", &G::grading, Range::any(), "", "Element size growth per metre of distance "
+                          "from a crack")),
+      ChoiceOption("-mesh_cell", &In::cell, {"quad", "tri"}, "Cell type"),
+      {{"-mesh_crack_mirror", "Mesh a band around each crack mirror-symmetric across it (issue 41): off, on "
+        "(half-width: the distance over which the mesh grades from -mesh_h_crack to -mesh_h) or a half-width [m]",
+        "", contact::ParameterType::Text, "off", Range::any(), {}},
+       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in) {
+         return ReadCrackMirror(items, spec, &in->geometry);
+       }},
+      EdgeOption(Side::Bottom), EdgeOption(Side::Right), EdgeOption(Side::Top), EdgeOption(Side::Left),
+      geometry(RealOption("-specimen_depth", &G::depth, Range::at_least(0.0), "m",
+                          "Depth along z: > 0 makes the specimen a 3D box; 0 a 2D plane-strain specimen")),
+      RealListOption("-crack_width", &In::widths, Range::any(), "m",
+                     "3D: crack extent along z, or along its up-dip when tilted (one value applies to all)"),
+      EdgeOption(Side::Front), EdgeOption(Side::Back), CrackShapeOption(),
+      RealListOption("-crack_tilt", &In::tilts, Range::any(), "deg",
+                     "3D: crack planes turned about their strikes (0: containing z; > 0: the normal toward +z; one "
+                     "value applies to all)"),
+      // After the depth: the patch's axes.
+      {{"-source_patch_edge", "A transducer patch on this edge (3D: face) is the source (the rest keeps -edge_<side>)",
+        "", contact::ParameterType::Choice, "", Range::any(), {"bottom", "right", "top", "left", "front", "back"}},
+       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in) {
+         return ReadPatchEdge(items, spec, &in->geometry);
+       }},
+      PatchOption("-source_patch_center", false, &SourcePatch::center, &SourcePatch::center2,
+                  "Centre of the patch along its edge (x on bottom/top, y on the sides; 3D: then z, front/back: x then "
+                  "y; default the middle)"),
+      PatchOption("-source_patch_width", true, &SourcePatch::width, &SourcePatch::width2,
+                  "Width of the transducer patch (3D: along the face's two axes; one value: a square)"),
+  };
+  return specs;
+}
 
 PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* o) {
   PetscFunctionBeginUser;

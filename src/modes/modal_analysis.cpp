@@ -28,7 +28,6 @@ const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs() {
                  "Distance from the crack counted as the defect"),
       RealOption("-modes_memory_limit", &O::memory_limit_gb, Range::at_least(0.0), "GB",
                  "Memory the factorisation may take (0: 0.9 x available)"),
-      FlagOption("-force", &O::force, "Factor even when MUMPS's estimate exceeds the limit"),
       ChoiceOption("-modes_crack", &O::contact, {"open", "contact"},
                    "The crack in the modes: open (faces free) or contact (linearised at -crack_a0, as the harmonic "
                    "start)"),

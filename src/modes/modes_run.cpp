@@ -74,6 +74,7 @@ PetscErrorCode ModesRun::Setup(const mesh::Specimen& specimen, const coupling::S
   double longest;
   PetscCall(CrackDistanceOf(specimen, scene.specimen, &crack_distance, &longest));
   PetscCall(modes::ReadModesOptions(comm, excitation.signal.frequency, longest / 2, &options_));
+  options_.force = scene.specimen.source.force;
   PetscLogStage stage;
   PetscCall(PetscLogStageRegister("Modes", &stage));
   const double t0 = MPI_Wtime();

@@ -1,7 +1,8 @@
 // Requirement (issue 42 item 2): an option declared once (options/petsc/option_spec.hpp)
 // gives its reading, its range check and its one-line error. For every declared list
 // (-periodic*, -heat_* material and discretisation, -wave_*, -material_* and damping, -modes_*,
-// the run control and recording, -camera*, -crack_a0*, -heat_bc* and the film, -source_*):
+// the run control and recording, -camera*, -crack_a0*, -heat_bc* and the film, -source_*, the
+// specimen, its mesh and heat mesh):
 //  - the names are unique across the lists and each is read (set alone, it changes its field);
 //  - with nothing given, every default lies in its range (the read succeeds);
 //  - a value just outside a numeric range is refused with PETSC_ERR_USER_INPUT and a message
@@ -17,11 +18,15 @@
 #include "vibrotherm/coupling/continuation/periodic_options.hpp"
 #include "vibrotherm/coupling/observe/camera_options.hpp"
 #include "vibrotherm/coupling/run/driver_options.hpp"
+#include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/heat/heat_boundary.hpp"
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
+#include "vibrotherm/mesh/specimen_options.hpp"
 #include "vibrotherm/modes/modal_analysis.hpp"
+#include "vibrotherm/options/petsc/option_audit.hpp"
+#include "vibrotherm/options/petsc/option_registry.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
 #include <gtest/gtest.h>
@@ -107,7 +112,10 @@ TEST(OptionSpecs, DeclaredOnceCheckedAndRefusedNamingTheOption) {
   edges.T_ext = 293.15;
   CheckList(heat::HeatBoundaryOptionSpecs(), &seen, edges);
   CheckList(wave::ExcitationOptionSpecs(), &seen);
-  EXPECT_GE(seen.size(), 80u);
+  CheckList(mesh::SpecimenGeometryOptionSpecs(), &seen);
+  CheckList(mesh::HeatMeshOptionSpecs(), &seen);
+  CheckList(mesh::MeshSourceOptionSpecs(), &seen);
+  EXPECT_GE(seen.size(), 115u);
 }
 
 TEST(OptionSpecs, EachOptionFillsItsField) {
@@ -158,6 +166,50 @@ TEST(OptionSpecs, EachOptionFillsItsField) {
   EXPECT_EQ(source.excitation.type, wave::SourceType::Traction);
   EXPECT_EQ(source.excitation.signal.frequency, 2e4);
   EXPECT_EQ(source.sweep, (std::vector<double>{1e4, 3e4}));
+  mesh::SpecimenGeometryInput specimen;  // an edge into an array's entry, a list of choices, a patch
+  ASSERT_EQ(ReadWith(mesh::SpecimenGeometryOptionSpecs(), "-edge_left free -edge_back fixed -crack_shape ellipse,rectangle "
+                     "-mesh_cell tri -specimen_depth 0.01 -source_patch_edge front -source_patch_width 0.004,0.002",
+                     &specimen, &message), 0) << message;
+  EXPECT_EQ(specimen.geometry.edges[static_cast<int>(mesh::Side::Left)], mesh::EdgeKind::Free);
+  EXPECT_EQ(specimen.geometry.depth_edges[1], mesh::EdgeKind::Fixed);
+  EXPECT_EQ(specimen.shapes, (std::vector<PetscInt>{1, 0}));
+  EXPECT_EQ(specimen.cell, mesh::MeshCell::Triangle);
+  EXPECT_TRUE(specimen.geometry.patch.on);
+  EXPECT_EQ(specimen.geometry.patch.side, mesh::Side::Front);
+  EXPECT_EQ(specimen.geometry.patch.width2, 0.002);
+  mesh::HeatMeshInput heat_mesh;  // a size given is kept, one not given stays unset
+  ASSERT_EQ(ReadWith(mesh::HeatMeshOptionSpecs(), "-heat_mesh_growth 1.5", &heat_mesh, &message), 0) << message;
+  EXPECT_EQ(heat_mesh.options.growth, 1.5);
+  EXPECT_FALSE(heat_mesh.options.h.has_value());
+}
+
+TEST(OptionRegistry, HoldsExactlyTheOptionsTheSceneReads) {
+  // The typo check knows vibrotherm's options from the registry alone: every option ReadScene
+  // declares to PETSc (captured from PETSc's help printer, as -help shows them) must be in it,
+  // and nothing in it may be an option no reader reads. Run in a process of its own (ctest
+  // option_registry): PETSc prints an options block's help only the first time it is read.
+  std::vector<DeclaredOption> captured;
+  ASSERT_EQ(OptionAuditBegin(false), 0);
+  coupling::Scene scene;
+  const PetscErrorCode status = coupling::ReadScene(PETSC_COMM_WORLD, &scene);
+  ASSERT_EQ(OptionAuditEnd(&captured), 0);
+  ASSERT_EQ(status, 0);
+  PetscMPIInt rank;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  if (rank != 0) return;  // the printer prints on rank 0
+  OptionRegistry registry;
+  coupling::AddSceneOptions(&registry);
+  const std::vector<std::string> known = registry.names();
+  std::set<std::string> read;
+  for (const DeclaredOption& d : captured) {
+    read.insert(d.name);
+    EXPECT_TRUE(std::binary_search(known.begin(), known.end(), d.name)) << d.name << " is read but not in the registry";
+  }
+  for (const std::string& name : known) EXPECT_TRUE(read.count(name)) << name << " is in the registry but never read";
+  EXPECT_GE(known.size(), 120u);
+  const std::vector<std::string> valued = registry.names_with_values();
+  EXPECT_FALSE(std::binary_search(valued.begin(), valued.end(), "-camera"));  // a flag needs no value
+  EXPECT_TRUE(std::binary_search(valued.begin(), valued.end(), "-mesh_h"));
 }
 
 }  // namespace

@@ -79,7 +79,8 @@ with tempfile.TemporaryDirectory() as tmp:
         check(span < 2e-3, "the profile zooms to the heated band: %s from %g to %g" % (ax.get_xlabel(), low, high))
 
     interrupted = os.path.join(tmp, "interrupted")
-    p = subprocess.Popen([exe] + paper + coarse + ["-final_time", "5e-3", "-checkpoint_every_s", "0",
+    # The source on for all of it: with the paper's 1 ms, the run could end within the 1 s wait below.
+    p = subprocess.Popen([exe] + paper + coarse + ["-final_time", "5e-3", "-source_duration", "5e-3", "-checkpoint_every_s", "0",
                                                   "-output_dir", interrupted], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     deadline = time.time() + 120

@@ -8,9 +8,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vibrotherm/mesh/heat_mesh.hpp"
 #include "vibrotherm/mesh/scene_geometry.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm::mesh {
 
@@ -27,6 +29,31 @@ struct HeatMeshOptions {
   bool graded = true;  ///< -heat_mesh graded|wave
   std::optional<double> h_crack, growth, h_along, h, grading;
 };
+
+enum class MeshCell { Quad, Triangle };  ///< -mesh_cell quad|tri
+
+/// The generated specimen's options as typed: the per-crack lists become the geometry's
+/// cracks once checked against each other.
+struct SpecimenGeometryInput {
+  SpecimenGeometry geometry;
+  MeshCell cell = MeshCell::Quad;
+  std::vector<double> centers, lengths, angles, widths, tilts;  ///< -crack_center, _length, _angle, _width, _tilt
+  std::vector<PetscInt> shapes;                                 ///< -crack_shape (CrackShape indices)
+};
+/// -specimen_*, -crack_* of the geometry, -mesh_h*, -mesh_grading, -mesh_cell, -mesh_crack_mirror,
+/// -edge_*, -source_patch_*, declared (option_spec.hpp).
+const std::vector<OptionSpec<SpecimenGeometryInput>>& SpecimenGeometryOptionSpecs();
+
+/// -mesh_file, -heat_mesh_file, -dm_refine, -force, declared.
+const std::vector<OptionSpec<MeshSource>>& MeshSourceOptionSpecs();
+
+/// The -heat_mesh* options with the sizes -help shows (the defaults for this geometry).
+struct HeatMeshInput {
+  HeatMeshOptions options;
+  HeatMeshSizes shown;
+};
+/// -heat_mesh and -heat_mesh_h_crack, _growth, _h_along, _h, _grading, declared.
+const std::vector<OptionSpec<HeatMeshInput>>& HeatMeshOptionSpecs();
 
 struct SpecimenOptions {
   MeshSource source;

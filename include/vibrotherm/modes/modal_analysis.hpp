@@ -40,10 +40,10 @@ struct ModesOptions {
   double target_frequency = 0.0;  ///< -modes_target_frequency [Hz] (default: -source_frequency)
   double defect_radius = 0.0;     ///< -modes_defect_radius [m] (default: half the longest crack)
   double memory_limit_gb = 0.0;   ///< -modes_memory_limit [GB] for the factorisation (0: 0.9 x the memory available)
-  bool force = false;             ///< -force: factor even above that
+  bool force = false;             ///< -force (the mesh's option, MeshSource): factor even above that
   bool contact = false;           ///< -modes_crack contact: the contact linearised at a0 (else open)
 };
-/// The -modes_* options (and -force), declared (option_spec.hpp).
+/// The -modes_* options, declared (option_spec.hpp).
 const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs();
 PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
 

@@ -21,6 +21,8 @@
 #include "vibrotherm/mesh/specimen.hpp"
 #include "vibrotherm/modes/modes_run.hpp"
 #include "vibrotherm/options/petsc/option_audit.hpp"
+#include "vibrotherm/options/petsc/option_registry.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 #include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
 #include "vibrotherm/util/version.hpp"
@@ -31,44 +33,53 @@ namespace vibrotherm::app {
 namespace {
 
 struct AppOptions {
-  PetscBool mesh_only = PETSC_FALSE, modes = PETSC_FALSE, allow_unknown = PETSC_FALSE;
-  PetscBool overwrite = PETSC_FALSE;  ///< -overwrite: discard an interrupted run's checkpoint in -output_dir
+  bool mesh_only = false, modes = false, allow_unknown = false;
+  bool overwrite = false;  ///< -overwrite: discard an interrupted run's checkpoint in -output_dir
+  bool debug = false;      ///< read by the error handler (util/errors.hpp); declared here
   PetscBool help = PETSC_FALSE;  ///< asked by the user (the option audit adds -help for itself)
-  PetscBool debug = PETSC_FALSE;  ///< read by the error handler (util/errors.hpp); declared here
-  char output_dir[PETSC_MAX_PATH_LEN] = "results/run";
-  char restart[PETSC_MAX_PATH_LEN] = "";  ///< -restart DIR: continue the run whose checkpoint is in DIR
+  std::string output_dir = "results/run";
+  std::string restart;  ///< -restart DIR: continue the run whose checkpoint is in DIR
 };
+
+const std::vector<OptionSpec<AppOptions>>& AppOptionSpecs() {
+  using A = AppOptions;
+  static const std::vector<OptionSpec<A>> specs = {
+      FlagOption("-mesh_only", &A::mesh_only, "Build the specimen mesh, write it and stop"),
+      FlagOption("-modes", &A::modes, "Natural modes of the cracked specimen (SLEPc) instead of a time run"),
+      TextOption("-output_dir", &A::output_dir, "Output directory (scripts/run: results/<options-file-stem>)"),
+      TextOption("-restart", &A::restart,
+                 "Continue the interrupted run whose outputs and checkpoint.h5 are in this directory (the same "
+                 "options; it becomes the output directory)"),
+      FlagOption("-overwrite", &A::overwrite,
+                 "Write into an -output_dir that holds an earlier run's results or an interrupted run's checkpoint, "
+                 "replacing them (without it such a directory is refused; -restart continues an interrupted run)"),
+      FlagOption("-allow_unknown", &A::allow_unknown,
+                 "Pass options vibrotherm does not know on to PETSc (a warning, not an error)"),
+      FlagOption("-debug", &A::debug, "Errors with PETSc's full trace after the one line, MPI_Abort's banner and "
+                 "HDF5's diagnostics"),
+  };
+  return specs;
+}
+
+/// Every option vibrotherm declares: its own, the scene's and -modes'.
+OptionRegistry DeclaredOptions() {
+  OptionRegistry registry;
+  registry.Add(AppOptionSpecs()).Add(modes::ModesOptionSpecs());
+  coupling::AddSceneOptions(&registry);
+  return registry;
+}
 
 PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "vibrotherm", nullptr);
-  PetscCall(PetscOptionsBool("-mesh_only", "Build the specimen mesh, write it and stop", nullptr, o->mesh_only,
-                             &o->mesh_only, nullptr));
-  PetscCall(PetscOptionsBool("-modes", "Natural modes of the cracked specimen (SLEPc) instead of a time run", nullptr,
-                             o->modes, &o->modes, nullptr));
-  PetscCall(PetscOptionsString("-output_dir", "Output directory (scripts/run: results/<options-file-stem>)", nullptr,
-                               o->output_dir, o->output_dir, sizeof(o->output_dir), nullptr));
-  PetscCall(PetscOptionsString("-restart",
-                               "Continue the interrupted run whose outputs and checkpoint.h5 are in this directory "
-                               "(the same options; it becomes the output directory)",
-                               nullptr, o->restart, o->restart, sizeof(o->restart), nullptr));
-  PetscCall(PetscOptionsBool("-overwrite",
-                             "Write into an -output_dir that holds an earlier run's results or an interrupted run's "
-                             "checkpoint, replacing them (without it such a directory is refused; -restart continues "
-                             "an interrupted run)",
-                             nullptr, o->overwrite, &o->overwrite, nullptr));
-  PetscCall(PetscOptionsBool("-allow_unknown", "Pass options vibrotherm does not know on to PETSc (a warning, not an error)",
-                             nullptr, o->allow_unknown, &o->allow_unknown, nullptr));
-  PetscCall(PetscOptionsBool("-debug", "Errors with PETSc's full trace after the one line, MPI_Abort's banner and HDF5's "
-                             "diagnostics", nullptr, o->debug, &o->debug, nullptr));
-  PetscOptionsEnd();
+  PetscCall(ReadOptionSpecs(comm, "vibrotherm", AppOptionSpecs(), o));
   bool dir_set;
   PetscCall(OptionGiven(nullptr, "-output_dir", &dir_set));
-  if (o->restart[0]) {
+  if (!o->restart.empty()) {
     PetscCheck(!dir_set || SameDirectory(o->output_dir, o->restart), comm, PETSC_ERR_USER_INPUT,
-               "-restart %s writes into that directory: -output_dir %s is another one", o->restart, o->output_dir);
+               "-restart %s writes into that directory: -output_dir %s is another one", o->restart.c_str(),
+               o->output_dir.c_str());
     PetscCheck(!o->modes && !o->mesh_only, comm, PETSC_ERR_USER_INPUT, "-restart continues a time run, not -modes or -mesh_only");
-    PetscCall(PetscStrncpy(o->output_dir, o->restart, sizeof(o->output_dir)));
+    o->output_dir = o->restart;
   }
   PetscFunctionReturn(0);
 }
@@ -122,19 +133,18 @@ PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
 /// every value there, and an output directory this run may use. *declared: the options
 /// declared so far (rank 0).
 PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene,
-                                  std::vector<DeclaredOption>* declared, io::RunSummary* summary) {
+                                  const OptionRegistry& registry, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   PetscCall(DeclareOptions(comm, scene));
-  OptionAuditDeclared(declared);
   // Likely typos now (PETSc's objects declare their options later); -allow_unknown's warning comes once, after.
-  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, *declared, false, true));
-  PetscCall(CheckMissingValues(comm, *declared));
+  if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, registry.names(), false, true));
+  PetscCall(CheckMissingValues(comm, registry.names_with_values()));
   // A wave no mesh of the requested sizes can carry, refused before meshing with them.
   if (scene.run.physics != coupling::PhysicsChoice::Heat && !app.modes && !app.mesh_only) {
     PetscCall(coupling::CheckSourceBeforeMeshing(comm, scene, mesh::FinestRequestedElement(scene.specimen), summary));
   }
   // A file in its place, another run there, an interrupted run's checkpoint, an earlier run's results: refused now.
-  PetscCall(CheckOutputDirectory(comm, app.output_dir, app.restart[0] != '\0', app.overwrite));
+  PetscCall(CheckOutputDirectory(comm, app.output_dir, !app.restart.empty(), app.overwrite));
   PetscFunctionReturn(0);
 }
 
@@ -156,7 +166,7 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   if (app.modes || app.mesh_only) PetscFunctionReturn(0);
   if (scene.run.physics != coupling::PhysicsChoice::Heat)
     PetscCall(coupling::CheckSourceValidity(comm, scene, summary->mesh.h_max, summary));
-  PetscCall(simulation->Setup(*specimen, scene, summary, app.restart[0] != '\0'));
+  PetscCall(simulation->Setup(*specimen, scene, summary, !app.restart.empty()));
   PetscFunctionReturn(0);
 }
 
@@ -243,27 +253,29 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
     PetscFunctionReturn(io::RunLogClose());
   }
   io::RunSummary summary;
-  PetscCall(CheckBeforeMeshing(comm, app, scene, &declared, &summary));
+  const OptionRegistry registry = DeclaredOptions();
+  PetscCall(CheckBeforeMeshing(comm, app, scene, registry, &summary));
+  OptionAuditDeclared(&declared);
   // The directory is this run's from now on: a second run started at the same time is refused before it meshes.
   const std::string dir = app.output_dir;
   OutputDirectory output;
   PetscCall(output.Claim(comm, dir));
   store::Checkpoint checkpoint(comm);
-  if (app.restart[0]) PetscCall(ReadCheckpointEarly(comm, app, command_line, declared, &checkpoint));
+  if (!app.restart.empty()) PetscCall(ReadCheckpointEarly(comm, app, command_line, declared, &checkpoint));
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
   PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
   // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
-  PetscCall(CheckUnknownOptions(comm, declared, app.allow_unknown));
+  PetscCall(CheckUnknownOptions(comm, registry.names(), app.allow_unknown));
   PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
   RecordRun(command_line, declared, scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
   coupling::RunControl control;
   control.fingerprint = OptionFingerprint(summary.option_values);
-  if (app.restart[0]) {
+  if (!app.restart.empty()) {
     PetscCall(CheckRestartOptions(comm, dir, control.fingerprint, checkpoint));
     control.restart = &checkpoint;
     summary.restarted_from = dir + "/checkpoint.h5";

@@ -206,14 +206,13 @@ PetscErrorCode OptionAuditEnd(std::vector<DeclaredOption>* declared) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared_options,
-                                   bool allow_unknown, bool likely_typos_only) {
+PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<std::string>& known, bool allow_unknown,
+                                   bool likely_typos_only) {
   PetscFunctionBeginUser;
-  const std::vector<std::string> declared = Names(declared_options);
   std::string unknown, nearest;
   for (const std::string& name : OptionsLeft()) {
-    if (PetscOwned(name) || std::binary_search(declared.begin(), declared.end(), "-" + name)) continue;
-    const std::string near = options::nearest_name("-" + name, declared);
+    if (PetscOwned(name) || std::binary_search(known.begin(), known.end(), "-" + name)) continue;
+    const std::string near = options::nearest_name("-" + name, known);
     if (likely_typos_only && near.empty()) continue;
     unknown = "-" + name;
     nearest = near;
@@ -274,25 +273,24 @@ PetscErrorCode WarnUnreadSolverOptions(MPI_Comm comm, const std::vector<Declared
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<DeclaredOption>& declared) {
+PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<std::string>& names) {
   PetscFunctionBeginUser;
   // PETSc takes "-mesh_h" without a value (or with "") as not given: the run would
-  // go on with the default. Flags (shown TRUE or FALSE) need no value.
+  // go on with the default.
   std::string missing;
-  for (const DeclaredOption& d : declared) {
-    // PETSc's own: viewers and monitors are flags too (-heat_ts_monitor), PETSc checks its values.
-    if (d.value == "TRUE" || d.value == "FALSE" || PetscOwned(d.name.substr(1))) continue;
+  for (const std::string& name : names) {
+    if (PetscOwned(name.substr(1))) continue;  // -dm_refine: PETSc's prefix, its reader checks
     PetscBool given = PETSC_FALSE;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, d.name.c_str(), &given));
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &given));
     if (!given) continue;
     char value[8] = "";
-    PetscCall(PetscOptionsGetString(nullptr, nullptr, d.name.c_str(), value, sizeof(value), nullptr));
+    PetscCall(PetscOptionsGetString(nullptr, nullptr, name.c_str(), value, sizeof(value), nullptr));
     if (value[0] == '\0') {
-      missing = d.name;
+      missing = name;
       break;
     }
   }
-  // Rank 0 saw the help (the declared list): it decides for all.
+  // Every rank holds the same options and names: rank 0 decides for all.
   int found = missing.empty() ? 0 : 1;
   PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, comm));
   PetscCheck(!found, comm, PETSC_ERR_USER_INPUT, "%s: needs a value", missing.c_str());

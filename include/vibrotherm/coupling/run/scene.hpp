@@ -11,6 +11,7 @@
 #include "vibrotherm/heat/heat_solver.hpp"
 #include "vibrotherm/interface/approach_profile.hpp"
 #include "vibrotherm/mesh/specimen_options.hpp"
+#include "vibrotherm/options/petsc/option_registry.hpp"
 #include "vibrotherm/wave/excitation.hpp"
 #include "vibrotherm/wave/material.hpp"
 #include "vibrotherm/wave/wave_solver.hpp"
@@ -42,5 +43,8 @@ struct Scene {
 
 /// Reads and checks every simulation option. Collective.
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* scene);
+
+/// Adds the declarations of every option ReadScene reads (scene_options.cpp).
+void AddSceneOptions(OptionRegistry* registry);
 
 }  // namespace vibrotherm::coupling

@@ -28,12 +28,12 @@ PetscErrorCode OptionAuditEnd(std::vector<DeclaredOption>* declared);
 /// The options declared so far, while listening (rank 0; empty elsewhere).
 void OptionAuditDeclared(std::vector<DeclaredOption>* declared);
 
-/// Options given but never read that are neither declared nor under a PETSc solver
-/// prefix of the program (-wave_ts_*, -heat_ksp_*, ...) nor PETSc's own: an error
-/// naming the first with the nearest declared name, or (allow_unknown) a warning.
-/// likely_typos_only: only names close to a declared one (before meshing, when
-/// PETSc's objects have not declared theirs yet). Collective.
-PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared, bool allow_unknown,
+/// Options given but never read that are neither vibrotherm's (`known`: the registry's
+/// sorted names, option_registry.hpp) nor under a PETSc solver prefix of the program
+/// (-wave_ts_*, -heat_ksp_*, ...) nor PETSc's own: an error naming the first with the
+/// nearest known name, or (allow_unknown) a warning. likely_typos_only: only names close
+/// to a known one (before meshing, when PETSc's objects have not read theirs yet). Collective.
+PetscErrorCode CheckUnknownOptions(MPI_Comm comm, const std::vector<std::string>& known, bool allow_unknown,
                                    bool likely_typos_only = false);
 
 /// Options under the prefixes of vibrotherm's PETSc objects (-wave_ts_*,
@@ -49,9 +49,9 @@ PetscErrorCode CheckSolverOptionsRead(MPI_Comm comm, const std::vector<DeclaredO
 /// solving (those CheckSolverOptionsRead leaves to the solves). Collective.
 PetscErrorCode WarnUnreadSolverOptions(MPI_Comm comm, const std::vector<DeclaredOption>& declared);
 
-/// A declared option given without a value ("-mesh_h" or "-mesh_h ''"), which
-/// PETSc's readers take as not given: an error "<name>: needs a value" (flags,
-/// shown TRUE or FALSE, excepted). Collective.
-PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<DeclaredOption>& declared);
+/// One of `names` (vibrotherm's options that take a value, OptionRegistry::names_with_values)
+/// given without a value ("-mesh_h" or "-mesh_h ''"), which PETSc's readers take as not
+/// given: an error "<name>: needs a value". Collective.
+PetscErrorCode CheckMissingValues(MPI_Comm comm, const std::vector<std::string>& names);
 
 }  // namespace vibrotherm
