@@ -202,6 +202,21 @@ class Run:
 
     table = columns  # the plots' name
 
+    def rows(self, name):
+        """A CSV output's rows as dicts of the texts written (csv.DictReader): what a check that
+        compares written values reads; MissingOutput when the file is missing."""
+        import csv
+
+        with open(self.need(name), newline="") as f:
+            return list(csv.DictReader(f))
+
+    def h5(self, name):
+        """An HDF5 output opened for reading (h5py.File: `with run.h5("fields.h5") as f`); MissingOutput
+        when the file is missing."""
+        import h5py
+
+        return h5py.File(self.need(name), "r")
+
     def csv(self, name):
         """A CSV output as a pandas DataFrame (csv_tables.read_frame: the file's columns, units in
         attrs["units"]); MissingOutput when the file is missing. Read anew at every call."""

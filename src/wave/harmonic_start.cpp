@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "vibrotherm/util/heartbeat.hpp"
-#include "vibrotherm/options/query/option_query.hpp"
 #include "vibrotherm/wave/factor_memory.hpp"
 #include "vibrotherm/wave/harmonic_start.hpp"
 #include "vibrotherm/wave/harmonic_krylov.hpp"
@@ -238,12 +237,10 @@ PetscErrorCode HarmonicStart::SolveSystem(double omega, Mat Z, Vec rhs, Vec U) c
   MPI_Comm comm = PetscObjectComm((PetscObject)op_.dm);
   HarmonicSolver solver = op_.options->harmonic_solver;
   if (solver != HarmonicSolver::kKrylov) {
-    bool force = false;
-    PetscCall(OptionFlag(nullptr, "-force", &force));  // declared with the mesh options
     bool fits = true;
     PetscCall(CheckFactorMemory(Z, "wave_harmonic_",
                                 {"Harmonic start", "-wave_harmonic_memory_limit", op_.options->harmonic_memory_limit_gb,
-                                 force, solver == HarmonicSolver::kAuto},
+                                 op_.options->harmonic_force, solver == HarmonicSolver::kAuto},
                                 &fits));
     solver = fits ? HarmonicSolver::kDirect : HarmonicSolver::kKrylov;
   }

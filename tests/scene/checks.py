@@ -3,6 +3,17 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
+import package  # noqa: E402,F401  (the vibrotherm package of this checkout)
+import vibrotherm  # noqa: E402
+
+
+def outputs(*directory):
+    """A run's outputs (its directory, or the parts of its path), read through the vibrotherm
+    package, the one library that reads them: .summary, .rows("probes.csv"), .h5("fields.h5"),
+    .energy(), ..."""
+    return vibrotherm.Run(os.path.join(*directory))
+
 
 class Checks:
     def __init__(self, name):

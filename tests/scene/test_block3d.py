@@ -28,13 +28,12 @@
    -crack_shape) on a 2D specimen.
 
 usage: test_block3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, one_line_error
+from checks import Checks, one_line_error, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("block3d")
@@ -63,7 +62,7 @@ def check_fields(out, summary, cells=CELLS, last=1):
     cracks = open(os.path.join(out, "fields_cracks.xmf")).read()
     check('TopologyType="Hexahedron"' in wave and 'GeometryType="XYZ"' in wave, "fields_wave.xmf: hexahedra, XYZ")
     check('TopologyType="Quadrilateral" NumberOfElements="%d"' % cells in cracks, "fields_cracks.xmf: a square a cell")
-    with h5py.File(os.path.join(out, "fields.h5"), "r") as f:
+    with outputs(out).h5("fields.h5") as f:
         check(f["wave/displacement_%d" % last].shape[1] == 3, "3 displacement components")
         x = f["cracks/geometry"][:].reshape(-1, 4, 3)
         W = f["cracks/dissipated_energy_%d" % last][:].ravel()
@@ -80,7 +79,7 @@ def check_mesh_file(out, mesh):
     xmf = open(os.path.join(out, "mesh.xmf")).read()
     check(xmf.count('TopologyType="Hexahedron"') == 2 and 'TopologyType="Quadrilateral"' in xmf,
           "mesh.xmf: two hexahedral grids and the crack's quadrilaterals")
-    with h5py.File(os.path.join(out, "mesh.h5"), "r") as f:
+    with outputs(out).h5("mesh.h5") as f:
         for grid, cells, corners in (("wave", mesh["cells"], 8), ("cracks", mesh["cohesive_cells"], 4),
                                      ("heat", mesh["heat_cells"], 8)):
             shape = f[grid + "/topology"].shape
@@ -110,7 +109,7 @@ def check_ellipse(tmp):
     if r.returncode:
         return
     faces, cells = staircase(6, 4)
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = outputs(out).summary
     mesh = summary["mesh"]
     check(mesh["cohesive_cells"] == faces and mesh["cracks"][0]["facets"] == faces,
           "ellipse: cohesive cells %s, faces %s, expected %d" % (mesh["cohesive_cells"], mesh["cracks"][0]["facets"], faces))
@@ -139,9 +138,9 @@ with tempfile.TemporaryDirectory() as tmp:
         if r.returncode:
             continue
         check("%d faces (= cohesive cells)" % FACES in r.stdout, "the run prints the crack's faces and cohesive cells")
-        summary = json.load(open(os.path.join(out, "summary.json")))
-        energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
-        probes = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+        summary = outputs(out).summary
+        energy = outputs(out).rows("energy.csv")
+        probes = outputs(out).rows("probes.csv")
         runs[ranks] = (energy, probes)
         mesh = summary["mesh"]
         check(summary.get("dimension") == 3, "summary dimension %s" % summary.get("dimension"))

@@ -16,14 +16,13 @@ source in an infinite plate; the sink edges are 4 mm away, 3 diffusion lengths a
 - bad camera options are refused with one line naming the option, exit 2, nothing written.
 
 usage: test_camera.py VIBROTHERM MPIEXEC"""
-import json, math, os, re, subprocess, sys, tempfile
+import math, os, re, subprocess, sys, tempfile
 import xml.etree.ElementTree as ET
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, mpiexec = sys.argv[1], sys.argv[2]
 check = Checks("camera")
@@ -49,7 +48,7 @@ def run(tmp, name, extra, ranks=1):
 
 
 def read_frames(out):
-    with h5py.File(os.path.join(out, "camera.h5"), "r") as f:
+    with outputs(out).h5("camera.h5") as f:
         g = f["camera"]
         n = g["time"].shape[0]
         clean = np.array([g["clean_%d" % k][:] for k in range(n)])
@@ -131,7 +130,7 @@ def check_noise(clean, noisy):
 
 
 def check_summary(out, clean):
-    s = json.load(open(os.path.join(out, "summary.json")))
+    s = outputs(out).summary
     peak = clean.max()
     check(abs(s["camera_peak_snr"] - peak / netd) <= 1e-12 * peak / netd,
           "camera_peak_snr %s vs best clean pixel / NETD %s" % (s["camera_peak_snr"], peak / netd))
@@ -198,7 +197,7 @@ def coupled(tmp):
     if not outs[0]:
         return
     clean, _, times, _, _, _ = read_frames(outs[0])
-    s = json.load(open(os.path.join(outs[0], "summary.json")))
+    s = outputs(outs[0]).summary
     check(np.allclose(times, [[2.5e-6, 0, 5e-6], [1.25e-5, 1e-5, 1.5e-5]], rtol=0, atol=1e-18),
           "coupled: frame windows %s" % times.tolist())
     check(0 < clean.max() <= s["field_max_temperature_rise"], "coupled: best pixel %g, field max %g"

@@ -11,10 +11,10 @@ the waves stopped and finishes bit-identical (before: no checkpoint there, with 
 default -checkpoint_every_s the restart was refused and the run lost).
 
 usage: test_checkpoint_restart.py VIBROTHERM MPIEXEC"""
-import json, os, signal, subprocess, sys, tempfile
+import os, signal, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 import restart_compare
 from restart_compare import why
 
@@ -59,7 +59,7 @@ with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "usr1")
     code, err = interrupted(out, "usr1")
     check(code == 128 + signal.SIGUSR1, "SIGUSR1: exit %d, expected %d (%s)" % (code, 128 + signal.SIGUSR1, why(err)))
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = outputs(out).summary
     check(summary["complete"] is False, 'SIGUSR1: summary.json "complete": false')
     check(all(not os.path.exists(os.path.join(out, n)) and os.path.exists(os.path.join(out, n + ".partial")) for n in TEXT),
           "SIGUSR1: only .partial outputs, nothing under a final name")

@@ -8,12 +8,12 @@ with opposite source signs: every linear response, including the window's
 spectral leakage, is odd in A and cancels; the contact nonlinearity remains.
 
 usage: test_clapping_harmonics.py VIBROTHERM"""
-import csv, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe = sys.argv[1]
 check = Checks("clapping harmonics")
@@ -41,7 +41,7 @@ def transmitted(tmp, A):
     check(r.returncode == 0, "A = %g: %s" % (A, r.stderr[-1500:]))
     if r.returncode:
         return None
-    rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+    rows = outputs(out).rows("probes.csv")
     return np.array([float(x["t"]) for x in rows]), np.array([float(x["uy"]) for x in rows])
 
 

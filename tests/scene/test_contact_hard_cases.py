@@ -6,10 +6,10 @@ of magnitude less than the reference; a fully open crack never touches. Each
 case with the global step and with local time stepping (-wave_lts on).
 
 usage: test_contact_hard_cases.py VIBROTHERM SOURCE_DIR"""
-import json, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, src = sys.argv[1:3]
 check = Checks("contact hard cases")
@@ -34,7 +34,7 @@ with tempfile.TemporaryDirectory() as tmp:
             check(r.returncode == 0, "%s: run failed: %s" % (key, r.stderr[-1500:]))
             if r.returncode:
                 continue
-            s = json.load(open(os.path.join(out, "summary.json")))
+            s = outputs(out).summary
             results[key] = s
             check(all(math.isfinite(s[k]) for k in ("dissipated_energy", "max_budget_error")), "%s: not finite" % key)
             check(s["max_budget_error"] < 1e-2, "%s: budget error %g" % (key, s["max_budget_error"]))

@@ -13,10 +13,10 @@ the error was 36 % of the mean at the pulses. The other crack probes (ξ = 0.25,
 dissipated.
 
 usage: test_crack_sawtooth.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 sys.path.insert(0, os.path.join(src, "scripts", "lib"))
@@ -31,7 +31,7 @@ with tempfile.TemporaryDirectory() as tmp:
     args = ["-options_file", os.path.join(src, "options/paper.opts"), "-final_time", "2.0001e-4", "-output_times",
             "2e-4", "-crack_state_every", "1", "-probe_every", "1"]
     if run_scene(check, exe, args, out, mpiexec, 2):
-        summary = json.load(open(os.path.join(out, "summary.json")))
+        summary = outputs(out).summary
         record = line_source.wave_step_record(os.path.join(out, "crack_state.csv"), os.path.join(out, "crack_heat.h5"))
         energy = crack_sawtooth.record_energy(record)
         check(abs(energy / summary["dissipated_energy"] - 1) < 1e-7,

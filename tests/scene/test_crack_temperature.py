@@ -8,13 +8,13 @@ ranks; crack_heat.h5 holds exactly the energy the interface dissipated; 2 ranks 
 The reference itself is first checked against Carslaw & Jaeger's finite line source.
 
 usage: test_crack_temperature.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 import numpy as np
 from scipy.integrate import quad
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 sys.path.insert(0, os.path.join(src, "scripts", "lib"))
@@ -53,7 +53,7 @@ def run(tmp, ranks):
 
 
 def compare(out, ranks):
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = outputs(out).summary
     rec = line_source.CrackHeat(os.path.join(out, "crack_heat.h5"))
     # ∫ q ds over the crack is Σ w_c q_c: the weights are the elements' lumped basis integrals.
     weights = np.zeros(rec.density.shape[1])

@@ -20,10 +20,10 @@ Bad input: two cracks overlapping on one plane are refused in one line naming -c
 -crack_shape.
 
 usage: test_cracks_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, refused, run_scene
+from checks import Checks, refused, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("cracks_3d")
@@ -44,7 +44,7 @@ def by_probe(rows):
 
 
 def check_mirror(out):
-    probes = by_probe(list(csv.DictReader(open(os.path.join(out, "probes.csv")))))
+    probes = by_probe(outputs(out).rows("probes.csv"))
     heated = max(float(r["temperature"]) for r in probes[4])
     check(heated > 0, "crack 1's centre heats: %s K" % heated)
     for a, b in ((0, 1), (2, 3), (4, 5)):
@@ -62,7 +62,7 @@ def check_mirror(out):
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "symmetric")
     if run_scene(check, exe, base + ["-crack_center", SYMMETRIC], out, mpiexec, 2):
-        s = json.load(open(os.path.join(out, "summary.json")))
+        s = outputs(out).summary
         cracks = s["mesh"]["cracks"]
         check([c["name"] for c in cracks] == ["crack1", "crack2"], "summary cracks %s" % cracks)
         check(all(c["facets"] == FACES and abs(c["area"] - 2.4e-5) < 1e-12 for c in cracks),
@@ -75,7 +75,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(s["max_budget_error"] < 1e-5, "budget error %s" % s["max_budget_error"])
         friction = s["heat_deposited_by"].get("friction", 0)
         check(abs(friction / s["dissipated_energy"] - 1) < 1e-10, "friction heat %s" % friction)
-        rows = list(csv.DictReader(open(os.path.join(out, "crack_state.csv"))))
+        rows = outputs(out).rows("crack_state.csv")
         ids = {r["crack"] for r in rows}
         check(ids == {"1", "2"}, "crack_state.csv cracks %s" % ids)
         for k, y in (("1", 0.007), ("2", 0.013)):  # each crack's cells near its line, s1, s2 from its own centre
@@ -91,7 +91,7 @@ with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "shifted")
     if run_scene(check, exe, base + ["-crack_center", "0.01,0.007,0.005,0.01,0.0135,0.005", "-physics", "wave"],
                  out, mpiexec, 2):
-        W = json.load(open(os.path.join(out, "summary.json")))["dissipated_energy_by_crack"]
+        W = outputs(out).summary["dissipated_energy_by_crack"]
         check(abs(W[0] / W[1] - 1) > 0.01, "shifted by half a cell: dissipated %s should differ" % W)
         print("shifted: dissipated %s (%.3g apart)" % (W, W[0] / W[1] - 1))
     refused(check, exe, base, ["-crack_center", "0.01,0.007,0.005,0.013,0.007,0.005", "-crack_angle", "0"],

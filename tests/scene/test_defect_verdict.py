@@ -25,12 +25,11 @@ import os
 import sys
 import tempfile
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 from run_data import read_csv
 
 exe, src = sys.argv[1:3]
@@ -46,7 +45,7 @@ def summary(out):
 
 
 def frames(out, kind):
-    with h5py.File(os.path.join(out, "camera.h5"), "r") as f:
+    with outputs(out).h5("camera.h5") as f:
         g = f["camera"]
         return [g["%s_%d" % (kind, k)][:] for k in range(len(g["time"]))]
 

@@ -19,12 +19,12 @@ exp(-alpha t / 2), by 8e-5 in 60 periods) driven by a traction at 100 kHz:
     probes' motion over 5 periods within 1e-6 of the amplitude; GMRES stops at 1e-8).
 
 usage: test_harmonic_start.py VIBROTHERM"""
-import json, os, re, subprocess, sys, tempfile
+import os, re, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, one_line_error, run_scene
+from checks import Checks, one_line_error, run_scene, outputs
 
 exe = sys.argv[1]
 check = Checks("harmonic start")
@@ -73,7 +73,7 @@ def compare(tmp, name, args):
             check(not_periodic(h) < 5e-3, "%s, probe %d: the harmonic start repeats from the first period" % (name, p))
             check(not_periodic(r) > 5e-2, "%s, probe %d: the rest start does not (the test can tell)" % (name, p))
             check(late < 5e-3, "%s, probe %d: the harmonic start is the steady state the rest start reaches" % (name, p))
-        s = json.load(open(os.path.join(harmonic, "summary.json")))
+        s = outputs(harmonic).summary
         check(s["max_budget_error"] < 1e-5, "%s, harmonic start: budget error %g" % (name, s["max_budget_error"]))
 
 

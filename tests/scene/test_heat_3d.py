@@ -28,13 +28,12 @@ with layers graded across the crack plane) with the friction power of its contac
    the peak: two preconditioners, each to CG's 1e-8).
 
 usage: test_heat_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("heat 3d")
@@ -54,7 +53,7 @@ def plane_source(t, q, n):
 
 
 def check_crack_state(out, cells, count):
-    rows = list(csv.DictReader(open(os.path.join(out, "crack_state.csv"))))
+    rows = outputs(out).rows("crack_state.csv")
     check(rows and list(rows[0].keys()) == "t,crack,s1,s2,x,y,z,a,b1,b2,N,T1,T2,state,power,W".split(","),
           "crack_state.csv header %s" % (list(rows[0].keys()) if rows else None))
     times = sorted({float(r["t"]) for r in rows})
@@ -66,7 +65,7 @@ def check_crack_state(out, cells, count):
     def area(r):  # the cell's area from crack_heat.h5 (crack_state.csv has 9 digits)
         d = np.linalg.norm(cells[:, :3] - np.array([float(r["x"]), float(r["y"]), float(r["z"])]), axis=1)
         return cells[np.argmin(d), 3] if d.min() < 1e-8 else np.nan
-    energy = {float(r["t"]): float(r["dissipated"]) for r in csv.DictReader(open(os.path.join(out, "energy.csv")))}
+    energy = {float(r["t"]): float(r["dissipated"]) for r in outputs(out).rows("energy.csv")}
     matched = [t for t in times if any(abs(t - e) <= 1e-12 for e in energy)]
     check(bool(matched), "a crack_state.csv time that energy.csv has")
     if matched:
@@ -78,7 +77,7 @@ def check_crack_state(out, cells, count):
 
 
 def check_heat(out):
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = outputs(out).summary
     W, by = summary["dissipated_energy"], summary["heat_deposited_by"]
     check(W > 0 and abs(by.get("friction", 0) - W) <= 1e-10 * W,
           "friction heat %s = dissipated %s" % (by.get("friction"), W))
@@ -86,7 +85,7 @@ def check_heat(out):
     check(abs(balance) <= 1e-8 * W, "heat content + losses - deposited = %.3g of %.3g" % (balance, W))
     check(summary["max_budget_error"] < 1e-5, "energy budget %.3g" % summary["max_budget_error"])
     check(summary["mesh"]["heat_cells"] > summary["mesh"]["cells"], "a heat mesh of its own, finer across the crack")
-    with h5py.File(os.path.join(out, "crack_heat.h5"), "r") as f:
+    with outputs(out).h5("crack_heat.h5") as f:
         t, q, cells = f["time"][:].ravel(), f["density"][:], f["cells"][:]
     # Q2 faces of size h: a node's area is its Simpson weights' product; the unsplit front
     # carries no cell, so the cells cover (L1 - h/3)(L2 - h/3) of the 6 x 4 mm crack.
@@ -96,7 +95,7 @@ def check_heat(out):
     i = int(np.argmin(np.linalg.norm(cells[:, :3] - np.array(CENTRE), axis=1)))
     check(np.linalg.norm(cells[i, :3] - np.array(CENTRE)) < 1e-12, "a contact cell at the crack centre")
     rows = {float(r["t"]): float(r["temperature"]) - 293.15
-            for r in csv.DictReader(open(os.path.join(out, "probes.csv"))) if r["probe"] == "0"}
+            for r in outputs(out).rows("probes.csv") if r["probe"] == "0"}
     worst, compared, last, errors = 0.0, 0, None, []
     for n in range(len(t)):
         match = [s for s in rows if abs(s - t[n]) <= 1e-12]
@@ -113,7 +112,7 @@ def check_heat(out):
           % (np.mean(errors) if errors else -1))
     check(last is not None and last <= 0.01, "crack centre vs plane source at the end: %s" % last)
     print("plane source: %d steps, worst %.4f, last %.4f" % (compared, worst, last or -1))
-    with h5py.File(os.path.join(out, "camera.h5"), "r") as f:
+    with outputs(out).h5("camera.h5") as f:
         count = summary["camera"]["frames"]
         frames = np.array([f["camera/clean_%d" % k][:] for k in range(count) if "clean_%d" % k in f["camera"]])
     check(count >= 3 and len(frames) == count, "camera.h5: %d noise-free frames of %d" % (len(frames), count))
@@ -144,12 +143,12 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 0 and bool(chosen) and chosen[0].endswith(": Jacobi"),
           "the coupled heat steps take CG + Jacobi: %s" % chosen[:2])
     if parallel:
-        ratio = json.load(open(os.path.join(tmp, "np2", "summary.json")))["derived"].get("heat_stiffness_ratio")
+        ratio = outputs(tmp, "np2").summary["derived"].get("heat_stiffness_ratio")
         check(ratio is not None and 0 < ratio <= 10, "coupled heat steps mass-dominated: ratio %s" % ratio)
         amg = os.path.join(tmp, "amg")
         if run_scene(check, exe, opts + ["-heat_pc_type", "hypre", "-heat_free_pc_type", "jacobi"], amg, mpiexec, 2):
             other = {float(r["t"]): float(r["temperature"]) - 293.15
-                     for r in csv.DictReader(open(os.path.join(amg, "probes.csv"))) if r["probe"] == "0"}
+                     for r in outputs(amg).rows("probes.csv") if r["probe"] == "0"}
             a = parallel[0]
             peak = max(abs(v) for v in a.values())
             worst = max(abs(a[s] - other.get(s, np.inf)) for s in a)

@@ -15,10 +15,10 @@ balance closes (1e-8); the ellipse on 2 ranks deposits the same and its probes a
 serial within 1e-6 of the peak (CG's relative tolerance on each step's update is 1e-8).
 
 usage: test_heat_crack_shapes_3d.py VIBROTHERM MPIEXEC"""
-import csv, json, math, os, re, subprocess, sys, tempfile
+import math, os, re, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 import plane_sources
 
 exe, mpiexec = sys.argv[1:3]
@@ -51,8 +51,8 @@ def run(tmp, shape, ranks=1):
     check(r.returncode == 0, "%s: exit %d: %s" % (shape, r.returncode, r.stderr[-1500:]))
     if r.returncode:
         return None, None, r.stdout
-    rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
-    return rows, json.load(open(os.path.join(out, "summary.json"))), r.stdout
+    rows = outputs(out).rows("probes.csv")
+    return rows, outputs(out).summary, r.stdout
 
 
 def compare(shape, rows, own, other):

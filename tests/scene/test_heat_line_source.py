@@ -8,10 +8,10 @@ layer 16, 8, 4 µm, along the crack 400, 200, 100 µm); the heat balance closes
 (content = deposited − boundary loss, 1e-3) with sink, insulated and convective edges.
 
 usage: test_heat_line_source.py VIBROTHERM"""
-import csv, json, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe = sys.argv[1]
 check = Checks("heat line source")
@@ -36,9 +36,9 @@ def run(tmp, name, extra):
     check(r.returncode == 0, "%s: %s" % (name, r.stderr[-1500:]))
     if r.returncode:
         return None, None, None
-    rows = [x for x in csv.DictReader(open(os.path.join(out, "probes.csv"))) if x["probe"] == "0"]
-    energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
-    return rows, energy, json.load(open(os.path.join(out, "summary.json")))
+    rows = [x for x in outputs(out).rows("probes.csv") if x["probe"] == "0"]
+    energy = outputs(out).rows("energy.csv")
+    return rows, energy, outputs(out).summary
 
 
 def max_error(rows, t0, t1):

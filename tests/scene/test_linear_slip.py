@@ -6,10 +6,10 @@ within 2 %, for omega Z / K = 0.3, 1 and 3 with linear elements, and for
 omega Z / K = 1 with quadratic elements (mid-side node pairs of the crack).
 
 usage: test_linear_slip.py VIBROTHERM"""
-import csv, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe = sys.argv[1]
 check = Checks("linear slip interface")
@@ -41,7 +41,7 @@ with tempfile.TemporaryDirectory() as tmp:
             if r.returncode:
                 continue
             col = "uy" if wave == "P" else "ux"
-            rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+            rows = outputs(out).rows("probes.csv")
             # The plateau of the burst (after its 2-cycle ramp, before the ramp down).
             plateau = [abs(float(x[col])) for x in rows if t_in + 3 / f <= float(x["t"]) <= t_in + (cycles - 2) / f]
             measured = max(plateau) / A

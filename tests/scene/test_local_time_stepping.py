@@ -18,10 +18,10 @@ on the paper scene's first 60 us (the crack starts to clap and rub):
     message naming -wave_lts_cfl, no output under its final name).
 
 usage: test_local_time_stepping.py VIBROTHERM MPIEXEC SOURCE_DIR"""
-import json, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 import probe_traces
 
 exe, mpiexec, src = sys.argv[1:4]
@@ -49,7 +49,7 @@ with tempfile.TemporaryDirectory() as tmp:
     ok = {name: run_scene(check, exe, base + extra, os.path.join(tmp, name)) for name, extra in runs.items()}
     ok["lts_np2"] = run_scene(check, exe, base + runs["lts"], os.path.join(tmp, "lts_np2"), mpiexec, 2)
     if all(ok.values()):
-        s = {name: json.load(open(os.path.join(tmp, name, "summary.json"))) for name in ok}
+        s = {name: outputs(tmp, name).summary for name in ok}
         lts = s["lts"]["derived"]
         levels = int(lts["wave_lts_levels"])
         check(levels >= 2, "at least two levels (%d)" % levels)

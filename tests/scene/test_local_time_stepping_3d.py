@@ -16,10 +16,10 @@ source on the top face, the bottom face absorbing, the others free), its first 2
   - 2 ranks (the partition weighted by each cell's level) = 1 rank to rounding.
 
 usage: test_local_time_stepping_3d.py VIBROTHERM MPIEXEC SOURCE_DIR"""
-import json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 import probe_traces
 
 exe, mpiexec, src = sys.argv[1:4]
@@ -40,12 +40,12 @@ with tempfile.TemporaryDirectory() as tmp:
     ok = {name: run_scene(check, exe, base + extra, os.path.join(tmp, name)) for name, extra in runs.items()}
     ok["lts_np2"] = run_scene(check, exe, base + runs["lts"], os.path.join(tmp, "lts_np2"), mpiexec, 2)
     if ok["lts"]:
-        lts = json.load(open(os.path.join(tmp, "lts", "summary.json")))["derived"]
+        lts = outputs(tmp, "lts").summary["derived"]
         finest = lts["wave_lts_level%d_dt" % (int(lts["wave_lts_levels"]) - 1)]
         ok["reference"] = run_scene(check, exe, base + ["-wave_lts", "off", "-wave_dt", "%.6g" % (finest / 4)],
                                     os.path.join(tmp, "reference"))
     if all(ok.values()) and "reference" in ok:
-        s = {name: json.load(open(os.path.join(tmp, name, "summary.json"))) for name in ok}
+        s = {name: outputs(tmp, name).summary for name in ok}
         lts = s["lts"]["derived"]
         levels = int(lts["wave_lts_levels"])
         cells = [lts["wave_lts_level%d_cells" % l] for l in range(levels)]

@@ -11,12 +11,12 @@ the heat deposited and the heat content equal the waves' own `damped` account to
 the heat starting without a crack; refused without damping and with local time stepping.
 
 usage: test_material_damping.py VIBROTHERM"""
-import json, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe = sys.argv[1]
 check = Checks("material damping")
@@ -32,7 +32,7 @@ def ring(out, extra):
     if not run_scene(check, exe, scene + extra, out):
         return None
     e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
-    return e, json.load(open(os.path.join(out, "summary.json")))
+    return e, outputs(out).summary
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -69,7 +69,7 @@ with tempfile.TemporaryDirectory() as tmp:
     damping = ["-material_loss_factor", str(eta), "-material_damping_frequency", str(f_d)]
     if run_scene(check, exe, scene[:-2] + damping + ["-material_damping_heat", "-heat_bc", "insulated"], heated):
         e = np.genfromtxt(os.path.join(heated, "energy.csv"), delimiter=",", names=True)
-        s = json.load(open(os.path.join(heated, "summary.json")))
+        s = outputs(heated).summary
         deposited = s["heat_deposited_by"].get("damping", 0.0)
         print("damping heat: deposited %.12g, damped %.12g, heat content %.12g J/m" %
               (deposited, e["damped"][-1], s["heat_content"]))

@@ -13,7 +13,6 @@ is not uniform (the box's top, struck, heats more than its bottom). Two ranks gi
 heat content and temperatures within 1e-10.
 
 usage: test_material_damping_3d.py VIBROTHERM MPIEXEC"""
-import json
 import math
 import os
 import sys
@@ -22,7 +21,7 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, mpiexec = sys.argv[1], sys.argv[2]
 check = Checks("material damping, 3D")
@@ -40,7 +39,7 @@ BOX = ["-specimen_width", "0.01", "-specimen_height", "0.01", "-specimen_depth",
 def decay(out):
     """The ring's decay rate fitted after the burst, and the run's summary."""
     e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
-    s = json.load(open(os.path.join(out, "summary.json")))
+    s = outputs(out).summary
     mech = e["kinetic"] + e["strain"] + e["integrator_correction"]
     late = e["t"] > 6e-5
     return -np.polyfit(e["t"][late], np.log(mech[late]), 1)[0], e, s
@@ -71,7 +70,7 @@ with tempfile.TemporaryDirectory() as tmp:
                                                       "-final_time", "3e-4"], out, mpiexec, ranks):
             continue
         e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
-        s = json.load(open(os.path.join(out, "summary.json")))
+        s = outputs(out).summary
         heated[ranks] = (s, probe_rise(out))
         deposited = s["heat_deposited_by"].get("damping", 0.0)
         print("%d rank(s): damping heat deposited %.12g J, damped %.12g J, heat content %.12g J"

@@ -19,11 +19,11 @@ Bad input, refused in one line naming the option and the file (exit 2): a file o
 tetrahedra, an unknown physical surface, a file that does not exist.
 
 usage: test_mesh_file_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from box_msh import write_box_msh
-from checks import Checks, refused, run_scene
+from checks import Checks, refused, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("mesh_file_3d")
@@ -34,8 +34,8 @@ twin = ["-crack_center", "0.01,0.01,0.005", "-crack_angle", "0", "-mesh_h", "0.0
 
 
 def load(out):
-    return (json.load(open(os.path.join(out, "summary.json"))),
-            list(csv.DictReader(open(os.path.join(out, "probes.csv")))))
+    return (outputs(out).summary,
+            outputs(out).rows("probes.csv"))
 
 
 def same_run(label, a, b):

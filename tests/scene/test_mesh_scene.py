@@ -4,10 +4,10 @@ mesh.h5 and mesh.xmf (complete, readable; grids wave, cracks, heat), and the ser
 the same mesh (counts, crack facets, node pairs, length).
 
 usage: test_mesh_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 import xml.etree.ElementTree as ET
 
 exe, src, mpiexec = sys.argv[1:4]
@@ -24,7 +24,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr))
         if r.returncode:
             continue
-        s = json.load(open(os.path.join(out, "summary.json")))
+        s = outputs(out).summary
         summaries[ranks] = s
         # The memory estimate printed before meshing counts cells within a factor 2.
         estimate = [l for l in r.stdout.splitlines() if l.startswith("Memory estimate:")]
@@ -44,8 +44,7 @@ with tempfile.TemporaryDirectory() as tmp:
                 topo = grids[name].find("Topology")
                 check(int(topo.get("NumberOfElements")) == cells, "xmf %s cell count" % name)
         try:
-            import h5py
-            with h5py.File(os.path.join(out, "mesh.h5"), "r") as f:
+            with outputs(out).h5("mesh.h5") as f:
                 for name, cells in counts.items():
                     check(f[name + "/topology"].shape[0] == cells, "h5 %s cells" % name)
                 check(f["wave/geometry"].shape[0] == s["mesh"]["vertices"], "h5 wave vertices")

@@ -6,10 +6,10 @@ and 2 ranks (rounding in the dissipation of barely moving cells once added 9-19 
 2 nm), and 1 rank = 2 ranks.
 
 usage: test_mindlin_cubic.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("Mindlin cubic law at scene level")
@@ -22,7 +22,7 @@ with tempfile.TemporaryDirectory() as tmp:
         for A in As:
             out = os.path.join(tmp, "np%d_A%g" % (ranks, A))
             if run_scene(check, exe, scene + ["-source_amplitude", repr(A)], out, mpiexec, ranks):
-                s = json.load(open(os.path.join(out, "summary.json")))
+                s = outputs(out).summary
                 W[ranks, A] = s["dissipated_energy"]
                 check(s["max_budget_error"] < 1e-3, "np%d A=%g: budget error %g" % (ranks, A, s["max_budget_error"]))
 for ranks, As in amplitudes.items():

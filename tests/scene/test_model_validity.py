@@ -14,10 +14,10 @@ refused naming the option, instead of ending "complete" with absurd numbers.
   crack power: ~100 K): a warning, once, and in summary.json.
 
 usage: test_model_validity.py VIBROTHERM"""
-import json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, one_line_error
+from checks import Checks, one_line_error, outputs
 
 exe = os.path.abspath(sys.argv[1])
 check = Checks("model_validity")
@@ -30,7 +30,7 @@ def run(tmp, name, extra):
     r = subprocess.run([exe] + SCENE + extra + ["-output_dir", out], capture_output=True, text=True, timeout=300)
     summary = {}
     if os.path.exists(os.path.join(out, "summary.json")):
-        summary = json.load(open(os.path.join(out, "summary.json")))
+        summary = outputs(out).summary
     return r, summary, out
 
 

@@ -8,10 +8,10 @@ frequencies; the defect participation is a share in [0, 1] that reaches 1 when t
 radius covers the specimen; modes.csv, modes.h5 and modes.xmf are written.
 
 usage: test_modes.py VIBROTHERM MPIEXEC"""
-import csv, json, math, os, subprocess, sys, tempfile
+import csv, math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, mpiexec = sys.argv[1], sys.argv[2]
 check = Checks("modes")
@@ -61,7 +61,7 @@ with tempfile.TemporaryDirectory() as tmp:
             check(all(float(r["error"]) < 1e-8 for r in rows), "roller plate Q%s: SLEPc residuals" % degree)
             for name in ("modes.h5", "modes.xmf", "summary.json"):
                 check(os.path.exists(os.path.join(out, name)), "roller plate Q%s: %s missing" % (degree, name))
-            summary = json.load(open(os.path.join(out, "summary.json")))
+            summary = outputs(out).summary
             check(summary["physics_ran"] == ["modes"] and len(summary["modes"]) == 10,
                   "roller plate: summary.json physics_ran/modes")
     # Two ranks: the same frequencies.

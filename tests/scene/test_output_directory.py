@@ -24,10 +24,10 @@
   start; bad input found after meshing leaves no directory behind.
 
 usage: test_output_directory.py VIBROTHERM"""
-import json, os, signal, socket, subprocess, sys, tempfile, time
+import os, signal, socket, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, one_line_error
+from checks import Checks, one_line_error, outputs
 
 exe = os.path.abspath(sys.argv[1])
 check = Checks("output_directory")
@@ -57,7 +57,7 @@ def wait_for(path, process, seconds=60):
 
 def complete(out):
     try:
-        return json.load(open(os.path.join(out, "summary.json")))["complete"] is True
+        return outputs(out).summary["complete"] is True
     except (OSError, ValueError, KeyError):
         return False
 

@@ -15,14 +15,13 @@ test is skipped (exit 77) once the h5py checks have passed.
 
 usage: test_paraview_fields.py VIBROTHERM SOURCE_DIR MPIEXEC PNG_DIR
        test_paraview_fields.py --existing RUN_DIR SOURCE_DIR PNG_DIR   (checks a finished run)"""
-import json, math, os, shutil, subprocess, sys, tempfile
+import math, os, shutil, subprocess, sys, tempfile
 import xml.etree.ElementTree as ET
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 SCENE = ["-final_time", "5e-5", "-output_times", "2e-5,4.6e-5", "-mesh_h", "0.004"]
 UNITS = {"geometry": "m", "displacement": "m", "velocity": "m/s", "temperature": "K", "temperature_rise": "K",
@@ -45,7 +44,7 @@ def check_mesh(out, summary):
     check(len(top) == 1 and top[0].get("CollectionType") == "Spatial", "mesh.xmf: one spatial collection")
     names = [g.get("Name") for g in uniform_grids(os.path.join(out, "mesh.xmf"))]
     check(names == ["wave", "cracks", "heat"], "mesh.xmf grids %s" % names)
-    with h5py.File(os.path.join(out, "mesh.h5"), "r") as f:
+    with outputs(out).h5("mesh.h5") as f:
         for grid, cells in (("wave", "cells"), ("cracks", "cohesive_cells"), ("heat", "heat_cells")):
             check(grid in f and f[grid + "/topology"].shape[0] == summary["mesh"][cells], "mesh.h5 %s cells" % grid)
         for grid in ("wave", "heat"):
@@ -65,7 +64,7 @@ def read_series(out, grid):
     check(len(top) == 1 and top[0].get("CollectionType") == "Temporal" and top[0].get("Name") == grid,
           "fields_%s.xmf: one temporal collection named %s" % (grid, grid))
     series = {}
-    with h5py.File(os.path.join(out, "fields.h5"), "r") as f:
+    with outputs(out).h5("fields.h5") as f:
         for k, g in enumerate(uniform_grids(path)):
             t = float(g.find("Time").get("Value"))
             fields = {}
@@ -126,7 +125,7 @@ def check_cracks(out, cracks, summary):
               "dissipated_energy is cumulative")
         previous = dissipated
     if cracks:
-        with h5py.File(os.path.join(out, "fields.h5"), "r") as f:
+        with outputs(out).h5("fields.h5") as f:
             ends = f["cracks/geometry"][:].reshape(-1, 2, 2)
         total = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1).sum()
         check(abs(total - expected) <= 1e-9 * expected, "crack segments add up to %.12g m, expected %.12g" % (total, expected))
@@ -139,7 +138,7 @@ def by_position(xy, values, digits=9):
 
 def compare_ranks(a, b):
     """The 2-rank files hold the serial values at the same points (numberings differ)."""
-    with h5py.File(os.path.join(a, "fields.h5"), "r") as fa, h5py.File(os.path.join(b, "fields.h5"), "r") as fb:
+    with outputs(a).h5("fields.h5") as fa, outputs(b).h5("fields.h5") as fb:
         for grid, field in (("wave", "displacement_1"), ("heat", "temperature_rise_1")):
             xa, va = by_position(fa[grid + "/geometry"][:], fa[grid + "/" + field][:])
             xb, vb = by_position(fb[grid + "/geometry"][:], fb[grid + "/" + field][:])
@@ -212,7 +211,7 @@ def run(exe, src, mpiexec, ranks, out):
 
 
 def check_run(out):
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary = outputs(out).summary
     for what in (check_mesh, check_fields):
         try:
             what(out, summary)

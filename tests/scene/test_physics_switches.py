@@ -7,10 +7,10 @@ the heat deposited equal to the energy dissipated (1e-12). A 3D box without a cr
 its waves alone.
 
 usage: test_physics_switches.py VIBROTHERM"""
-import json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe = sys.argv[1]
 check = Checks("physics switches")
@@ -27,7 +27,7 @@ def run(tmp, name, extra, final_time="2e-5"):
     check(r.returncode == 0, "%s: %s" % (name, r.stderr[-1500:]))
     if r.returncode:
         return None, ""
-    return json.load(open(os.path.join(out, "summary.json"))), r.stdout
+    return outputs(out).summary, r.stdout
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -62,8 +62,7 @@ with tempfile.TemporaryDirectory() as tmp:
     # Degree 2 with field output (once overflowed the vertex buffer with edge nodes).
     summary, log = run(tmp, "degree2", crack + ["-contact_mu", "1", "-wave_degree", "2", "-output_times", "1e-5,2e-5"])
     if summary:
-        import h5py
-        with h5py.File(os.path.join(tmp, "degree2", "fields.h5"), "r") as f:
+        with outputs(tmp, "degree2").h5("fields.h5") as f:
             state = f["wave/contact_state_1"][:]
         check(set(state.ravel()) <= {-1.0, 0.0, 1.0, 2.0, 3.0} and (state >= 0).sum() >= 2,
               "degree 2: contact_state values %s" % sorted(set(state.ravel()))[:8])

@@ -22,7 +22,7 @@ usage: test_plots_sweep.py VIBROTHERM SOURCE_DIR"""
 import csv, importlib.machinery, importlib.util, os, signal, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, src = sys.argv[1:3]
 check = Checks("plots and sweep")

@@ -21,7 +21,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 SCENE = ["-options_file", "options/paper.opts", "-final_time", "1e-4", "-source_duration", "1e-4",
          "-output_times", "5e-5,1e-4"]
@@ -42,9 +42,9 @@ def reduce_run(run, out):
         lines = f.read().splitlines(True)
         last = lines[-1].split(",")[0]
         g.writelines(lines[:1] + [l for l in lines[1:] if l.split(",")[0] == last])
-    summary = json.load(open(os.path.join(run, "summary.json")))
+    summary = outputs(run).summary
     json.dump({k: summary[k] for k in RESULT_KEYS}, open(os.path.join(out, "summary.json"), "w"), indent=1)
-    with h5py.File(os.path.join(run, "fields.h5"), "r") as f, open(os.path.join(out, "fields.csv"), "w") as g:
+    with outputs(run).h5("fields.h5") as f, open(os.path.join(out, "fields.csv"), "w") as g:
         g.write("dataset,index,sum,min,max\n")
         names = []
         f.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)

@@ -18,7 +18,7 @@ import os, shutil, signal, subprocess, sys, tempfile
 import h5py
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 import restart_compare
 from restart_compare import compare_exact, compare_rounding, summary, why
 
@@ -47,7 +47,7 @@ def run(ranks, extra):
 
 def dissipated_per_rank(out):
     """Each writing rank's dissipated energy in the checkpoint (crack/accounts: dissipated first)."""
-    with h5py.File(os.path.join(out, "checkpoint.h5"), "r") as f:
+    with h5py.File(os.path.join(out, "checkpoint.h5"), "r") as f:  # the checkpoint: not an output
         accounts = f["crack.accounts"]
         width = int(accounts["counts"][0])
         return list(accounts["values"][::width])

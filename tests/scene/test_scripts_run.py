@@ -15,7 +15,7 @@ usage: test_scripts_run.py SOURCE_DIR BUILD_DIR"""
 import json, os, signal, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 import restart_compare
 
 src, build = (os.path.abspath(a) for a in sys.argv[1:3])
@@ -81,6 +81,6 @@ with tempfile.TemporaryDirectory() as tmp:
     check("resumes from its checkpoint" in stdout, "SIGTERM to scripts/run: the run says where it resumes")
     r = subprocess.run([run_script, "scenes/plate.opts", "-final_time", "3e-3", "-restart", "stopped"], cwd=study,
                        env=environment, capture_output=True, text=True)
-    check(r.returncode == 0 and json.load(open(os.path.join(stopped, "summary.json")))["complete"] is True,
+    check(r.returncode == 0 and outputs(stopped).summary["complete"] is True,
           "scripts/run -restart: the run finishes (exit %d: %s)" % (r.returncode, r.stderr[-600:]))
 check.finish()

@@ -30,12 +30,12 @@ ranks slower); the coulomb pair and the slabs with other faces run the first hal
 excitation only.
 
 usage: test_slab_2d3d.py VIBROTHERM SOURCE_DIR"""
-import concurrent.futures, csv, json, os, subprocess, sys, tempfile
+import concurrent.futures, csv, os, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, src = sys.argv[1:3]
 check = Checks("slab_2d3d")
@@ -69,7 +69,7 @@ def run(args, out):
     """summary.json, energy.csv and probes.csv of a serial run (None if it failed)."""
     if not run_scene(check, exe, args, out):
         return None
-    return (json.load(open(os.path.join(out, "summary.json"))), table(os.path.join(out, "energy.csv")),
+    return (outputs(out).summary, table(os.path.join(out, "energy.csv")),
             table(os.path.join(out, "probes.csv")))
 
 

@@ -7,12 +7,12 @@ free specimen through a patch closes the energy budget (work of the source = kin
 energy, 1e-5 as for every displacement source); bad patches are refused naming the option.
 
 usage: test_source_patch.py VIBROTHERM SOURCE_DIR"""
-import json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, src = sys.argv[1:3]
 check = Checks("source patch")
@@ -47,7 +47,7 @@ with tempfile.TemporaryDirectory() as tmp:
                               "-edge_right", "free", "-source_patch_edge", "top", "-source_patch_width", "0.008",
                               "-source_component", "normal", "-source_duration", "5e-5", "-final_time", "8e-5",
                               "-heat", "off"], free):
-        s = json.load(open(os.path.join(free, "summary.json")))
+        s = outputs(free).summary
         check(s["max_budget_error"] < 1e-5, "free specimen driven by a patch: budget error %g" % s["max_budget_error"])
     bad = {
         "leaves the top edge": ["-source_patch_edge", "top", "-source_patch_center", "0.048", "-source_patch_width",

@@ -19,10 +19,10 @@ Checked on options/block3d_small.opts (waves only):
    centre values.
 
 usage: test_source_patch_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, refused, run_scene
+from checks import Checks, refused, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("source patch 3d")
@@ -35,11 +35,11 @@ TOP_AREA = 0.0064 * 0.0041
 
 
 def summary(out):
-    return json.load(open(os.path.join(out, "summary.json")))
+    return outputs(out).summary
 
 
 def energy(out):
-    return list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
+    return outputs(out).rows("energy.csv")
 
 
 def agree(label, a, b, names, tol):

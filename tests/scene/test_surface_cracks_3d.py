@@ -32,10 +32,10 @@ reaching the faces its plane is parallel to, and a turned-and-tilted corner crac
 refused in one line naming the option.
 
 usage: test_surface_cracks_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, math, os, sys, tempfile
+import math, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, refused, run_scene
+from checks import Checks, refused, run_scene, outputs
 from plane_sources import disc, rectangle
 
 exe, src, mpiexec = sys.argv[1:4]
@@ -65,8 +65,8 @@ def heat_run(tmp, name, ranks=1):
     out = os.path.join(tmp, "%s_np%d" % (name, ranks))
     if not run_scene(check, exe, HEAT + options + ["-probe_points", probes], out, mpiexec, ranks):
         return None, None
-    rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
-    return rows, json.load(open(os.path.join(out, "summary.json")))
+    rows = outputs(out).rows("probes.csv")
+    return rows, outputs(out).summary
 
 
 def rises(rows, probe):
@@ -125,7 +125,7 @@ def check_mindlin(tmp):
         out = os.path.join(tmp, "mindlin_%g" % A)
         if run_scene(check, exe, WAVE + ["-crack_a0", "2e-8", "-source_amplitude", repr(A), "-physics", "wave",
                                          "-crack_mmd_levels", "16384"], out, mpiexec, 1):
-            W[A] = json.load(open(os.path.join(out, "summary.json")))["dissipated_energy"]
+            W[A] = outputs(out).summary["dissipated_energy"]
     if len(W) == 3:
         ratio = [w / A**3 for A, w in W.items()]
         spread = max(ratio) / min(ratio) - 1
@@ -152,7 +152,7 @@ with tempfile.TemporaryDirectory() as tmp:
     for ranks in (1, 2):
         out = os.path.join(tmp, "waves_np%d" % ranks)
         if run_scene(check, exe, WAVE + CAMERA, out, mpiexec, ranks):
-            s = json.load(open(os.path.join(out, "summary.json")))
+            s = outputs(out).summary
             W[ranks] = s["dissipated_energy"]
             if ranks == 1:
                 check_camera(out, s)

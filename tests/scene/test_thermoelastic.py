@@ -18,10 +18,10 @@ displacement at 100 kHz on the top edge, absorbing bottom, no crack; probe at (0
     serial; the heat balance closes and energy.csv splits the heat by source.
 
 usage: test_thermoelastic.py VIBROTHERM MPIEXEC"""
-import csv, json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 from aluminium import T0, beta, c_P, cp, rho
 
 exe, mpiexec = sys.argv[1:3]
@@ -37,10 +37,10 @@ def run(tmp, name, extra, ranks=1):
     out = os.path.join(tmp, name)
     if not run_scene(check, exe, plate + extra, out, mpiexec, ranks):
         return None
-    rows = [r for r in csv.DictReader(open(os.path.join(out, "probes.csv"))) if r["probe"] == "0"]
-    intervals = {row["t"] for row in csv.DictReader(open(os.path.join(out, "energy.csv")))}
-    return rows, intervals, json.load(open(os.path.join(out, "summary.json"))), \
-        list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
+    rows = [r for r in outputs(out).rows("probes.csv") if r["probe"] == "0"]
+    intervals = {row["t"] for row in outputs(out).rows("energy.csv")}
+    return rows, intervals, outputs(out).summary, \
+        outputs(out).rows("energy.csv")
 
 
 def swing_error(rows, after=1.5e-5):

@@ -13,14 +13,12 @@ about 12 um, is negligible), with the run's own velocity at the probe.
   * the energy budget closes to 1e-6 in both, and 2 ranks give the serial temperatures.
 
 usage: test_thermoelastic_3d.py VIBROTHERM MPIEXEC"""
-import csv
-import json
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 from aluminium import T0, beta, cp, rho
 from aluminium import c_P as c_isothermal, c_P_adiabatic as c_adiabatic
 
@@ -38,8 +36,8 @@ def run(tmp, coupling, ranks=1):
     out = os.path.join(tmp, "%s_np%d" % (coupling, ranks))
     if not run_scene(check, exe, COLUMN + ["-thermoelastic", coupling], out, mpiexec, ranks):
         return None
-    rows = [r for r in csv.DictReader(open(os.path.join(out, "probes.csv"))) if r["probe"] == "0"]
-    return rows, json.load(open(os.path.join(out, "summary.json")))
+    rows = [r for r in outputs(out).rows("probes.csv") if r["probe"] == "0"]
+    return rows, outputs(out).summary
 
 
 def misfit(rows, speed, after=1.5e-5):

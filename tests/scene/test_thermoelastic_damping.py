@@ -29,13 +29,13 @@ at the adiabatic frequency, sqrt(1 + Delta) = 1.051 x the isothermal one; 2 rank
 Breaking the sign of the thermal force makes the waves grow and the fit fail (checked by hand).
 
 usage: test_thermoelastic_damping.py VIBROTHERM MPIEXEC"""
-import csv, json, os, sys, tempfile
+import os, sys, tempfile
 
 import numpy as np
 from scipy.optimize import curve_fit
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 
 exe, mpiexec = sys.argv[1:3]
 check = Checks("thermoelastic_damping")
@@ -66,11 +66,11 @@ def run(tmp, name, extra, ranks=1):
     out = os.path.join(tmp, name)
     if not run_scene(check, exe, scene + extra, out, mpiexec, ranks):
         return None
-    probes = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+    probes = outputs(out).rows("probes.csv")
     t = np.array([float(p["t"]) for p in probes])
     uy = np.array([float(p["uy"]) for p in probes])
-    energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
-    return {"t": t, "uy": uy, "energy": energy, "summary": json.load(open(os.path.join(out, "summary.json")))}
+    energy = outputs(out).rows("energy.csv")
+    return {"t": t, "uy": uy, "energy": energy, "summary": outputs(out).summary}
 
 
 def decay(result, s):

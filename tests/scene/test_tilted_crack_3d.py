@@ -31,10 +31,10 @@ leaves the box, a tilted crack through the thickness, a -crack_tilt list of the 
 -crack_tilt in 2D.
 
 usage: test_tilted_crack_3d.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, math, os, sys, tempfile
+import math, os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, refused, run_scene
+from checks import Checks, refused, run_scene, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("tilted_crack_3d")
@@ -52,7 +52,7 @@ def normal(tilt):
 
 def check_plane(out, tilt):
     n = normal(tilt)
-    rows = list(csv.DictReader(open(os.path.join(out, "crack_state.csv"))))
+    rows = outputs(out).rows("crack_state.csv")
     cells = [r for r in rows if r["t"] == rows[0]["t"]]
     off = spread = 0.0
     inside = True
@@ -79,7 +79,7 @@ def agree(A, B, pairs, what):
 
 
 def probes(out):
-    rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+    rows = outputs(out).rows("probes.csv")
     by = {}
     for r in rows:
         by.setdefault(int(r["probe"]), []).append(r)
@@ -96,7 +96,7 @@ def check_delamination(tmp):
     out_a, out_b = os.path.join(tmp, "flat"), os.path.join(tmp, "turned")
     if not (run_scene(check, exe, a, out_a, mpiexec, 2) and run_scene(check, exe, b, out_b, mpiexec, 2)):
         return
-    sa, sb = (json.load(open(os.path.join(o, "summary.json"))) for o in (out_a, out_b))
+    sa, sb = (outputs(o).summary for o in (out_a, out_b))
     check(sa["dissipated_energy"] > 0 and abs(sa["dissipated_energy"] / sb["dissipated_energy"] - 1) < 1e-9,
           "delamination %s J, turned box %s J" % (sa["dissipated_energy"], sb["dissipated_energy"]))
     check(sa["contact_cells"] == sb["contact_cells"], "contact cells %s, %s" % (sa["contact_cells"], sb["contact_cells"]))
@@ -112,7 +112,7 @@ def check_delamination(tmp):
                                        "-source_patch_center",
                                        "0.0043,0.0022", "-source_patch_width", "0.0041,0.0023", "-final_time", "2e-7",
                                        "-heat", "off"], patch):
-        area = json.load(open(os.path.join(patch, "summary.json")))["mesh"]["source_area"]
+        area = outputs(patch).summary["mesh"]["source_area"]
         check(abs(area / (0.0041 * 0.0023) - 1) < 1e-12, "patch on the left face: area %.12g of %.12g"
               % (area, 0.0041 * 0.0023))
 
@@ -123,7 +123,7 @@ with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "tilt%+g" % tilt)
         if not run_scene(check, exe, base + ["-crack_tilt", str(tilt)], out, mpiexec, 2):
             continue
-        s = json.load(open(os.path.join(out, "summary.json")))
+        s = outputs(out).summary
         runs[tilt] = (out, s)
         crack = s["mesh"]["cracks"][0]
         check(abs(crack["area"] / (L * W) - 1) < 0.05, "tilt %g: faces' area %s of %s" % (tilt, crack["area"], L * W))

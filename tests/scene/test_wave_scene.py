@@ -7,10 +7,10 @@ interface dissipated to 1e-12 and the heat content equals deposited minus bounda
 loss to 1e-3; the summary says which physics ran.
 
 usage: test_wave_scene.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import csv, json, os, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, src, mpiexec = sys.argv[1:4]
 check = Checks("wave scene")
@@ -26,9 +26,9 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 0, "run on %d ranks: %s" % (ranks, r.stderr[-2000:]))
         if r.returncode:
             continue
-        rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
-        energy = list(csv.DictReader(open(os.path.join(out, "energy.csv"))))
-        summary = json.load(open(os.path.join(out, "summary.json")))
+        rows = outputs(out).rows("probes.csv")
+        energy = outputs(out).rows("energy.csv")
+        summary = outputs(out).summary
         runs[ranks] = (rows, energy, summary)
         check(summary["physics_ran"] == ["wave", "contact", "heat"], "physics_ran %s" % summary["physics_ran"])
         dissipated, deposited = summary["dissipated_energy"], summary["heat_deposited"]
@@ -70,7 +70,7 @@ with tempfile.TemporaryDirectory() as tmp:
                            capture_output=True, text=True)
         check(r.returncode == 0, "energy rows every %d steps: %s" % (every, r.stderr[-2000:]))
         if r.returncode == 0:
-            errors[every] = json.load(open(os.path.join(out, "summary.json")))["max_budget_error"]
+            errors[every] = outputs(out).summary["max_budget_error"]
     if len(errors) == 2:
         check(errors[1] < 1e-5 and abs(errors[1] - errors[50]) <= 0.1 * errors[1],
               "budget error with rows every step %g vs every 50 steps %g" % (errors[1], errors[50]))

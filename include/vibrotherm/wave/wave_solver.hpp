@@ -59,6 +59,7 @@ struct WaveOptions {
   /// -wave_harmonic_memory_limit [GB]: what the harmonic start's MUMPS factorisation may take
   /// (0: 0.9 x the memory available; -force: factor even above it).
   double harmonic_memory_limit_gb = 0.0;
+  bool harmonic_force = false;  ///< -force (declared with the mesh, MeshSource; set by ReadScene): factor above the limit
   /// -wave_harmonic_solver auto|direct|krylov (harmonic_krylov.hpp).
   HarmonicSolver harmonic_solver = HarmonicSolver::kAuto;
   /// Every step divides this (0: any step): the heat step of a periodic source (-periodic on),

@@ -169,6 +169,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   }
   s->run.output_times = kept;
   PetscCall(mesh::ReadSpecimenOptions(comm, s->exchange_length(), &s->specimen));  // its heat mesh: after the heat step
+  s->wave.harmonic_force = s->specimen.source.force;
   PetscFunctionReturn(0);
 }
 
