@@ -1,15 +1,16 @@
 """Probe traces of a run (probes.csv) and their differences, for the tests that compare a
 run with a reference run at other time steps (local time stepping in 2D and 3D)."""
 import bisect
-import csv
 import math
 import os
+
+from checks import outputs
 
 
 def traces(out, components, probes):
     """{(probe, component): [(t, value), ...]} of the bulk probes numbered in `probes`."""
     series = {}
-    for row in csv.DictReader(open(os.path.join(out, "probes.csv"))):
+    for row in outputs(out).rows("probes.csv"):
         if not row["probe"].isdigit() or int(row["probe"]) not in probes:
             continue
         for c in components:

@@ -10,7 +10,6 @@ rim is not rigid: the layer's ends rotate, a correction of order h/L), the thinn
 participation, as at h/L = 0.025: 0.86 and 0.69).
 
 usage: test_ldr_thin_limit.py VIBROTHERM SOURCE_DIR"""
-import csv
 import math
 import os
 import subprocess
@@ -18,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe, src = sys.argv[1:3]
 check = Checks("LDR thin-plate limit")
@@ -35,8 +34,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 0, "h = %g: %s" % (h, r.stderr[-600:]))
         if r.returncode != 0:
             continue
-        with open(os.path.join(out, "modes.csv")) as f:
-            rows = [(float(m["frequency"]), float(m["participation"] or "nan")) for m in csv.DictReader(f)]
+        rows = [(float(m["frequency"]), float(m["participation"] or "nan")) for m in outputs(out).rows("modes.csv")]
         near = [m for m in rows if 0.6 * f1 < m[0] < 1.1 * f1 and not math.isnan(m[1])]
         if not near:
             check.fail("h = %g: no mode between 0.6 and 1.1 f1 = %.0f Hz: %s" % (h, f1, rows))

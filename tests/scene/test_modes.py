@@ -8,7 +8,7 @@ frequencies; the defect participation is a share in [0, 1] that reaches 1 when t
 radius covers the specimen; modes.csv, modes.h5 and modes.xmf are written.
 
 usage: test_modes.py VIBROTHERM MPIEXEC"""
-import csv, math, os, subprocess, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, outputs
@@ -42,8 +42,7 @@ def run(tmp, name, extra, ranks=1):
     check(r.returncode == 0, "%s: exit %d: %s" % (name, r.returncode, r.stderr[-1500:]))
     if r.returncode:
         return None, None
-    with open(os.path.join(out, "modes.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = outputs(out).rows("modes.csv")
     return rows, out
 
 

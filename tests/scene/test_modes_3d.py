@@ -16,13 +16,13 @@ twin: paper.opts on the slab's x-y section, scripts/slab_section), so that
    refuses, in one line naming -modes_memory_limit, when it exceeds that limit.
 
 usage: test_modes_3d.py VIBROTHERM MPIEXEC SOURCE_DIR"""
-import csv, os, re, subprocess, sys, tempfile
+import os, re, subprocess, sys, tempfile
 
 import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks, one_line_error
+from checks import Checks, one_line_error, outputs
 
 exe, mpiexec, src = sys.argv[1:4]
 check = Checks("modes_3d")
@@ -43,8 +43,7 @@ def run(args, out, ranks=1):
 
 def modes(out):
     """(frequency, participation) arrays of a modes run."""
-    with open(os.path.join(out, "modes.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = outputs(out).rows("modes.csv")
     return (np.array([float(r["frequency"]) for r in rows]), np.array([float(r["participation"]) for r in rows]))
 
 

@@ -10,7 +10,6 @@ delamination, options/ldr_delamination.opts' geometry) with the linear crack law
     nearest mode, and the thin-plate estimate f² ≈ f_open² + k / (4π² ρ h) within 15 %.
 
 usage: test_modes_contact.py VIBROTHERM"""
-import csv
 import math
 import os
 import subprocess
@@ -18,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import Checks
+from checks import Checks, outputs
 
 exe = sys.argv[1]
 check = Checks("modes with the crack's contact")
@@ -34,8 +33,7 @@ def modes(tmp, name, extra):
     check(r.returncode == 0, "%s: %s" % (name, r.stderr[-800:]))
     if r.returncode != 0:
         return []
-    with open(os.path.join(out, "modes.csv")) as f:
-        rows = [(float(row["frequency"]), float(row["participation"] or "nan")) for row in csv.DictReader(f)]
+    rows = [(float(row["frequency"]), float(row["participation"] or "nan")) for row in outputs(out).rows("modes.csv")]
     return [(f, p) for f, p in rows if f > 100.0]
 
 

@@ -12,7 +12,6 @@ default tolerance (docs/MEASUREMENTS.md, "What drifts in the paper scene"). The 
 side by side, one rank each.
 
 usage: test_paper_continued.py VIBROTHERM SOURCE_DIR"""
-import json
 import os
 import sys
 import tempfile
@@ -22,7 +21,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 from run_data import read_csv
 
 exe, src = sys.argv[1:3]
@@ -32,8 +31,7 @@ CENTRE = "crack 1 at xi = 0.500000"
 
 
 def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return outputs(out).summary
 
 
 def centre_rise(out, s):

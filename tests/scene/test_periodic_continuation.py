@@ -12,11 +12,11 @@ resolved run of the same scene (same quantized step, no continuation):
   - a tolerance nothing meets: the run is simulated fully and says how close it came.
 
 usage: test_periodic_continuation.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import json, os, sys, tempfile
+import os, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 import periodic_compare
 
 exe, src, mpiexec = sys.argv[1:4]
@@ -29,8 +29,7 @@ RESOLVED = ["-periodic_min_continued", "1000000000"]
 
 
 def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return outputs(out).summary
 
 
 with tempfile.TemporaryDirectory() as tmp:

@@ -15,13 +15,13 @@ Against the fully resolved run of the same scene (3 ms of 100 kHz, the same quan
     closer to the resolved run than the default.
 
 usage: test_periodic_drift.py VIBROTHERM SOURCE_DIR"""
-import json, os, sys, tempfile
+import os, sys, tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "lib"))
-from checks import Checks, run_scene
+from checks import Checks, run_scene, outputs
 from run_data import read_csv
 
 exe, src = sys.argv[1:3]
@@ -37,8 +37,7 @@ DRIFT_TOL = 2e-3
 
 
 def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return outputs(out).summary
 
 
 def resolved_drift(ref, t_end, multiple, count=32):
