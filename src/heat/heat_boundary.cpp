@@ -101,10 +101,10 @@ const std::vector<OptionSpec<HeatBoundaryOptions>>& HeatBoundaryOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* o) {
+PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
   o->T_ext = T0;
-  PetscCall(ReadOptionSpecs(comm, "Thermal edges", HeatBoundaryOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "Thermal edges", HeatBoundaryOptionSpecs(), o, values));
   PetscFunctionReturn(0);
 }
 

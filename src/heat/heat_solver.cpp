@@ -24,11 +24,11 @@ const std::vector<OptionSpec<HeatMaterial>>& HeatMaterialOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* m) {
+PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* m, OptionValues* values) {
   PetscFunctionBeginUser;
   m->density = density;
   // Finite here too (CheckScene checks them later): -heat_T0 is the default of -heat_T_ext, checked first otherwise.
-  PetscCall(ReadOptionSpecs(comm, "Heat conduction", HeatMaterialOptionSpecs(), m));
+  PetscCall(ReadOptionSpecs(comm, "Heat conduction", HeatMaterialOptionSpecs(), m, values));
   PetscFunctionReturn(0);
 }
 
@@ -41,11 +41,11 @@ const std::vector<OptionSpec<HeatOptions>>& HeatDiscretisationOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o) {
+PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadHeatMaterial(comm, density, &o->material));
-  PetscCall(ReadOptionSpecs(comm, "Heat discretisation", HeatDiscretisationOptionSpecs(), o));
-  PetscCall(ReadHeatBoundaryOptions(comm, o->material.T0, &o->boundary));
+  PetscCall(ReadHeatMaterial(comm, density, &o->material, values));
+  PetscCall(ReadOptionSpecs(comm, "Heat discretisation", HeatDiscretisationOptionSpecs(), o, values));
+  PetscCall(ReadHeatBoundaryOptions(comm, o->material.T0, &o->boundary, values));
   PetscFunctionReturn(0);
 }
 

@@ -38,9 +38,9 @@ const std::vector<OptionSpec<ApproachProfile>>& ApproachProfileOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p) {
+PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* p, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Initial approach of the crack faces", ApproachProfileOptionSpecs(), p));
+  PetscCall(ReadOptionSpecs(comm, "Initial approach of the crack faces", ApproachProfileOptionSpecs(), p, values));
   const std::string& file = p->file;
   if (p->shape == ApproachShape::File) {
     PetscCheck(!file.empty(), comm, PETSC_ERR_USER_INPUT, "-crack_a0_profile file needs -crack_a0_file FILE");

@@ -25,7 +25,7 @@ PetscErrorCode RejectRenamedOptions(MPI_Comm comm) {
 /// the simulator accepts exactly what vibrotherm-contact accepts; -help shows
 /// the declared help, unit, range and default.
 PetscErrorCode ReadParameter(MPI_Comm comm, PetscOptionItems* PetscOptionsObject, const contact::ContactParameter& p,
-                             contact::ContactParameters& params) {
+                             contact::ContactParameters& params, OptionValues* values) {
   PetscFunctionBeginUser;
   char value[PETSC_MAX_PATH_LEN] = "";
   PetscBool set = PETSC_FALSE;
@@ -34,12 +34,13 @@ PetscErrorCode ReadParameter(MPI_Comm comm, PetscOptionItems* PetscOptionsObject
   PetscCall(PetscOptionsString(s.name.c_str(), s.describe().c_str(), nullptr, s.default_value.c_str(), value,
                                sizeof(value), &set));
   if (set) VibrothermCallCpp(comm, contact::assign(p, params, value));
+  if (values) values->emplace(s.name, value);  // as -help shows it: as given, or the declared default
   PetscFunctionReturn(0);
 }
 
 }  // namespace
 
-PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p) {
+PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p, OptionValues* values) {
   PetscFunctionBeginUser;
   PetscCall(RejectRenamedOptions(comm));
   // vibrotherm-contact's one cell starts at -contact_a0; a crack's faces start at -crack_a0 and its
@@ -51,7 +52,7 @@ PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& p) 
              "is -crack_a0 [m] (with -crack_a0_profile)");
   PetscOptionsBegin(comm, nullptr, "Crack contact law (PHYSICS.md section 3)", nullptr);
   for (const contact::ContactParameter& parameter : contact::contact_parameters())
-    if (parameter.spec.name != "-contact_a0") PetscCall(ReadParameter(comm, PetscOptionsObject, parameter, p));
+    if (parameter.spec.name != "-contact_a0") PetscCall(ReadParameter(comm, PetscOptionsObject, parameter, p, values));
   PetscOptionsEnd();
   VibrothermCallCpp(comm, (void)contact::create_crack_law(p));  // validates; reads table files
   PetscFunctionReturn(0);

@@ -21,12 +21,14 @@ std::vector<std::string> EdgeKindNames() {
 }
 
 /// An -edge_<name> option (a side, front or back) read into *kind.
-PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, EdgeKind* kind) {
+PetscErrorCode ReadEdgeKind(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, EdgeKind* kind,
+                            std::string* shown) {
   PetscFunctionBeginUser;
   PetscInt index = static_cast<PetscInt>(std::find(all_edge_kinds().begin(), all_edge_kinds().end(), *kind) -
                                          all_edge_kinds().begin());
   PetscCall(OptionsChoice(PetscOptionsObject, spec.name.c_str(), spec.help.c_str(), spec.choices, &index, nullptr));
   *kind = all_edge_kinds()[index];
+  *shown = spec.choices[index];
   PetscFunctionReturn(0);
 }
 
@@ -35,22 +37,24 @@ OptionSpec<SpecimenGeometryInput> EdgeOption(Side side) {
   const int s = static_cast<int>(side);
   return {{std::string("-edge_") + to_string(side), "Mechanical kind of this outer edge (front, back: faces of a 3D box)",
            "", contact::ParameterType::Choice, "", contact::Range::any(), EdgeKindNames()},
-          [s](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
+          [s](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in,
+              std::string* shown) {
             EdgeKind* kind = s < 4 ? &in->geometry.edges[s] : &in->geometry.depth_edges[s - 4];
-            return ReadEdgeKind(items, spec, kind);
+            return ReadEdgeKind(items, spec, kind, shown);
           }};
 }
 
 /// One or (3D) two values of a patch option into *first, *second; one value in 3D
 /// sets both (same_second: a square patch) or the first only (the centre's second
-/// coordinate keeps its default).
+/// coordinate keeps its default). *shown: the value as -help shows it.
 PetscErrorCode PatchPair(PetscOptionItems* PetscOptionsObject, const char* option, const char* help, bool box,
-                         bool same_second, double* first, double* second, PetscBool* given) {
+                         bool same_second, double* first, double* second, std::string* shown) {
   PetscFunctionBeginUser;
   std::vector<double> v;
   if (*first > 0.0) v = box ? std::vector<double>{*first, *second} : std::vector<double>{*first};
-  PetscCall(OptionsRealList(PetscOptionsObject, option, help, &v, given));
-  if (!*given) PetscFunctionReturn(0);
+  PetscBool given;
+  PetscCall(OptionsRealList(PetscOptionsObject, option, help, &v, &given, shown));
+  if (!given) PetscFunctionReturn(0);
   PetscCheck(v.size() == 1 || (box && v.size() == 2), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
              "%s takes %s, got %d values", option, box ? "one or two values on a 3D face (its two axes)" :
              "one value on a 2D edge", static_cast<int>(v.size()));
@@ -61,13 +65,14 @@ PetscErrorCode PatchPair(PetscOptionItems* PetscOptionsObject, const char* optio
 
 /// -source_patch_edge (its presence makes the patch; the default centre is the middle of the edge or face).
 PetscErrorCode ReadPatchEdge(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
-                             SpecimenGeometry* g) {
+                             SpecimenGeometry* g, std::string* shown) {
   PetscFunctionBeginUser;
   PetscInt side = static_cast<PetscInt>(Side::Top);
   PetscBool on = PETSC_FALSE;
   PetscCall(OptionsChoice(PetscOptionsObject, spec.name.c_str(), spec.help.c_str(), spec.choices, &side, &on));
   g->patch.on = on;
   g->patch.side = static_cast<Side>(side);
+  *shown = spec.choices[side];
   const auto axes = face_axes(g->patch.side);
   g->patch.center = 0.5 * g->extent(axes[0]);
   g->patch.center2 = 0.5 * g->extent(axes[1]);
@@ -78,11 +83,11 @@ PetscErrorCode ReadPatchEdge(PetscOptionItems* PetscOptionsObject, const contact
 OptionSpec<SpecimenGeometryInput> PatchOption(const char* name, bool square, double SourcePatch::*first,
                                               double SourcePatch::*second, const char* help) {
   return {{name, help, "m", contact::ParameterType::RealList, "", contact::Range::any(), {}},
-          [=](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
+          [=](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in,
+              std::string* shown) {
             SourcePatch& patch = in->geometry.patch;
-            PetscBool given;
             return PatchPair(items, spec.name.c_str(), spec.describe().c_str(), in->geometry.depth > 0.0, square,
-                             &(patch.*first), &(patch.*second), &given);
+                             &(patch.*first), &(patch.*second), shown);
           }};
 }
 
@@ -90,8 +95,10 @@ OptionSpec<SpecimenGeometryInput> PatchOption(const char* name, bool square, dou
 OptionSpec<SpecimenGeometryInput> CrackShapeOption() {
   return {{"-crack_shape", "3D: the cracks' outlines, the length x width rectangle or the ellipse inscribed in it", "",
            contact::ParameterType::Choice, "", contact::Range::any(), {"rectangle", "ellipse"}},
-          [](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in) {
-            return OptionsChoiceList(items, spec.name.c_str(), spec.help.c_str(), spec.choices, &in->shapes, nullptr);
+          [](PetscOptionItems* items, const contact::ParameterSpec& spec, SpecimenGeometryInput* in,
+             std::string* shown) {
+            return OptionsChoiceList(items, spec.name.c_str(), spec.help.c_str(), spec.choices, &in->shapes, nullptr,
+                                     shown);
           }};
 }
 
@@ -137,11 +144,12 @@ T PerCrack(const std::vector<T>& values, PetscInt i) {
 
 /// -mesh_crack_mirror off|on|<half-width [m]> → g->crack_mirror_width (0, −1: DefaultMirrorWidth, the width).
 PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
-                               SpecimenGeometry* g) {
+                               SpecimenGeometry* g, std::string* shown) {
   PetscFunctionBeginUser;
   char text[64] = "";
   PetscBool given = PETSC_FALSE;
   PetscCall(PetscOptionsString(spec.name.c_str(), spec.help.c_str(), nullptr, "off", text, sizeof(text), &given));
+  *shown = given ? text : "off";
   if (!given) PetscFunctionReturn(0);
   const std::string value = text;
   char* end = nullptr;
@@ -153,12 +161,12 @@ PetscErrorCode ReadCrackMirror(PetscOptionItems* PetscOptionsObject, const conta
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check) {
+PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool check, OptionValues* values) {
   PetscFunctionBeginUser;
   SpecimenGeometryInput in;
   in.geometry = *g;
   in.cell = g->quads ? MeshCell::Quad : MeshCell::Triangle;
-  PetscCall(ReadOptionSpecs(comm, "Generated specimen (used unless -mesh_file)", SpecimenGeometryOptionSpecs(), &in));
+  PetscCall(ReadOptionSpecs(comm, "Generated specimen (used unless -mesh_file)", SpecimenGeometryOptionSpecs(), &in, values));
   *g = in.geometry;
   g->quads = in.cell == MeshCell::Quad;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry
@@ -216,10 +224,12 @@ OptionSpec<HeatMeshInput> HeatMeshSizeOption(const char* name, double HeatMeshSi
                                              std::optional<double> HeatMeshOptions::*given, const char* unit,
                                              const char* help) {
   return {{name, help, unit, contact::ParameterType::Real, "", contact::Range::any(), {}},
-          [=](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, HeatMeshInput* in) {
+          [=](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec, HeatMeshInput* in,
+              std::string* text) {
             double& value = in->shown.*shown;
             PetscBool set = PETSC_FALSE;
             PetscCall(PetscOptionsReal(spec.name.c_str(), spec.describe().c_str(), nullptr, value, &value, &set));
+            *text = ShownReal(value);
             if (set) in->options.*given = value;
             return set ? CheckOptionRange(PetscOptionsObject->comm, spec, value) : PetscErrorCode(0);
           }};
@@ -228,18 +238,18 @@ OptionSpec<HeatMeshInput> HeatMeshSizeOption(const char* name, double HeatMeshSi
 /// Reads the -heat_mesh* options given (-help shows the defaults for this geometry);
 /// check: refuse sizes that do not nest.
 PetscErrorCode ReadHeatMeshOptions(MPI_Comm comm, const SpecimenGeometry& g, double exchange_length,
-                                   HeatMeshOptions* o, bool check) {
+                                   HeatMeshOptions* o, bool check, OptionValues* values) {
   PetscFunctionBeginUser;
   HeatMeshInput in{*o, HeatMeshSizesFor(HeatMeshOptions{}, g, exchange_length)};  // the defaults shown
-  PetscCall(ReadOptionSpecs(comm, "Heat mesh (generated specimens)", HeatMeshOptionSpecs(), &in));
+  PetscCall(ReadOptionSpecs(comm, "Heat mesh (generated specimens)", HeatMeshOptionSpecs(), &in, values));
   *o = in.options;
   if (o->graded && check) VibrothermCallCpp(comm, HeatMeshSizesFor(*o, g, exchange_length).validate());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m) {
+PetscErrorCode ReadMeshSource(MPI_Comm comm, MeshSource* m, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Specimen mesh", MeshSourceOptionSpecs(), m));
+  PetscCall(ReadOptionSpecs(comm, "Specimen mesh", MeshSourceOptionSpecs(), m, values));
   bool refine_named;
   std::string refinements;
   PetscCall(OptionGiven(nullptr, "-mesh_file", &m->from_file));
@@ -336,8 +346,8 @@ const std::vector<OptionSpec<SpecimenGeometryInput>>& SpecimenGeometryOptionSpec
       {{"-mesh_crack_mirror", "Mesh a band around each crack mirror-symmetric across it (issue 41): off, on "
         "(half-width: the distance over which the mesh grades from -mesh_h_crack to -mesh_h) or a half-width [m]",
         "", contact::ParameterType::Text, "off", Range::any(), {}},
-       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in) {
-         return ReadCrackMirror(items, spec, &in->geometry);
+       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in, std::string* shown) {
+         return ReadCrackMirror(items, spec, &in->geometry, shown);
        }},
       EdgeOption(Side::Bottom), EdgeOption(Side::Right), EdgeOption(Side::Top), EdgeOption(Side::Left),
       geometry(RealOption("-specimen_depth", &G::depth, Range::at_least(0.0), "m",
@@ -351,8 +361,8 @@ const std::vector<OptionSpec<SpecimenGeometryInput>>& SpecimenGeometryOptionSpec
       // After the depth: the patch's axes.
       {{"-source_patch_edge", "A transducer patch on this edge (3D: face) is the source (the rest keeps -edge_<side>)",
         "", contact::ParameterType::Choice, "", Range::any(), {"bottom", "right", "top", "left", "front", "back"}},
-       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in) {
-         return ReadPatchEdge(items, spec, &in->geometry);
+       [](PetscOptionItems* items, const contact::ParameterSpec& spec, In* in, std::string* shown) {
+         return ReadPatchEdge(items, spec, &in->geometry, shown);
        }},
       PatchOption("-source_patch_center", false, &SourcePatch::center, &SourcePatch::center2,
                   "Centre of the patch along its edge (x on bottom/top, y on the sides; 3D: then z, front/back: x then "
@@ -363,14 +373,14 @@ const std::vector<OptionSpec<SpecimenGeometryInput>>& SpecimenGeometryOptionSpec
   return specs;
 }
 
-PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* o) {
+PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadMeshSource(comm, &o->source));
+  PetscCall(ReadMeshSource(comm, &o->source, values));
   const bool generated = !o->source.from_file;
-  PetscCall(ReadSpecimenGeometry(comm, &o->geometry, generated));
+  PetscCall(ReadSpecimenGeometry(comm, &o->geometry, generated, values));
   if (!generated) PetscCall(NoteIgnoredGeometry(comm, o->source.file));
   // A mesh file's heat mesh sizes are checked against the geometry read from it (SpecimenCreate).
-  PetscCall(ReadHeatMeshOptions(comm, o->geometry, exchange_length, &o->heat, generated));
+  PetscCall(ReadHeatMeshOptions(comm, o->geometry, exchange_length, &o->heat, generated, values));
   PetscFunctionReturn(0);
 }
 

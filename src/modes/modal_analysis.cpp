@@ -35,11 +35,12 @@ const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o) {
+PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o,
+                                OptionValues* values) {
   PetscFunctionBeginUser;
   o->target_frequency = default_frequency;
   o->defect_radius = default_radius;
-  PetscCall(ReadOptionSpecs(comm, "Natural modes (-modes)", ModesOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "Natural modes (-modes)", ModesOptionSpecs(), o, values));
   PetscFunctionReturn(0);
 }
 

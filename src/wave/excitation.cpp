@@ -183,10 +183,10 @@ const std::vector<OptionSpec<ExcitationOptions>>& ExcitationOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e) {
+PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* e, OptionValues* values) {
   PetscFunctionBeginUser;
   ExcitationOptions o{*e, {}, {}};
-  PetscCall(ReadOptionSpecs(comm, "Excitation on the source edge", ExcitationOptionSpecs(), &o));
+  PetscCall(ReadOptionSpecs(comm, "Excitation on the source edge", ExcitationOptionSpecs(), &o, values));
   *e = o.excitation;
   PetscCall(SetSweep(comm, o.sweep, o.schedule.empty(), &e->signal));
   PetscCall(SetSchedule(comm, o.schedule, &e->signal));

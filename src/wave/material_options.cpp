@@ -13,9 +13,9 @@ const std::vector<OptionSpec<ElasticMaterial>>& ElasticMaterialOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* m) {
+PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* m, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Elastic material (2D: plane strain; 3D: the box)", ElasticMaterialOptionSpecs(), m));
+  PetscCall(ReadOptionSpecs(comm, "Elastic material (2D: plane strain; 3D: the box)", ElasticMaterialOptionSpecs(), m, values));
   PetscFunctionReturn(0);
 }
 
@@ -35,10 +35,10 @@ const std::vector<OptionSpec<ElasticMaterial>>& MaterialDampingOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* m) {
+PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* m, OptionValues* values) {
   PetscFunctionBeginUser;
   m->damping_frequency = source_frequency;
-  PetscCall(ReadOptionSpecs(comm, "Material damping", MaterialDampingOptionSpecs(), m));
+  PetscCall(ReadOptionSpecs(comm, "Material damping", MaterialDampingOptionSpecs(), m, values));
   // The default (the source's frequency) is checked only when damping is on, so an unusable
   // -source_frequency is refused under its own name.
   PetscCheck(m->loss_factor == 0.0 || (m->damping_frequency > 0.0 && std::isfinite(m->damping_frequency)), comm,

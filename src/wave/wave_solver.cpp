@@ -48,9 +48,9 @@ const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o) {
+PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Elastic waves", WaveOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "Elastic waves", WaveOptionSpecs(), o, values));
   PetscFunctionReturn(0);
 }
 

@@ -44,13 +44,13 @@ PetscErrorCode KeepFirstMessage(MPI_Comm, int, const char*, const char*, PetscEr
 /// Reads `specs` into a default Target with `given` as the only options; *message: the error's, if any.
 template <class Target>
 PetscErrorCode ReadWith(const std::vector<OptionSpec<Target>>& specs, const std::string& given, Target* target,
-                        std::string* message) {
+                        std::string* message, OptionValues* values = nullptr) {
   PetscOptions own;
   PetscCall(PetscOptionsCreate(&own));
   PetscCall(PetscOptionsInsertString(own, given.c_str()));
   PetscCall(PetscOptionsPush(own));
   PetscCall(PetscPushErrorHandler(KeepFirstMessage, message));
-  const PetscErrorCode status = ReadOptionSpecs(PETSC_COMM_WORLD, "test", specs, target);
+  const PetscErrorCode status = ReadOptionSpecs(PETSC_COMM_WORLD, "test", specs, target, values);
   PetscCall(PetscPopErrorHandler());
   PetscCall(PetscOptionsPop());
   PetscCall(PetscOptionsDestroy(&own));
@@ -183,17 +183,53 @@ TEST(OptionSpecs, EachOptionFillsItsField) {
   EXPECT_FALSE(heat_mesh.options.h.has_value());
 }
 
+TEST(OptionSpecs, RecordTheValueAsHelpShowsIt) {
+  // The run record's values come from the declarations: a real by %g, a list as typed, a
+  // choice by name, a flag TRUE/FALSE, a list not given "none", one value per option.
+  std::string message;
+  coupling::DriverOptions driver;
+  OptionValues values;
+  ASSERT_EQ(ReadWith(coupling::DriverOptionSpecs(), "-final_time 1e-3 -output_times 5e-5,1e-4 -physics wave "
+                     "-heat_substeps 4", &driver, &message, &values), 0) << message;
+  EXPECT_EQ(values.size(), coupling::DriverOptionSpecs().size());
+  EXPECT_EQ(values["-final_time"], "0.001");
+  EXPECT_EQ(values["-couple_dt"], "-1");  // not given: the field's value (the default rule applies later)
+  EXPECT_EQ(values["-output_times"], "5e-5,1e-4");
+  EXPECT_EQ(values["-crack_probe"], "none");
+  EXPECT_EQ(values["-physics"], "wave");
+  EXPECT_EQ(values["-heat_substeps"], "4");
+  EXPECT_EQ(values["-heat_near_field"], "TRUE");
+  mesh::SpecimenGeometryInput specimen;
+  values.clear();
+  ASSERT_EQ(ReadWith(mesh::SpecimenGeometryOptionSpecs(), "-edge_left free -mesh_crack_mirror on", &specimen,
+                     &message, &values), 0) << message;
+  EXPECT_EQ(values["-edge_left"], "free");
+  EXPECT_EQ(values["-mesh_crack_mirror"], "on");
+  EXPECT_EQ(values["-crack_shape"], "rectangle");
+}
+
 TEST(OptionRegistry, HoldsExactlyTheOptionsTheSceneReads) {
   // The typo check knows vibrotherm's options from the registry alone: every option ReadScene
   // declares to PETSc (captured from PETSc's help printer, as -help shows them) must be in it,
-  // and nothing in it may be an option no reader reads. Run in a process of its own (ctest
+  // and nothing in it may be an option no reader reads; the value each reader recorded is the
+  // one PETSc's help line showed. Run in a process of its own (ctest
   // option_registry): PETSc prints an options block's help only the first time it is read.
+  // Some values given (a real typed otherwise than %g shows it, a list, a choice, a text choice).
+  PetscOptions given;
+  ASSERT_EQ(PetscOptionsCreate(&given), 0);
+  ASSERT_EQ(PetscOptionsInsertString(given, "-final_time 1e-3 -output_times 5e-5,1e-4 -source_frequency 2e5 "
+                                     "-camera_fps 50 -heat_bc insulated -physics wave -wave_degree 1"), 0);
+  ASSERT_EQ(PetscOptionsPush(given), 0);
   std::vector<DeclaredOption> captured;
   ASSERT_EQ(OptionAuditBegin(false), 0);
   coupling::Scene scene;
   const PetscErrorCode status = coupling::ReadScene(PETSC_COMM_WORLD, &scene);
   ASSERT_EQ(OptionAuditEnd(&captured), 0);
+  ASSERT_EQ(PetscOptionsPop(), 0);
+  ASSERT_EQ(PetscOptionsDestroy(&given), 0);
   ASSERT_EQ(status, 0);
+  EXPECT_EQ(scene.values["-final_time"], "0.001");
+  EXPECT_EQ(scene.values["-output_times"], "5e-5,1e-4");
   PetscMPIInt rank;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   if (rank != 0) return;  // the printer prints on rank 0
@@ -204,6 +240,10 @@ TEST(OptionRegistry, HoldsExactlyTheOptionsTheSceneReads) {
   for (const DeclaredOption& d : captured) {
     read.insert(d.name);
     EXPECT_TRUE(std::binary_search(known.begin(), known.end(), d.name)) << d.name << " is read but not in the registry";
+    // The run record's value, from the declaration, is what PETSc's help showed.
+    const auto value = scene.values.find(d.name);
+    ASSERT_NE(value, scene.values.end()) << d.name << " read but its value not recorded";
+    EXPECT_EQ(value->second, d.value) << d.name;
   }
   for (const std::string& name : known) EXPECT_TRUE(read.count(name)) << name << " is in the registry but never read";
   EXPECT_GE(known.size(), 120u);

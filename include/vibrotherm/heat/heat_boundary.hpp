@@ -30,7 +30,7 @@ struct HeatBoundaryOptions {
 /// -heat_bc, -heat_bc_<side>, -heat_h, -heat_T_ext, declared (option_spec.hpp).
 const std::vector<OptionSpec<HeatBoundaryOptions>>& HeatBoundaryOptionSpecs();
 /// Reads them (-heat_T_ext's default: T0). Collective.
-PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* options);
+PetscErrorCode ReadHeatBoundaryOptions(MPI_Comm comm, double T0, HeatBoundaryOptions* options, OptionValues* values = nullptr);
 
 /// The outer-edge terms of one heat space.
 struct HeatBoundary {

@@ -47,7 +47,7 @@ struct HeatMaterial {
 };
 /// -heat_conductivity, -heat_capacity, -heat_T0, -material_expansion, declared (option_spec.hpp).
 const std::vector<OptionSpec<HeatMaterial>>& HeatMaterialOptionSpecs();
-PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* material);
+PetscErrorCode ReadHeatMaterial(MPI_Comm comm, double density, HeatMaterial* material, OptionValues* values = nullptr);
 
 /// Everything the heat solver is built from (read once with the scene).
 struct HeatOptions {
@@ -62,7 +62,7 @@ struct HeatOptions {
 /// -heat_degree, -heat_lumped_mass, declared (option_spec.hpp).
 const std::vector<OptionSpec<HeatOptions>>& HeatDiscretisationOptionSpecs();
 /// -heat_* (material, degree, mass, edges). Collective.
-PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options);
+PetscErrorCode ReadHeatOptions(MPI_Comm comm, double density, HeatOptions* options, OptionValues* values = nullptr);
 
 /// The heat balance of HeatSolver::Accounts: deposited = boundary_loss + content, to the
 /// integrator's accuracy (exactly for backward Euler and Crank–Nicolson).

@@ -27,6 +27,6 @@ struct ApproachProfile {
 /// -crack_a0, -crack_a0_profile, -crack_a0_max, -crack_a0_file, declared (option_spec.hpp).
 const std::vector<OptionSpec<ApproachProfile>>& ApproachProfileOptionSpecs();
 /// Reads them and the file's table. Collective.
-PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* profile);
+PetscErrorCode ReadApproachProfile(MPI_Comm comm, ApproachProfile* profile, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm::interface

@@ -6,6 +6,7 @@
 #include <petscsys.h>
 
 #include "vibrotherm/contact/contact_parameters.hpp"
+#include "vibrotherm/options/petsc/option_spec.hpp"
 
 namespace vibrotherm {
 
@@ -13,6 +14,6 @@ namespace vibrotherm {
 /// params: an option not given keeps its value on entry (the declared default
 /// for a default-constructed params). Retired names and bad values are user
 /// errors naming the option; -help lists every option with help and default.
-PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& params);
+PetscErrorCode ReadContactOptions(MPI_Comm comm, contact::ContactParameters& params, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm

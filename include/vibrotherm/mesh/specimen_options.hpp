@@ -67,7 +67,7 @@ struct SpecimenOptions {
 /// generated-specimen options given are noted as ignored instead of checked. exchange_length:
 /// √(α · heat step), the layer friction heats in one exchange (the heat mesh's default first
 /// layer is half of it). Collective.
-PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* options);
+PetscErrorCode ReadSpecimenOptions(MPI_Comm comm, double exchange_length, SpecimenOptions* options, OptionValues* values = nullptr);
 
 /// The heat mesh's sizes for a specimen of this geometry: defaults from the physics (the first
 /// layer resolves the layer one exchange heats; layers grow to the wave mesh's crack spacing / 2),

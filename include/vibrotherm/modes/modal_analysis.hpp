@@ -45,7 +45,7 @@ struct ModesOptions {
 };
 /// The -modes_* options, declared (option_spec.hpp).
 const std::vector<OptionSpec<ModesOptions>>& ModesOptionSpecs();
-PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o);
+PetscErrorCode ReadModesOptions(MPI_Comm comm, double default_frequency, double default_radius, ModesOptions* o, OptionValues* values = nullptr);
 
 struct Mode {
   double frequency;      ///< [Hz]

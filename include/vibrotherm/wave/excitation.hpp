@@ -75,6 +75,6 @@ struct ExcitationOptions {
 /// -source_ramp_cycles, -source_schedule, -source_sweep, declared (option_spec.hpp).
 const std::vector<OptionSpec<ExcitationOptions>>& ExcitationOptionSpecs();
 /// Reads them into excitation (its values are the defaults). Collective.
-PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* excitation);
+PetscErrorCode ReadExcitation(MPI_Comm comm, Excitation* excitation, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm::wave

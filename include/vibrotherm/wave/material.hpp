@@ -31,11 +31,11 @@ struct ElasticMaterial {
 /// -material_density, -material_E, -material_nu, declared (option_spec.hpp).
 const std::vector<OptionSpec<ElasticMaterial>>& ElasticMaterialOptionSpecs();
 /// Reads -material_density, -material_E, -material_nu (validated, named errors).
-PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* material);
+PetscErrorCode ReadElasticMaterial(MPI_Comm comm, ElasticMaterial* material, OptionValues* values = nullptr);
 /// -material_loss_factor, -material_damping_frequency, -material_damping_heat, declared.
 const std::vector<OptionSpec<ElasticMaterial>>& MaterialDampingOptionSpecs();
 /// Reads -material_loss_factor and -material_damping_frequency (default: source_frequency) into
 /// the damping rate. Collective.
-PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* material);
+PetscErrorCode ReadMaterialDamping(MPI_Comm comm, double source_frequency, ElasticMaterial* material, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm::wave

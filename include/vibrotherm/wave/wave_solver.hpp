@@ -68,7 +68,7 @@ struct WaveOptions {
 };
 /// The -wave_* options, declared (option_spec.hpp).
 const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs();
-PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options);
+PetscErrorCode ReadWaveOptions(MPI_Comm comm, WaveOptions* options, OptionValues* values = nullptr);
 
 /// Forces the wave solver does not own (the crack interface): evaluated as a
 /// pure function of u at every force evaluation, committed once per accepted step.

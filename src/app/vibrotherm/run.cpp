@@ -1,12 +1,6 @@
 #include "run.hpp"
 
-#include <unistd.h>
-
-#include <algorithm>
 #include <set>
-#include <cmath>
-#include <cstdlib>
-#include <ctime>
 #include <string>
 #include <vector>
 
@@ -28,6 +22,7 @@
 #include "vibrotherm/util/version.hpp"
 #include "output_directory.hpp"
 #include "restart.hpp"
+#include "run_record.hpp"
 
 namespace vibrotherm::app {
 namespace {
@@ -69,9 +64,9 @@ OptionRegistry DeclaredOptions() {
   return registry;
 }
 
-PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o) {
+PetscErrorCode ReadAppOptions(MPI_Comm comm, AppOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "vibrotherm", AppOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "vibrotherm", AppOptionSpecs(), o, values));
   bool dir_set;
   PetscCall(OptionGiven(nullptr, "-output_dir", &dir_set));
   if (!o->restart.empty()) {
@@ -122,20 +117,31 @@ PetscErrorCode ListSolverOptions(MPI_Comm comm) {
 
 /// Every option of every module, whatever the scene (-help lists them, and a run
 /// checks the command line against them before meshing), with their values checked.
-PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene) {
+PetscErrorCode DeclareOptions(MPI_Comm comm, const coupling::Scene& scene, OptionValues* values) {
   PetscFunctionBeginUser;
   modes::ModesOptions modes;
-  PetscCall(modes::ReadModesOptions(comm, scene.excitation.signal.frequency, 0.01, &modes));
+  PetscCall(modes::ReadModesOptions(comm, scene.excitation.signal.frequency, 0.01, &modes, values));
+  PetscFunctionReturn(0);
+}
+
+/// -help: every option, vibrotherm's and the main ones of its PETSc objects (printed while read).
+PetscErrorCode PrintHelp(MPI_Comm comm, const coupling::Scene& scene) {
+  PetscFunctionBeginUser;
+  PetscCall(DeclareOptions(comm, scene, nullptr));
+  PetscCall(ListSolverOptions(comm));
+  std::vector<DeclaredOption> printed;
+  PetscCall(OptionAuditEnd(&printed));
+  PetscCall(io::RunLogClose());
   PetscFunctionReturn(0);
 }
 
 /// Before meshing (which may take minutes): no likely typo of a vibrotherm option,
-/// every value there, and an output directory this run may use. *declared: the options
-/// declared so far (rank 0).
+/// every value there, and an output directory this run may use. *values: the -modes_* options'
+/// values added.
 PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene,
-                                  const OptionRegistry& registry, io::RunSummary* summary) {
+                                  const OptionRegistry& registry, OptionValues* values, io::RunSummary* summary) {
   PetscFunctionBeginUser;
-  PetscCall(DeclareOptions(comm, scene));
+  PetscCall(DeclareOptions(comm, scene, values));
   // Likely typos now (PETSc's objects declare their options later); -allow_unknown's warning comes once, after.
   if (!app.allow_unknown) PetscCall(CheckUnknownOptions(comm, registry.names(), false, true));
   PetscCall(CheckMissingValues(comm, registry.names_with_values()));
@@ -170,60 +176,14 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   PetscFunctionReturn(0);
 }
 
-/// A declared default as the help printed it; PETSc prints some array options
-/// without a default from uninitialised memory (-wave_ts_time_span <6.9e-310>):
-/// a subnormal number is such garbage, recorded as "unset".
-std::string RecordedDefault(const std::string& value) {
-  char* end = nullptr;
-  const double x = std::strtod(value.c_str(), &end);
-  const bool number = end && *end == '\0' && !value.empty();
-  return number && x != 0.0 && std::fpclassify(x) == FP_SUBNORMAL ? "unset" : value;
-}
-
-/// Every declared option with its value and source (rank 0 knows the declared options).
-std::vector<io::OptionRecord> OptionRecords(const std::vector<std::string>& command_line,
-                                            const std::vector<DeclaredOption>& declared) {
-  std::vector<io::OptionRecord> records;
-  for (const DeclaredOption& d : declared) {
-    bool given = false;
-    (void)OptionGiven(nullptr, d.name.c_str(), &given);
-    const bool typed = std::find(command_line.begin(), command_line.end(), d.name) != command_line.end();
-    records.push_back({d.name, given ? d.value : RecordedDefault(d.value),
-                       typed ? "command line" : given ? "options file" : "default"});
-  }
-  return records;
-}
-
 /// -restart: the checkpoint read and compared with the options known before meshing.
 PetscErrorCode ReadCheckpointEarly(MPI_Comm comm, const AppOptions& app, const std::vector<std::string>& command_line,
-                                   const std::vector<DeclaredOption>& declared, store::Checkpoint* checkpoint) {
+                                   const OptionValues& recorded, store::Checkpoint* checkpoint) {
   PetscFunctionBeginUser;
   std::set<std::string> names;
-  for (const DeclaredOption& d : declared) names.insert(d.name);
-  PetscCall(ReadRestart(comm, app.restart, OptionFingerprint(OptionRecords(command_line, declared)), names, checkpoint));
+  for (const auto& [name, value] : recorded) names.insert(name);
+  PetscCall(ReadRestart(comm, app.restart, OptionFingerprint(OptionRecords(command_line, recorded)), names, checkpoint));
   PetscFunctionReturn(0);
-}
-
-/// The run record of summary.json: where and from what, every option with its
-/// source (rank 0 knows the declared options), and what the program derived.
-void RecordRun(const std::vector<std::string>& command_line, const std::vector<DeclaredOption>& declared,
-               const coupling::Scene& scene, io::RunSummary* summary) {
-  summary->git_commit = git_commit();
-  char host[256] = "";
-  gethostname(host, sizeof(host) - 1);
-  summary->host = host;
-  const std::time_t now = std::time(nullptr);
-  char date[64];
-  std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  summary->date = date;
-  for (const std::string& word : command_line) summary->command_line += (summary->command_line.empty() ? "" : " ") + word;
-  summary->option_values = OptionRecords(command_line, declared);
-  summary->derived["final_time"] = scene.final_time;
-  summary->derived_rules["final_time"] = scene.run.final_time > 0 ? "-final_time" : "the source duration";
-  summary->derived["couple_dt"] = scene.couple_dt;
-  summary->derived_rules["couple_dt"] = scene.run.couple_dt > 0 ? "-couple_dt" : "1/8 of the source period";
-  summary->derived["heat_dt"] = scene.couple_dt / static_cast<double>(scene.run.heat_substeps);
-  summary->derived_rules["heat_dt"] = "couple_dt / -heat_substeps, rounded to whole wave steps";
 }
 
 }  // namespace
@@ -242,26 +202,24 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   AppOptions app;
   PetscCall(PetscOptionsHasHelp(nullptr, &app.help));
   PetscCall(OptionAuditBegin(app.help));  // every reader declares its options from here on
-  PetscCall(ReadAppOptions(comm, &app));
+  OptionValues read;  // every vibrotherm option's value as its reader read it
+  PetscCall(ReadAppOptions(comm, &app, &read));
   coupling::Scene scene;
   PetscCall(coupling::ReadScene(comm, &scene));
-  std::vector<DeclaredOption> declared;
-  if (app.help) {
-    PetscCall(DeclareOptions(comm, scene));
-    PetscCall(ListSolverOptions(comm));
-    PetscCall(OptionAuditEnd(&declared));
-    PetscFunctionReturn(io::RunLogClose());
-  }
+  if (app.help) PetscFunctionReturn(PrintHelp(comm, scene));
+  read.insert(scene.values.begin(), scene.values.end());
   io::RunSummary summary;
   const OptionRegistry registry = DeclaredOptions();
-  PetscCall(CheckBeforeMeshing(comm, app, scene, registry, &summary));
+  PetscCall(CheckBeforeMeshing(comm, app, scene, registry, &read, &summary));
+  std::vector<DeclaredOption> declared;  // the options PETSc's printer showed (those of PETSc's objects)
   OptionAuditDeclared(&declared);
   // The directory is this run's from now on: a second run started at the same time is refused before it meshes.
   const std::string dir = app.output_dir;
   OutputDirectory output;
   PetscCall(output.Claim(comm, dir));
   store::Checkpoint checkpoint(comm);
-  if (!app.restart.empty()) PetscCall(ReadCheckpointEarly(comm, app, command_line, declared, &checkpoint));
+  if (!app.restart.empty())
+    PetscCall(ReadCheckpointEarly(comm, app, command_line, RecordedOptions(registry, read, declared), &checkpoint));
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
@@ -270,7 +228,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, registry.names(), app.allow_unknown));
   PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
-  RecordRun(command_line, declared, scene, &summary);
+  RecordRun(command_line, RecordedOptions(registry, read, declared), scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
   coupling::RunControl control;

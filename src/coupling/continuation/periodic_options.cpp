@@ -40,9 +40,9 @@ const std::vector<OptionSpec<PeriodicOptions>>& PeriodicOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o) {
+PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Periodic continuation of a periodic source", PeriodicOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "Periodic continuation of a periodic source", PeriodicOptionSpecs(), o, values));
   o->on = o->choice != PeriodicChoice::Off;
   PetscFunctionReturn(0);
 }

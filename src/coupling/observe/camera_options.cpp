@@ -57,9 +57,9 @@ const std::vector<OptionSpec<CameraOptions>>& CameraOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o) {
+PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "IR camera (README \"IR camera\")", CameraOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "IR camera (README \"IR camera\")", CameraOptionSpecs(), o, values));
   // -camera decides when given; otherwise any -camera_* option given switches the camera on.
   bool on_given = false, any_given = false;
   for (const OptionSpec<CameraOptions>& option : CameraOptionSpecs()) {

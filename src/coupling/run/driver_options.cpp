@@ -55,9 +55,9 @@ const std::vector<OptionSpec<DriverOptions>>& DriverOptionSpecs() {
   return specs;
 }
 
-PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o) {
+PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* o, OptionValues* values) {
   PetscFunctionBeginUser;
-  PetscCall(ReadOptionSpecs(comm, "Run control and recording", DriverOptionSpecs(), o));
+  PetscCall(ReadOptionSpecs(comm, "Run control and recording", DriverOptionSpecs(), o, values));
   // Checked here, not only when the recorder opens probes.csv (the output directory exists by then).
   PetscCheck(o->probe_points.size() % o->dimension == 0, comm, PETSC_ERR_USER_INPUT,
              "-probe_points needs %s, got %zu numbers", o->dimension == 2 ? "x,y pairs" : "x,y,z triples in 3D",

@@ -136,22 +136,22 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   PetscCall(ReadSceneDimension(comm, &s->run.dimension));
-  PetscCall(ReadDriverOptions(comm, &s->run));
-  PetscCall(wave::ReadElasticMaterial(comm, &s->material));
-  PetscCall(wave::ReadExcitation(comm, &s->excitation));
+  PetscCall(ReadDriverOptions(comm, &s->run, &s->values));
+  PetscCall(wave::ReadElasticMaterial(comm, &s->material, &s->values));
+  PetscCall(wave::ReadExcitation(comm, &s->excitation, &s->values));
   // A sweep's loss factor holds at its centre frequency (mass-proportional damping: η ∝ 1/f across the band).
   const wave::SourceTimeFunction& signal = s->excitation.signal;
   const double damping_frequency = signal.sweeping() ? 0.5 * (signal.sweep_from + signal.sweep_to) : signal.frequency;
-  PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material));
-  PetscCall(wave::ReadWaveOptions(comm, &s->wave));
+  PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material, &s->values));
+  PetscCall(wave::ReadWaveOptions(comm, &s->wave, &s->values));
   PetscCheck(!(s->wave.harmonic_start && signal.sweeping()), comm, PETSC_ERR_USER_INPUT,
              "-wave_start harmonic with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)");
   s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
-  PetscCall(ReadContactOptions(comm, s->contact));
-  PetscCall(interface::ReadApproachProfile(comm, &s->a0));
-  PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat));
-  PetscCall(ReadCameraOptions(comm, &s->camera));
-  PetscCall(ReadPeriodicOptions(comm, &s->periodic));
+  PetscCall(ReadContactOptions(comm, s->contact, &s->values));
+  PetscCall(interface::ReadApproachProfile(comm, &s->a0, &s->values));
+  PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat, &s->values));
+  PetscCall(ReadCameraOptions(comm, &s->camera, &s->values));
+  PetscCall(ReadPeriodicOptions(comm, &s->periodic, &s->values));
   PetscCall(CheckScene(comm, *s));
   PetscCall(RestrictToDimension(comm, s));
   s->final_time = s->run.final_time > 0.0 ? s->run.final_time : s->excitation.signal.duration;
@@ -168,7 +168,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
                             t, s->final_time));
   }
   s->run.output_times = kept;
-  PetscCall(mesh::ReadSpecimenOptions(comm, s->exchange_length(), &s->specimen));  // its heat mesh: after the heat step
+  PetscCall(mesh::ReadSpecimenOptions(comm, s->exchange_length(), &s->specimen, &s->values));  // its heat mesh: after the heat step
   s->wave.harmonic_force = s->specimen.source.force;
   PetscFunctionReturn(0);
 }

@@ -44,7 +44,7 @@ PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* o
 
 PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
                                  const std::vector<std::string>& names, std::vector<PetscInt>* indices,
-                                 PetscBool* set) {
+                                 PetscBool* set, std::string* shown) {
   PetscFunctionBeginUser;
   char value[1024] = "";
   PetscBool given = PETSC_FALSE;
@@ -52,6 +52,7 @@ PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const cha
   // -help shows the first name, the default of a list not given.
   PetscCall(PetscOptionsString(option, text.c_str(), nullptr, names.front().c_str(), value, sizeof(value), &given));
   if (set) *set = given;
+  if (shown) *shown = given ? value : names.front();
   if (!given) PetscFunctionReturn(0);
   indices->clear();
   std::string rest = value;

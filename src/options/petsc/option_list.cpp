@@ -10,16 +10,17 @@
 namespace vibrotherm {
 
 PetscErrorCode OptionsRealList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
-                               std::vector<double>* values, PetscBool* set) {
+                               std::vector<double>* values, PetscBool* set, std::string* shown) {
   PetscFunctionBeginUser;
-  std::ostringstream shown;
-  shown.precision(17);
-  for (std::size_t i = 0; i < values->size(); ++i) shown << (i ? "," : "") << (*values)[i];
-  const std::string fallback = values->empty() ? "none" : shown.str();
+  std::ostringstream listed;
+  listed.precision(17);
+  for (std::size_t i = 0; i < values->size(); ++i) listed << (i ? "," : "") << (*values)[i];
+  const std::string fallback = values->empty() ? "none" : listed.str();
   char text[4096];
   PetscBool given = PETSC_FALSE;
   PetscCall(PetscOptionsString(option, help, nullptr, fallback.c_str(), text, sizeof(text), &given));
   if (set) *set = given;
+  if (shown) *shown = given ? text : fallback;
   if (!given) PetscFunctionReturn(0);
   // "-crack_center" alone (or with ""): PETSc gives an empty string.
   PetscCheck(text[0] != '\0', PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "%s: needs a value", option);

@@ -1,6 +1,7 @@
 #include "vibrotherm/options/petsc/option_spec.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -19,6 +20,16 @@ PetscErrorCode CheckOptionRange(MPI_Comm comm, const contact::ParameterSpec& spe
              spec.range.rule().c_str(), unit.c_str(), shown.str().c_str());
   PetscFunctionReturn(0);
 }
+
+std::string ShownReal(double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+std::string ShownInt(PetscInt value) { return std::to_string(value); }
+
+std::string ShownFlag(bool value) { return value ? "TRUE" : "FALSE"; }
 
 PetscErrorCode ReadTextChoice(PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& spec,
                               std::string* value) {

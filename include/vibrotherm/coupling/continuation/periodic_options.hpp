@@ -44,6 +44,6 @@ struct PeriodicOptions {
 /// The -periodic* options, declared (option_spec.hpp): name, help, unit, range, field.
 const std::vector<OptionSpec<PeriodicOptions>>& PeriodicOptionSpecs();
 /// Reads -periodic*, checked, named errors. Collective.
-PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* options);
+PetscErrorCode ReadPeriodicOptions(MPI_Comm comm, PeriodicOptions* options, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm::coupling

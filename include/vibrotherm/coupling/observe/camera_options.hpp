@@ -32,6 +32,6 @@ struct CameraOptions {
 /// The camera's options, declared (option_spec.hpp).
 const std::vector<OptionSpec<CameraOptions>>& CameraOptionSpecs();
 /// Reads and checks -camera*. Collective. A bad value is one line naming the option.
-PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* options);
+PetscErrorCode ReadCameraOptions(MPI_Comm comm, CameraOptions* options, OptionValues* values = nullptr);
 
 }  // namespace vibrotherm::coupling

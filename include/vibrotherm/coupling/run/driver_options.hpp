@@ -36,7 +36,7 @@ struct DriverOptions : RecordingOptions {
 /// The run-control and recording options, declared (option_spec.hpp).
 const std::vector<OptionSpec<DriverOptions>>& DriverOptionSpecs();
 /// Reads and checks them. Collective.
-PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options);
+PetscErrorCode ReadDriverOptions(MPI_Comm comm, DriverOptions* options, OptionValues* values = nullptr);
 
 /// The heat exchange interval: -couple_dt, or 1/8 of the source period.
 double CouplingInterval(const DriverOptions& options, double source_frequency);

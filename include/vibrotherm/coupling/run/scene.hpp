@@ -29,6 +29,8 @@ struct Scene {
   CameraOptions camera;  ///< -camera*: the IR camera filming the heat field
   PeriodicOptions periodic;  ///< -periodic*: continuation of a periodic state
   mesh::SpecimenOptions specimen;  ///< -mesh_file, -specimen_*, -crack_*, -mesh_*, -edge_*, -heat_mesh*
+  /// Every option ReadScene read, with its value as read (as -help shows it): the run record's.
+  OptionValues values;
   double final_time = 0.0;  ///< -final_time, or the source duration
   double couple_dt = 0.0;   ///< -couple_dt, or 1/8 of the source period
 

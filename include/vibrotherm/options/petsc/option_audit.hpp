@@ -1,8 +1,10 @@
-// What options the program knows: every reader declares its options to PETSc
-// inside PetscOptionsBegin/End blocks; with -help PETSc prints each one. While
-// OptionAudit listens, those lines are captured (and shown only when the user
-// asked for -help), which gives the list of declared names to check the
-// command line against ("-crak_angle: unknown option; did you mean -crack_angle?").
+// The options of the PETSc objects vibrotherm makes (its TSs, KSPs, SNESs, the
+// partitioner, SLEPc's EPS): PETSc declares them while each object reads its options,
+// and with -help prints each one. While OptionAudit listens, those lines are captured
+// (and shown only when the user asked for -help): the names and shown values of the
+// PETSc objects' options, for the check that each was read ("-wave_ts_typ ... did you
+// mean -wave_ts_type?") and for the run record. vibrotherm's own options are known from
+// their declarations (option_registry.hpp), not from these lines.
 //
 // PETSc's help printer is a process-wide function pointer, so the capture is
 // too: one audit at a time, between Begin and End, on rank 0.

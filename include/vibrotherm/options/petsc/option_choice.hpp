@@ -16,10 +16,11 @@ PetscErrorCode OptionsChoice(PetscOptionItems* PetscOptionsObject, const char* o
                              const std::vector<std::string>& names, PetscInt* index, PetscBool* set);
 
 /// A comma-separated list of `names` (one value or one per item): *indices is left alone
-/// unless given; an unknown item is a one-line user error naming the option.
+/// unless given; an unknown item is a one-line user error naming the option. shown (if not
+/// null): the value as -help shows it (as typed, or the first name).
 PetscErrorCode OptionsChoiceList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
                                  const std::vector<std::string>& names, std::vector<PetscInt>* indices,
-                                 PetscBool* set);
+                                 PetscBool* set, std::string* shown = nullptr);
 
 /// OptionsChoice for an enum whose values are the indices of `names`.
 template <class Enum>

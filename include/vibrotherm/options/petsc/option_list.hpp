@@ -6,12 +6,14 @@
 
 #include <petscsys.h>
 
+#include <string>
 #include <vector>
 
 namespace vibrotherm {
 
-/// Inside PetscOptionsBegin/End. values: the default on entry, the list on return; set: whether given.
+/// Inside PetscOptionsBegin/End. values: the default on entry, the list on return; set: whether
+/// given; shown (if not null): the list as -help shows it (as typed, or the default, or "none").
 PetscErrorCode OptionsRealList(PetscOptionItems* PetscOptionsObject, const char* option, const char* help,
-                               std::vector<double>* values, PetscBool* set);
+                               std::vector<double>* values, PetscBool* set, std::string* shown = nullptr);
 
 }  // namespace vibrotherm

@@ -7,14 +7,16 @@
 //   - the reading (PETSc's parsers: what PetscOptionsReal/Int/Bool accept);
 //   - the range check and its one-line error "<name> must be in (0, 1), got 2" (or "must be
 //     finite, got inf");
-//   - -help: "help [unit] (the range, or the values)" with the default.
-// The typo check and the run record still learn the names and values from -help's lines
-// (option_audit.hpp), which ReadOptionSpecs prints like any PETSc options block.
+//   - -help: "help [unit] (the range, or the values)" with the default;
+//   - the value as read, in the text -help shows it ("0.0001", "TRUE", "mmd", a list as typed),
+//     kept in an OptionValues for the run record (ReadOptionSpecs's `values`).
+// The typo check's names come from the lists gathered in an OptionRegistry (option_registry.hpp).
 #pragma once
 
 #include <petscsys.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,12 +27,21 @@
 
 namespace vibrotherm {
 
+/// Option name → its value as read, in the text -help shows for it: the run record's values.
+using OptionValues = std::map<std::string, std::string>;
+
 template <class Target>
 struct OptionSpec {
   contact::ParameterSpec spec;  ///< name, help, unit, type, range, choices (the default is the field's value)
-  /// Reads spec.name into its field of target (inside PetscOptionsBegin/End) and checks it.
-  std::function<PetscErrorCode(PetscOptionItems*, const contact::ParameterSpec&, Target*)> read;
+  /// Reads spec.name into its field of target (inside PetscOptionsBegin/End) and checks it;
+  /// *shown: the value read, as -help shows it.
+  std::function<PetscErrorCode(PetscOptionItems*, const contact::ParameterSpec&, Target*, std::string*)> read;
 };
+
+/// A value as PETSc's -help shows it: a real by %g, an integer, a flag TRUE or FALSE.
+std::string ShownReal(double value);
+std::string ShownInt(PetscInt value);
+std::string ShownFlag(bool value);
 
 /// A one-line user error unless value is finite ("<name> must be finite, got inf") and lies in
 /// spec.range ("<name> <rule> <unit>, got <value>": "-modes_target_frequency must be > 0 Hz, got -5").
@@ -41,8 +52,9 @@ template <class Target>
 OptionSpec<Target> RealOption(const char* name, double Target::*field, contact::Range range, const char* unit,
                               const char* help) {
   return {{name, help, unit, contact::ParameterType::Real, "", range, {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             PetscCall(PetscOptionsReal(s.name.c_str(), s.describe().c_str(), nullptr, t->*field, &(t->*field), nullptr));
+            *shown = ShownReal(t->*field);
             return CheckOptionRange(PetscOptionsObject->comm, s, t->*field);
           }};
 }
@@ -53,9 +65,10 @@ template <class Target>
 OptionSpec<Target> GivenRealOption(const char* name, double Target::*field, contact::Range range, const char* unit,
                                    const char* help) {
   return {{name, help, unit, contact::ParameterType::Real, "", range, {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             PetscBool given = PETSC_FALSE;
             PetscCall(PetscOptionsReal(s.name.c_str(), s.describe().c_str(), nullptr, t->*field, &(t->*field), &given));
+            *shown = ShownReal(t->*field);
             return given ? CheckOptionRange(PetscOptionsObject->comm, s, t->*field) : PetscErrorCode(0);
           }};
 }
@@ -65,8 +78,9 @@ template <class Target>
 OptionSpec<Target> RealListOption(const char* name, std::vector<double> Target::*field, contact::Range range,
                                   const char* unit, const char* help) {
   return {{name, help, unit, contact::ParameterType::RealList, "", range, {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
-            PetscCall(OptionsRealList(PetscOptionsObject, s.name.c_str(), s.describe().c_str(), &(t->*field), nullptr));
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
+            PetscCall(OptionsRealList(PetscOptionsObject, s.name.c_str(), s.describe().c_str(), &(t->*field), nullptr,
+                                      shown));
             for (double value : t->*field) PetscCall(CheckOptionRange(PetscOptionsObject->comm, s, value));
             return PetscErrorCode(0);
           }};
@@ -76,11 +90,12 @@ OptionSpec<Target> RealListOption(const char* name, std::vector<double> Target::
 template <class Target>
 OptionSpec<Target> TextOption(const char* name, std::string Target::*field, const char* help) {
   return {{name, help, "", contact::ParameterType::Text, "", contact::Range::any(), {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             char text[PETSC_MAX_PATH_LEN];
             PetscCall(PetscStrncpy(text, (t->*field).c_str(), sizeof(text)));
             PetscCall(PetscOptionsString(s.name.c_str(), s.help.c_str(), nullptr, text, text, sizeof(text), nullptr));
             t->*field = text;
+            *shown = text;
             return PetscErrorCode(0);
           }};
 }
@@ -96,8 +111,10 @@ template <class Target>
 OptionSpec<Target> TextChoiceOption(const std::string& name, std::function<std::string*(Target*)> field,
                                     std::vector<std::string> choices, const char* help) {
   return {{name, help, "", contact::ParameterType::Choice, "", contact::Range::any(), std::move(choices)},
-          [field](PetscOptionItems* items, const contact::ParameterSpec& s, Target* t) {
-            return ReadTextChoice(items, s, field(t));
+          [field](PetscOptionItems* items, const contact::ParameterSpec& s, Target* t, std::string* shown) {
+            PetscCall(ReadTextChoice(items, s, field(t)));
+            *shown = *field(t);
+            return PetscErrorCode(0);
           }};
 }
 
@@ -105,8 +122,9 @@ OptionSpec<Target> TextChoiceOption(const std::string& name, std::function<std::
 template <class Target>
 OptionSpec<Target> IntOption(const char* name, PetscInt Target::*field, contact::Range range, const char* help) {
   return {{name, help, "", contact::ParameterType::Integer, "", range, {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             PetscCall(PetscOptionsInt(s.name.c_str(), s.describe().c_str(), nullptr, t->*field, &(t->*field), nullptr));
+            *shown = ShownInt(t->*field);
             return CheckOptionRange(PetscOptionsObject->comm, s, static_cast<double>(t->*field));
           }};
 }
@@ -115,10 +133,11 @@ OptionSpec<Target> IntOption(const char* name, PetscInt Target::*field, contact:
 template <class Target>
 OptionSpec<Target> FlagOption(const char* name, bool Target::*field, const char* help) {
   return {{name, help, "", contact::ParameterType::Flag, "", contact::Range::any(), {}},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             PetscBool value = t->*field ? PETSC_TRUE : PETSC_FALSE;
             PetscCall(PetscOptionsBool(s.name.c_str(), s.help.c_str(), nullptr, value, &value, nullptr));
             t->*field = value;
+            *shown = ShownFlag(value);
             return PetscErrorCode(0);
           }};
 }
@@ -128,10 +147,11 @@ template <class Target, class Enum>
 OptionSpec<Target> ChoiceOption(const char* name, Enum Target::*field, std::vector<std::string> names,
                                 const char* help) {
   return {{name, help, "", contact::ParameterType::Choice, "", contact::Range::any(), names},
-          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t) {
+          [field](PetscOptionItems* PetscOptionsObject, const contact::ParameterSpec& s, Target* t, std::string* shown) {
             PetscInt index = static_cast<PetscInt>(t->*field);
             PetscCall(OptionsChoice(PetscOptionsObject, s.name.c_str(), s.help.c_str(), s.choices, &index, nullptr));
             t->*field = static_cast<Enum>(index);
+            *shown = s.choices[index];
             return PetscErrorCode(0);
           }};
 }
@@ -139,18 +159,22 @@ OptionSpec<Target> ChoiceOption(const char* name, Enum Target::*field, std::vect
 /// An option of a nested struct (Outer::*member) read as part of Outer's list.
 template <class Outer, class Inner>
 OptionSpec<Outer> NestedOption(Inner Outer::*member, const OptionSpec<Inner>& inner) {
-  return {inner.spec, [member, read = inner.read](PetscOptionItems* items, const contact::ParameterSpec& s, Outer* t) {
-            return read(items, s, &(t->*member));
-          }};
+  return {inner.spec, [member, read = inner.read](PetscOptionItems* items, const contact::ParameterSpec& s, Outer* t,
+                                                  std::string* shown) { return read(items, s, &(t->*member), shown); }};
 }
 
-/// Reads every option of `specs` into target in one options block titled `title`. Collective.
+/// Reads every option of `specs` into target in one options block titled `title`; values (if
+/// given): each option's value as read, the first read of an option kept. Collective.
 template <class Target>
 PetscErrorCode ReadOptionSpecs(MPI_Comm comm, const char* title, const std::vector<OptionSpec<Target>>& specs,
-                               Target* target) {
+                               Target* target, OptionValues* values = nullptr) {
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, title, nullptr);
-  for (const OptionSpec<Target>& o : specs) PetscCall(o.read(PetscOptionsObject, o.spec, target));
+  for (const OptionSpec<Target>& o : specs) {
+    std::string shown;
+    PetscCall(o.read(PetscOptionsObject, o.spec, target, &shown));
+    if (values) values->emplace(o.spec.name, shown);
+  }
   PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
