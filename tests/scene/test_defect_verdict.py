@@ -20,7 +20,6 @@ excitation from its harmonic start, resolved (no continuation, the waves run to 
     reports its power too; the rows go on through the ring-down (no input, efficiency nan).
 
 usage: test_defect_verdict.py VIBROTHERM SOURCE_DIR"""
-import json
 import os
 import sys
 import tempfile
@@ -40,8 +39,7 @@ SCENE = ["-options_file", os.path.join(src, "options/thermosonic.opts"), "-sourc
 
 
 def summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return outputs(out).summary
 
 
 def frames(out, kind):

@@ -31,7 +31,7 @@ scene = ["-specimen_width", "0.02", "-specimen_height", "0.02", "-mesh_h", "0.00
 def ring(out, extra):
     if not run_scene(check, exe, scene + extra, out):
         return None
-    e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
+    e = outputs(out).columns("energy.csv")
     return e, outputs(out).summary
 
 
@@ -68,7 +68,7 @@ with tempfile.TemporaryDirectory() as tmp:
     heated = os.path.join(tmp, "heated")
     damping = ["-material_loss_factor", str(eta), "-material_damping_frequency", str(f_d)]
     if run_scene(check, exe, scene[:-2] + damping + ["-material_damping_heat", "-heat_bc", "insulated"], heated):
-        e = np.genfromtxt(os.path.join(heated, "energy.csv"), delimiter=",", names=True)
+        e = outputs(heated).columns("energy.csv")
         s = outputs(heated).summary
         deposited = s["heat_deposited_by"].get("damping", 0.0)
         print("damping heat: deposited %.12g, damped %.12g, heat content %.12g J/m" %

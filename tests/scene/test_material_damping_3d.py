@@ -38,7 +38,7 @@ BOX = ["-specimen_width", "0.01", "-specimen_height", "0.01", "-specimen_depth",
 
 def decay(out):
     """The ring's decay rate fitted after the burst, and the run's summary."""
-    e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
+    e = outputs(out).columns("energy.csv")
     s = outputs(out).summary
     mech = e["kinetic"] + e["strain"] + e["integrator_correction"]
     late = e["t"] > 6e-5
@@ -69,7 +69,7 @@ with tempfile.TemporaryDirectory() as tmp:
         if not run_scene(check, exe, BOX + DAMPING + ["-material_damping_heat", "-heat_bc", "insulated",
                                                       "-final_time", "3e-4"], out, mpiexec, ranks):
             continue
-        e = np.genfromtxt(os.path.join(out, "energy.csv"), delimiter=",", names=True)
+        e = outputs(out).columns("energy.csv")
         s = outputs(out).summary
         heated[ranks] = (s, probe_rise(out))
         deposited = s["heat_deposited_by"].get("damping", 0.0)
