@@ -36,7 +36,7 @@ scene = ["-specimen_width", "0.02", "-specimen_height", "0.02", "-mesh_h", "0.00
 
 
 def probes(out):
-    a = np.genfromtxt(os.path.join(out, "probes.csv"), delimiter=",", names=True)
+    a = outputs(out).columns("probes.csv")
     return [(a["t"][a["probe"] == p], np.c_[a["ux"][a["probe"] == p], a["uy"][a["probe"] == p]]) for p in (0, 1)]
 
 

@@ -47,7 +47,7 @@ def decay(out):
 
 def probe_rise(out):
     """Each probe's temperature rows (t, rise) after the waves."""
-    p = np.genfromtxt(os.path.join(out, "probes.csv"), delimiter=",", names=True, dtype=None, encoding=None)
+    p = outputs(out).columns("probes.csv")
     rows = {}
     for k in (0, 1):
         keep = (p["probe"] == k) & np.isfinite(p["temperature"].astype(float))
