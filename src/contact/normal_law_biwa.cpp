@@ -17,7 +17,7 @@ const ContactParameterList& biwa_law_parameters() {
   static const ContactParameterList list = {
       real_parameter("-contact_biwa_C", &P::biwa_C, "1e11", Range::positive(), "Pa^(1-m)/m",
                      "biwa law: C_B in K = C_B N^m"),
-      real_parameter("-contact_biwa_m", &P::biwa_m, "0.5", Range{0.0, 0.9, true, false}, "",
+      real_parameter("-contact_biwa_m", &P::biwa_m, "0.5", Range::open_closed(0.0, 0.9), "",
                      "biwa law: exponent m in K = C_B N^m"),
   };
   return list;

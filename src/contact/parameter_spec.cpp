@@ -53,6 +53,8 @@ Range Range::positive() { return {0.0, kInf, true, true}; }
 Range Range::at_least(double lo) { return {lo, kInf, false, true}; }
 Range Range::between(double lo, double hi) { return {lo, hi, false, false}; }
 Range Range::open(double lo, double hi) { return {lo, hi, true, true}; }
+Range Range::closed_open(double lo, double hi) { return {lo, hi, false, true}; }
+Range Range::open_closed(double lo, double hi) { return {lo, hi, true, false}; }
 
 bool Range::contains(double v) const {
   if (!std::isfinite(v)) return false;

@@ -23,7 +23,7 @@ const std::vector<OptionSpec<ElasticMaterial>>& MaterialDampingOptionSpecs() {
   using M = ElasticMaterial;
   using contact::Range;
   static const std::vector<OptionSpec<M>> specs = {
-      RealOption("-material_loss_factor", &M::loss_factor, Range{0.0, 1.0, false, true}, "",
+      RealOption("-material_loss_factor", &M::loss_factor, Range::closed_open(0.0, 1.0), "",
                  "Loss factor eta = 1/Q of the solid at -material_damping_frequency (0: no damping); "
                  "mass-proportional: C = eta 2 pi f_d M"),
       GivenRealOption("-material_damping_frequency", &M::damping_frequency, Range::positive(), "Hz",

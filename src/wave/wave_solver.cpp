@@ -18,7 +18,7 @@ const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs() {
   using contact::Range;
   static const std::vector<OptionSpec<O>> specs = {
       IntOption("-wave_degree", &O::degree, Range::between(1, 2), "Lagrange degree of the displacement"),
-      RealOption("-wave_cfl", &O::cfl, Range{0.0, 1.0, true, false}, "",
+      RealOption("-wave_cfl", &O::cfl, Range::open_closed(0.0, 1.0), "",
                  "Time step as a fraction of the explicit stability limit"),
       RealOption("-wave_dt", &O::dt, Range::at_least(0.0), "s", "Time step (0: cfl x stability limit)"),
       ChoiceOption("-wave_contact_step", &O::contact_step, {"current", "worst_case"},
@@ -40,9 +40,9 @@ const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs() {
                    "direct (MUMPS) or krylov (GMRES, multigrid on each part)"),
       NestedOption(&O::lts, IntOption("-wave_lts_max_levels", &L::max_levels, Range::between(1, 12),
                                       "Most levels of local time stepping (rate 2 each)")),
-      NestedOption(&O::lts, RealOption("-wave_lts_cfl", &L::cfl, Range{0.0, 1.0, true, false}, "",
+      NestedOption(&O::lts, RealOption("-wave_lts_cfl", &L::cfl, Range::open_closed(0.0, 1.0), "",
                                        "Each LTS level's step as a fraction of its own stability limit")),
-      NestedOption(&O::lts, RealOption("-wave_lts_wiggle", &L::wiggle, Range{0.5, 1.0, true, false}, "",
+      NestedOption(&O::lts, RealOption("-wave_lts_wiggle", &L::wiggle, Range::open_closed(0.5, 1.0), "",
                                        "LTS cluster boundaries: the finest step times this factor")),
   };
   return specs;

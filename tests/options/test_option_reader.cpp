@@ -153,6 +153,26 @@ TEST(OptionReader, RetiredNamesTellTheirReplacement) {
   EXPECT_EQ(error_of({"-contact_nu", "0.3"}), "-contact_nu was renamed: use -material_nu (the material's Poisson ratio)");
 }
 
+TEST(OptionReader, RangesSayTheirEnds) {
+  // Each named interval holds its closed ends and not its open ones, and says so in its rule.
+  using contact::Range;
+  const struct {
+    Range range;
+    bool lo, hi;
+    const char* rule;
+  } cases[] = {{Range::between(0, 1), true, true, "must be in [0, 1]"},
+               {Range::open(0, 1), false, false, "must be in (0, 1)"},
+               {Range::closed_open(0, 1), true, false, "must be in [0, 1)"},
+               {Range::open_closed(0, 1), false, true, "must be in (0, 1]"}};
+  for (const auto& c : cases) {
+    EXPECT_EQ(c.range.contains(0.0), c.lo) << c.rule;
+    EXPECT_EQ(c.range.contains(1.0), c.hi) << c.rule;
+    EXPECT_TRUE(c.range.contains(0.5)) << c.rule;
+    EXPECT_FALSE(c.range.contains(NAN)) << c.rule;
+    EXPECT_EQ(c.range.rule(), c.rule);
+  }
+}
+
 TEST(OptionReader, EditDistance) {
   EXPECT_EQ(edit_distance("", ""), 0u);
   EXPECT_EQ(edit_distance("kitten", "sitting"), 3u);

@@ -26,6 +26,8 @@ struct Range {
   static Range at_least(double lo);           ///< [lo, inf)
   static Range between(double lo, double hi);  ///< [lo, hi]
   static Range open(double lo, double hi);     ///< (lo, hi)
+  static Range closed_open(double lo, double hi);  ///< [lo, hi)
+  static Range open_closed(double lo, double hi);  ///< (lo, hi]
   bool contains(double v) const;
   /// "must be > 0", "must be in (0, 1)", ... (empty for any()).
   std::string rule() const;

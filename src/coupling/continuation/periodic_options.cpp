@@ -30,7 +30,7 @@ const std::vector<OptionSpec<PeriodicOptions>>& PeriodicOptionSpecs() {
                 "near field)"),
       IntOption("-periodic_min_continued", &O::min_continued, Range::at_least(1),
                 "A continuation shorter than this many periods is simulated instead"),
-      RealOption("-periodic_drift_tol", &O::drift_tol, Range{0.0, 1.0, false, true}, "",
+      RealOption("-periodic_drift_tol", &O::drift_tol, Range::closed_open(0.0, 1.0), "",
                  "Largest projected error of a continuation from the measured drift of the friction per period (half "
                  "the drift over the periods continued); above it the waves run on (0: report the drift only)"),
       ChoiceOption("-periodic_mode", &O::mean, {"state", "mean"},

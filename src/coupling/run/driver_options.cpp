@@ -36,7 +36,7 @@ const std::vector<OptionSpec<DriverOptions>>& DriverOptionSpecs() {
       RealOption("-checkpoint_every_s", &D::checkpoint_every_s, non_negative, "s",
                  "Wall seconds between checkpoints (DIR/checkpoint.h5, for -restart DIR) while the waves run; "
                  "0: only when SIGTERM, SIGINT or SIGUSR1 stops the run"),
-      RealOption("-wave_quiet_fraction", &D::quiet_fraction, contact::Range{0.0, 1.0, false, true}, "",
+      RealOption("-wave_quiet_fraction", &D::quiet_fraction, Range::closed_open(0.0, 1.0), "",
                  "Waves stop after the source once, for a whole period, the mechanical energy left "
                  "(a bound on the heat still to come) is below this fraction of the energy dissipated "
                  "(of its peak when nothing dissipates); 0: never"),
