@@ -102,30 +102,6 @@ OptionSpec<SpecimenGeometryInput> CrackShapeOption() {
           }};
 }
 
-/// The first of the 3D-only options given (nullptr: none).
-PetscErrorCode FirstThreeDimensionalOption(const char** name) {
-  PetscFunctionBeginUser;
-  *name = nullptr;
-  for (const char* option : {"-crack_width", "-edge_front", "-edge_back", "-crack_shape", "-crack_tilt"}) {
-    bool given;
-    PetscCall(OptionGiven(nullptr, option, &given));
-    if (given && !*name) *name = option;
-  }
-  PetscFunctionReturn(0);
-}
-
-/// A patch's centre or width given without its edge.
-PetscErrorCode CheckPatchGivenWithEdge(MPI_Comm comm, const SourcePatch& patch) {
-  PetscFunctionBeginUser;
-  for (const char* option : {"-source_patch_center", "-source_patch_width"}) {
-    bool given;
-    PetscCall(OptionGiven(nullptr, option, &given));
-    PetscCheck(patch.on || !given, comm, PETSC_ERR_USER_INPUT,
-               "%s given without -source_patch_edge (the edge the transducer sits on)", option);
-  }
-  PetscFunctionReturn(0);
-}
-
 /// A per-crack option's values: none (not given), one for all the cracks, or one a crack.
 template <class T>
 PetscErrorCode CheckPerCrack(MPI_Comm comm, const char* option, const std::vector<T>& values, PetscInt ncracks) {
@@ -171,8 +147,12 @@ PetscErrorCode ReadSpecimenGeometry(MPI_Comm comm, SpecimenGeometry* g, bool che
   g->quads = in.cell == MeshCell::Quad;
   if (!check) PetscFunctionReturn(0);  // declared only: a -mesh_file sets the geometry
   const char* three_d_given;
-  PetscCall(FirstThreeDimensionalOption(&three_d_given));
-  PetscCall(CheckPatchGivenWithEdge(comm, g->patch));
+  PetscCall(FirstOptionGiven({"-crack_width", "-edge_front", "-edge_back", "-crack_shape", "-crack_tilt"},
+                             &three_d_given));
+  const char* patch_given;
+  PetscCall(FirstOptionGiven({"-source_patch_center", "-source_patch_width"}, &patch_given));
+  PetscCheck(g->patch.on || !patch_given, comm, PETSC_ERR_USER_INPUT,
+             "%s given without -source_patch_edge (the edge the transducer sits on)", patch_given);
   const std::vector<double>& centers = in.centers;
   const std::vector<double>& lengths = in.lengths;
   const std::vector<double>& angles = in.angles;

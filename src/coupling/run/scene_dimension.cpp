@@ -3,26 +3,10 @@
 #include "vibrotherm/mesh/mesh_file_3d.hpp"
 #include "vibrotherm/options/query/option_query.hpp"
 
-#include <initializer_list>
 #include <string>
 #include <utility>
 
 namespace vibrotherm::coupling {
-namespace {
-
-/// The first of these options given on the command line or in a file (nullptr: none).
-PetscErrorCode FirstGiven(std::initializer_list<const char*> names, const char** given) {
-  PetscFunctionBeginUser;
-  *given = nullptr;
-  for (const char* name : names) {
-    bool set;
-    PetscCall(OptionGiven(nullptr, name, &set));
-    if (set && !*given) *given = name;
-  }
-  PetscFunctionReturn(0);
-}
-
-}  // namespace
 
 PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension) {
   PetscFunctionBeginUser;
@@ -42,12 +26,12 @@ PetscErrorCode RestrictToDimension(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
   const char* given = nullptr;
   if (s->run.dimension != 3) {
-    PetscCall(FirstGiven({"-heat_bc_front", "-heat_bc_back", "-camera_face"}, &given));
+    PetscCall(FirstOptionGiven({"-heat_bc_front", "-heat_bc_back", "-camera_face"}, &given));
     PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s applies to a 3D specimen only (-specimen_depth > 0, or a 3D "
                "-mesh_file)", given);
     PetscFunctionReturn(0);
   }
-  PetscCall(FirstGiven({"-crack_probe", "-crack_probe_crack"}, &given));
+  PetscCall(FirstOptionGiven({"-crack_probe", "-crack_probe_crack"}, &given));
   PetscCheck(!given, comm, PETSC_ERR_USER_INPUT, "%s is not supported in 3D yet", given);
   std::string type = "velocityverlet", cell = "quad";
   PetscInt refine = 0;

@@ -10,6 +10,17 @@ PetscErrorCode OptionGiven(const char* prefix, const char* name, bool* given) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FirstOptionGiven(std::initializer_list<const char*> names, const char** given) {
+  PetscFunctionBeginUser;
+  *given = nullptr;
+  for (const char* name : names) {
+    bool set;
+    PetscCall(OptionGiven(nullptr, name, &set));
+    if (set && !*given) *given = name;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode OptionText(const char* prefix, const char* name, std::string* value, bool* given) {
   PetscFunctionBeginUser;
   char text[PETSC_MAX_PATH_LEN] = "";

@@ -8,12 +8,15 @@
 
 #include <petscsys.h>
 
+#include <initializer_list>
 #include <string>
 
 namespace vibrotherm {
 
 /// Whether `name` (with its dash) is given under `prefix` (null: none), on the command line or in a file.
 PetscErrorCode OptionGiven(const char* prefix, const char* name, bool* given);
+/// The first of `names` given (nullptr: none of them).
+PetscErrorCode FirstOptionGiven(std::initializer_list<const char*> names, const char** given);
 /// The value of `name` as text; *value is left alone when the option is not given.
 PetscErrorCode OptionText(const char* prefix, const char* name, std::string* value, bool* given = nullptr);
 /// The value of `name` as a number, an integer or a flag (PETSc's parsing; a bad value is PETSc's error);
