@@ -5,11 +5,12 @@
 2. candidates the modes of the band ranked by participation, and off-resonance frequencies
              in the widest gaps between them, spread over the band;
 3. common power the common input power: the scene's own drive's (its frequency and amplitude);
-             each candidate probed at 1 % of the scene's amplitude (the contact stuck: linear,
-             input power ∝ A²), then run over the test time T (harmonic start, continuation)
-             at the amplitude that puts the common power in, rescaled by the exponent
-             measured between its last two runs until within 10 % (a clapping defect takes
-             more power than its stuck linearisation: up to 4 more runs);
+             each candidate run over the test time T (harmonic start, continuation) first at
+             the scene's amplitude, then at the amplitude that puts the common power in, by the
+             power law measured between its last two runs (exponent 2 at first) or between
+             the runs below and above it, until within 10 % (up to 6 more runs); a run at a
+             frequency already run starts warm in the saved steady state of the nearest drive
+             (-wave_start state); the candidates searched side by side, `jobs` runs at once;
 4. verdict   per candidate: input and friction power (means over the test: the energy ledger at
              T over T; the summary's last-periods figures kept as steady_*), efficiency, the defect's own peak rise
              on the camera's face within T, its SNR, contrast against the background heat,
@@ -40,8 +41,9 @@ def margin(point, criteria):
     return min(snr, contrast / criteria[1])
 
 
+WAVE_STATE = "wave_state.h5"  # a run's steady wave state (-periodic_save_state), a warm start for the next
 POWER_TOLERANCE = 0.1  # a candidate's measured input power within 10 % of the common one
-RESCALE_ROUNDS = 6  # runs toward it after the linear probe
+RESCALE_ROUNDS = 6  # runs toward it after the first
 
 
 def power_jump(runs, target):
@@ -127,11 +129,31 @@ class LdrStudy:
 
     # --- runs ---------------------------------------------------------------------------
     def overrides(self, frequency, amplitude):
-        """A candidate's run: the test time T of excitation, the camera's verdict at its end."""
+        """A candidate's run: the test time T of excitation, the camera's verdict at its end. Each run saves
+        its steady wave state; a run at a frequency already run starts warm in the nearest drive's state."""
         T = self.duration
-        return {"source_frequency": frequency, "source_amplitude": amplitude, "source_duration": T,
-                "final_time": T, "output_times": repr(T), "probe_every": 1000, "crack_state_every": 0,
-                **self.camera}
+        run = {"source_frequency": frequency, "source_amplitude": amplitude, "source_duration": T,
+               "final_time": T, "output_times": repr(T), "probe_every": 1000, "crack_state_every": 0,
+               "periodic_save_state": self.state_file(self.name(frequency, amplitude)), **self.camera}
+        warm = self.warm_state(frequency, amplitude)
+        if warm:
+            run.update({"wave_start": "state", "wave_start_state": warm})
+        return run
+
+    def state_file(self, run_name):
+        return os.path.join(self.runner.output_dir, run_name, WAVE_STATE)
+
+    def warm_state(self, frequency, amplitude):
+        """The saved steady state of the run at this frequency whose drive is nearest (in ratio) to amplitude,
+        or None. Scaled to the new drive, it leaves only the mismatch between neighbouring drives to settle,
+        where the harmonic start leaves a clapping crack the whole way from its stuck linearisation (a
+        Q = 1000 plate settles over Q/(pi f), 50 ms at 6 kHz: most of a slow run's cost)."""
+        saved = [p for p in self.points.get(frequency, [])
+                 if os.path.exists(os.path.join(self.runner.output_dir, p["run"], WAVE_STATE))]
+        if not saved:
+            return None
+        nearest = min(saved, key=lambda p: (abs(math.log(p["amplitude"] / amplitude)), p["amplitude"]))
+        return os.path.join(self.runner.output_dir, nearest["run"], WAVE_STATE)
 
     @staticmethod
     def name(frequency, amplitude):
@@ -165,27 +187,17 @@ class LdrStudy:
 
     # --- the study ------------------------------------------------------------------------
     def common_power(self, picks):
-        """Every candidate at the common input power: probed in the linear regime (1 % of the scene's
-        amplitude: the contact stuck, the harmonic start exact, input power ∝ A²), then run at the
-        amplitude that puts that power in, which the run measures."""
+        """Every candidate at the common input power, each searched on its own (the searches side by side,
+        `jobs` runs at once, so that a slow run holds up only its own candidate)."""
         if self.power is None:  # the scene's own drive at its own frequency
             own = float(self.options.get("source_frequency", picks[0]["frequency"]))
             (reference,) = self.run_all([(own, self.amplitude)])
             self.power = reference["input_power"]
         if not self.power or self.power <= 0:
             raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
-        probe = 0.01 * self.amplitude
-        last = self.run_all([(c["frequency"], probe) for c in picks])
-        seen = [[p] for p in last]  # every run of each candidate
-        for _ in range(RESCALE_ROUNDS):
-            off = [i for i, p in enumerate(last) if abs(p["input_power"] / self.power - 1.0) > POWER_TOLERANCE]
-            if not off:
-                break
-            for i, p in zip(off, self.run_all([(picks[i]["frequency"], self.next_amplitude(seen[i])) for i in off])):
-                seen[i].append(p)
-                last[i] = min(seen[i], key=lambda q: abs(math.log(q["input_power"] / self.power))
-                              if q["input_power"] > 0 else math.inf)
-        for c, p, runs in zip(picks, last, seen):
+        with ThreadPoolExecutor(max_workers=max(1, len(picks))) as pool:
+            searches = list(pool.map(lambda c: self.search_power(c["frequency"]), picks))
+        for c, (p, runs) in zip(picks, searches):
             c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "steady_input_power",
                                         "steady_efficiency", "peak_rise",
                                         "snr", "contrast", "detectable", "detection_time", "run",
@@ -196,6 +208,22 @@ class LdrStudy:
                 self.log("  %.0f Hz: not at the common power after %d runs (closest %.3g at %.3g m): %s" % (
                     c["frequency"], len(runs), p["input_power"], p["amplitude"], power_jump(runs, self.power)))
         return picks
+
+    def search_power(self, frequency):
+        """Runs at one frequency until one puts the common power in (within 10 %): the first at the
+        scene's own drive amplitude (a lift-off clapping layer takes far more power than its stuck
+        linearisation, so a linear probe's A^2 rule would land near the clapping onset, where runs
+        take longest to settle), then each at next_amplitude. The run nearest the power, and all runs."""
+        runs = self.run_all([(frequency, self.amplitude)])
+
+        def nearest():
+            return min(runs, key=lambda q: abs(math.log(q["input_power"] / self.power))
+                       if q["input_power"] > 0 else math.inf)
+        for _ in range(RESCALE_ROUNDS):
+            if abs(nearest()["input_power"] / self.power - 1.0) <= POWER_TOLERANCE:
+                break
+            runs += self.run_all([(frequency, self.next_amplitude(runs))])
+        return nearest(), runs
 
     def next_amplitude(self, runs):
         """The next drive toward the common power: between the closest runs below and above it, the
@@ -280,7 +308,7 @@ class LdrStudy:
         best = sorted(picks, key=lambda c: (not c.get("at_common_power", True), -(c["snr"] or 0.0)))[:self.n_thresholds]
         criteria = self.criteria(picks)
         self.log("thresholds at " + ", ".join("%.0f Hz" % c["frequency"] for c in best))
-        with ThreadPoolExecutor(max_workers=self.runner.jobs) as pool:
+        with ThreadPoolExecutor(max_workers=max(1, len(best))) as pool:  # side by side, `jobs` runs at once
             thresholds = list(pool.map(lambda c: self.threshold(c["frequency"], criteria), best))
         return self.record(modes, picks, ldr, thresholds, criteria, time.time() - began)
 

@@ -267,8 +267,9 @@ herr_t ReadGroup(hid_t file, const char* name, const H5L_info_t*, void* data) {
 
 }  // namespace
 
-PetscErrorCode Checkpoint::Read(const std::string& path) {
+PetscErrorCode Checkpoint::Read(const std::string& path, const std::string& option) {
   PetscFunctionBeginUser;
+  option_ = option;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   path_ = path;
@@ -287,10 +288,11 @@ PetscErrorCode Checkpoint::Read(const std::string& path) {
     H5E_END_TRY;
   }
   PetscCallMPI(MPI_Bcast(status, 3, MPI_LONG_LONG, 0, comm_));
-  PetscCheck(status[0], comm_, PETSC_ERR_FILE_OPEN, "-restart: cannot read the checkpoint %s (missing, or not written by vibrotherm)",
-             path.c_str());
+  PetscCheck(status[0], comm_, PETSC_ERR_FILE_OPEN, "%s: cannot read the checkpoint %s (missing, or not written by vibrotherm)",
+             option_.c_str(), path.c_str());
   PetscCheck(status[1] == kFormat, comm_, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart: %s has checkpoint format %lld, this vibrotherm reads %d", path.c_str(), status[1], kFormat);
+             "%s: %s has checkpoint format %lld, this vibrotherm reads %d", option_.c_str(), path.c_str(), status[1],
+             kFormat);
   writer_ranks_ = static_cast<int>(status[2]);
   long long size = static_cast<long long>(bytes.buffer.size());
   PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm_));
@@ -322,8 +324,8 @@ PetscErrorCode Checkpoint::Find(const std::string& name, int kind, const Table**
   PetscFunctionBeginUser;
   const auto it = tables_.find(name);
   PetscCheck(it != tables_.end() && it->second.kind == kind, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart: the checkpoint %s has no '%s' (written by another scene or version?)", path_.c_str(),
-             name.c_str());
+             "%s: the checkpoint %s has no '%s' (written by another scene or version?)", option_.c_str(),
+             path_.c_str(), name.c_str());
   *table = &it->second;
   PetscFunctionReturn(0);
 }
@@ -333,8 +335,8 @@ PetscErrorCode Checkpoint::GetShared(const std::string& name, std::vector<double
   const Table* t;
   PetscCall(Find(name, kShared, &t));
   PetscCheck(expected == 0 || t->values.size() == expected, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-restart: '%s' in %s has %zu values, expected %zu", name.c_str(), path_.c_str(), t->values.size(),
-             expected);
+             "%s: '%s' in %s has %zu values, expected %zu", option_.c_str(), name.c_str(), path_.c_str(),
+             t->values.size(), expected);
   *values = t->values;
   PetscFunctionReturn(0);
 }
@@ -378,8 +380,8 @@ PetscErrorCode Checkpoint::GetKeyed(const std::string& name, const std::vector<l
   for (long long key : keys) {
     const auto it = t->item.find(key);
     PetscCheck(it != t->item.end(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-               "-restart: '%s' in %s has no item %lld (the checkpoint belongs to another mesh)", name.c_str(),
-               path_.c_str(), key);
+               "%s: '%s' in %s has no item %lld (the checkpoint belongs to another mesh)", option_.c_str(),
+               name.c_str(), path_.c_str(), key);
     const std::size_t at = t->offset.at(key);
     const long long n = t->counts[it->second];
     counts->push_back(n);
@@ -394,8 +396,8 @@ PetscErrorCode Checkpoint::GetKeyed(const std::string& name, const std::vector<l
   std::vector<long long> counts;
   PetscCall(GetKeyed(name, keys, &counts, values));
   for (long long n : counts)
-    PetscCheck(n == width, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-restart: '%s' in %s has items of %lld values, expected %d",
-               name.c_str(), path_.c_str(), n, width);
+    PetscCheck(n == width, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: '%s' in %s has items of %lld values, expected %d",
+               option_.c_str(), name.c_str(), path_.c_str(), n, width);
   PetscFunctionReturn(0);
 }
 

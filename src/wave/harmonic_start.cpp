@@ -314,38 +314,45 @@ PetscErrorCode WaveSolver::StartHarmonic() {
   PetscCall(GetFields(&u, &v));
   PetscCall(start.Solve(u, v));
   PetscCall(RestoreFields(&u, &v));
-  PetscCall(BookInitialEnergy());
+  double springs;
+  PetscCall(StuckSpringEnergy(&springs));
+  PetscCall(BookInitialEnergy(springs));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::BookInitialEnergy() {
+PetscErrorCode WaveSolver::StuckSpringEnergy(double* springs) {
+  PetscFunctionBeginUser;
+  *springs = 0.0;  // ½ [u]ᵀ K_c [u] of the stuck springs, K_c by entries of this rank's cells
+  if (!interface_) PetscFunctionReturn(0);
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  std::vector<PetscInt> rows, cols;
+  std::vector<double> values;
+  PetscCall(interface_->TangentStiffness(&rows, &cols, &values));
+  Vec u, v, all;
+  VecScatter to_all;
+  PetscCall(GetFields(&u, &v));
+  PetscCall(VecScatterCreateToAll(u, &to_all, &all));
+  PetscCall(VecScatterBegin(to_all, u, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(to_all, u, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(RestoreFields(&u, &v));
+  const PetscScalar* x;
+  PetscCall(VecGetArrayRead(all, &x));
+  for (std::size_t k = 0; k < rows.size(); ++k) *springs += 0.5 * values[k] * x[rows[k]] * x[cols[k]];
+  PetscCall(VecRestoreArrayRead(all, &x));
+  PetscCall(VecScatterDestroy(&to_all));
+  PetscCall(VecDestroy(&all));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, springs, 1, MPI_DOUBLE, MPI_SUM, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::BookInitialEnergy(double interface_energy) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   WaveEnergy e;
   PetscCall(Energy(&e));
-  double springs = 0.0;  // ½ [u]ᵀ K_c [u] of the stuck springs, K_c by entries of this rank's cells
-  if (interface_) {
-    std::vector<PetscInt> rows, cols;
-    std::vector<double> values;
-    PetscCall(interface_->TangentStiffness(&rows, &cols, &values));
-    Vec u, v, all;
-    VecScatter to_all;
-    PetscCall(GetFields(&u, &v));
-    PetscCall(VecScatterCreateToAll(u, &to_all, &all));
-    PetscCall(VecScatterBegin(to_all, u, all, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(to_all, u, all, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(RestoreFields(&u, &v));
-    const PetscScalar* x;
-    PetscCall(VecGetArrayRead(all, &x));
-    for (std::size_t k = 0; k < rows.size(); ++k) springs += 0.5 * values[k] * x[rows[k]] * x[cols[k]];
-    PetscCall(VecRestoreArrayRead(all, &x));
-    PetscCall(VecScatterDestroy(&to_all));
-    PetscCall(VecDestroy(&all));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &springs, 1, MPI_DOUBLE, MPI_SUM, comm));
-  }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) accounted_.work_source += e.kinetic + e.strain + e.integrator + springs;
+  if (rank == 0) accounted_.work_source += e.kinetic + e.strain + e.integrator + interface_energy;
   // What the terms remember of the last step's end state is this state.
   Vec u, v;
   PetscCall(GetFields(&u, &v));

@@ -30,9 +30,12 @@ const std::vector<OptionSpec<WaveOptions>>& WaveOptionSpecs() {
       NestedOption(&O::lts, ChoiceOption("-wave_lts", &L::on, {"off", "on"},
                                          "Clustered local time stepping: cells step at rates 2^-l of the macro step by "
                                          "their own stability limit (on) or all at the smallest cell's step (off)")),
-      ChoiceOption("-wave_start", &O::harmonic_start, {"rest", "harmonic"},
-                   "Initial state: rest (the source switches on), or harmonic (the steady response of the linearized "
-                   "waves to the running source: a resonant specimen's build-up skipped)"),
+      ChoiceOption("-wave_start", &O::start, {"rest", "harmonic", "state"},
+                   "Initial state: rest (the source switches on), harmonic (the steady response of the linearized "
+                   "waves to the running source: a resonant specimen's build-up skipped), or state (-wave_start_state: "
+                   "a steady state saved by a run at the same frequency, scaled to this run's amplitude)"),
+      TextOption("-wave_start_state", &O::start_state,
+                 "File of the state -wave_start state begins in (written by -periodic_save_state)"),
       RealOption("-wave_harmonic_memory_limit", &O::harmonic_memory_limit_gb, Range::at_least(0.0), "GB",
                  "Memory the harmonic start's MUMPS factorisation may take (0: 0.9 x available)"),
       ChoiceOption("-wave_harmonic_solver", &O::harmonic_solver, {"auto", "direct", "krylov"},

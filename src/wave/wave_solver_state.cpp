@@ -1,6 +1,7 @@
 // The wave solver in checkpoints: u and v per owned dof (keyed by the dof's
 // origin, so any partition can read them), time, step counts, the step
-// control, the integrator-term offset and each rank's boundary accounts.
+// control, the integrator-term offset and each rank's boundary accounts; and the
+// warm start from a saved state (u and v only, scaled).
 #include "vibrotherm/wave/wave_solver.hpp"
 
 namespace vibrotherm::wave {
@@ -91,6 +92,33 @@ PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const me
   PetscCall(VecRestoreArrayRead(uv, &state.u));
   PetscCall(VecRestoreArrayRead(vv, &state.v));
   PetscCall(RestoreFields(&uv, &vv));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::StartFromState(const store::Checkpoint& state, const mesh::PointOrigin& origin,
+                                          double scale) {
+  PetscFunctionBeginUser;
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  std::vector<double> u, v;
+  PetscCall(state.GetKeyed("wave/u", keys, 1, &u));
+  PetscCall(state.GetKeyed("wave/v", keys, 1, &v));
+  PetscScalar* x;
+  PetscCall(VecGetArray(X_, &x));
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    x[i] = scale * u[i];
+    x[keys.size() + i] = scale * v[i];
+  }
+  PetscCall(VecRestoreArray(X_, &x));
+  double stored = 0.0, dissipated;
+  if (interface_) {
+    Vec uv, vv;
+    PetscCall(GetFields(&uv, &vv));
+    PetscCall(interface_->StartIn(uv));
+    PetscCall(RestoreFields(&uv, &vv));
+    PetscCall(interface_->Energies(&stored, &dissipated));
+  }
+  PetscCall(BookInitialEnergy(stored));  // the terms resume from this state there too
   PetscFunctionReturn(0);
 }
 

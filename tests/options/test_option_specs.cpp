@@ -137,7 +137,7 @@ TEST(OptionSpecs, EachOptionFillsItsField) {
                      &wave, &message), 0) << message;
   EXPECT_TRUE(wave.lts.on);
   EXPECT_EQ(wave.lts.cfl, 0.5);
-  EXPECT_TRUE(wave.harmonic_start);
+  EXPECT_EQ(wave.start, wave::WaveStart::kHarmonic);
   EXPECT_EQ(wave.degree, 1);
   coupling::DriverOptions driver;  // lists, and a value given where the default is derived
   ASSERT_EQ(ReadWith(coupling::DriverOptionSpecs(), "-output_times 2e-3,1e-3 -crack_probe 0.25,1 -final_time 0.5 "

@@ -100,8 +100,8 @@ ALLOWED = {
     "-checkpoint_every_s": {"0"},
     # 0: the waves run again only where the source changes; the drift is reported only.
     "-periodic_refresh": {"0"}, "-periodic_drift_tol": {"0"},
-    # A directory name is any name.
-    "-output_dir": ANY_NAME,
+    # A directory name is any name; so is the name of a state file to write.
+    "-output_dir": ANY_NAME, "-periodic_save_state": ANY_NAME,
 }
 CONTACT_ALLOWED = {
     "-contact_a0": {"-1", "0"}, "-contact_mu": {"0"}, "-material_nu": {"0"},

@@ -58,6 +58,7 @@ class CrackInterface final : public wave::WaveInterface {
 
   PetscErrorCode AddAcceleration(Vec u, Vec a) override;
   PetscErrorCode Commit(Vec u, double dt) override;
+  PetscErrorCode StartIn(Vec u) override;
   PetscErrorCode MarkDofs(Vec marker) override;
   PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) override;
   PetscErrorCode Energies(double* stored, double* dissipated) override;

@@ -44,8 +44,9 @@ class Checkpoint {
 
   /// Gathers on rank 0 and writes path atomically. Collective.
   PetscErrorCode Write(const std::string& path) const;
-  /// Reads path (rank 0) and shares it with every rank; errors name the file. Collective.
-  PetscErrorCode Read(const std::string& path);
+  /// Reads path (rank 0) and shares it with every rank; errors name the file and the option
+  /// that named it. Collective.
+  PetscErrorCode Read(const std::string& path, const std::string& option = "-restart");
 
   /// The shared item; errors when missing or (expected > 0) of another length.
   PetscErrorCode GetShared(const std::string& name, std::vector<double>* values, std::size_t expected = 0) const;
@@ -80,6 +81,7 @@ class Checkpoint {
   std::map<std::string, Table> tables_;
   int writer_ranks_ = 0;
   std::string path_;  ///< the file read (for messages)
+  std::string option_ = "-restart";  ///< the option that named it (for messages)
 };
 
 /// A vector's owned entries as keyed items (one value each, keys in the vector's local order), and back.

@@ -46,6 +46,12 @@ namespace vibrotherm::wave {
 /// limit, else GMRES (auto); always MUMPS (direct); always GMRES with multigrid (krylov).
 enum class HarmonicSolver { kAuto, kDirect, kKrylov };
 
+/// How the waves begin: at rest (the source switches on), in the steady response of the
+/// linearized waves (harmonic_start.cpp), or in a state an earlier run saved at a period
+/// boundary of its steady state (-periodic_save_state), scaled to this run's source amplitude:
+/// a warm start, for runs of one scene at one frequency and neighbouring amplitudes.
+enum class WaveStart { kRest, kHarmonic, kState };
+
 struct WaveOptions {
   PetscInt degree = 2;   ///< -wave_degree 1|2 (Q2/P2 by default: Q1 is 32 % off in dissipated energy on the paper mesh)
   double cfl = 0.9;      ///< -wave_cfl: fraction of the stability limit
@@ -53,9 +59,9 @@ struct WaveOptions {
   ContactStepRule contact_step = ContactStepRule::kCurrent;  ///< -wave_contact_step current|worst_case
   StiffnessKernel kernel = StiffnessKernel::kBlocked;        ///< -wave_kernel petsc|blocked
   LtsOptions lts;  ///< -wave_lts on|off, -wave_lts_max_levels, -wave_lts_cfl, -wave_lts_wiggle
-  /// -wave_start harmonic: start from the steady response of the linearized waves to the running
-  /// source (harmonic_start.cpp) instead of rest; the source's switch-on is then skipped.
-  bool harmonic_start = false;
+  /// -wave_start rest|harmonic|state: the waves' initial state; unless rest, the source's switch-on is skipped.
+  WaveStart start = WaveStart::kRest;
+  std::string start_state;  ///< -wave_start_state FILE: the saved state -wave_start state begins in
   /// -wave_harmonic_memory_limit [GB]: what the harmonic start's MUMPS factorisation may take
   /// (0: 0.9 x the memory available; -force: factor even above it).
   double harmonic_memory_limit_gb = 0.0;
@@ -79,6 +85,9 @@ class WaveInterface {
   virtual PetscErrorCode AddAcceleration(Vec u, Vec a) = 0;
   /// Advances the history to u after an accepted step of size dt.
   virtual PetscErrorCode Commit(Vec u, double dt) = 0;
+  /// Takes u as its committed state without counting the way there as dissipated (the warm
+  /// start: that history built the saved state, it is no heat of this run).
+  virtual PetscErrorCode StartIn(Vec u) = 0;
   /// Largest ω² the interface adds to M⁻¹K at its current state, or with every
   /// cell pressed `extra_approach` beyond its initial approach (for the initial step).
   virtual PetscErrorCode MaxFrequencySquared(double* omega2, double extra_approach = -1.0) = 0;
@@ -144,6 +153,9 @@ class WaveSolver {
   /// -wave_start harmonic: u, v at t = 0 the steady response to the source at its frequency, with the
   /// interface linearized at its initial state (harmonic_start.cpp). After SetInterface. Collective.
   PetscErrorCode StartHarmonic();
+  /// The warm start: u and v of a saved state (Save's keyed "wave/u", "wave/v") times `scale`,
+  /// booked as the source's work as the harmonic start's state is. After SetInterface. Collective.
+  PetscErrorCode StartFromState(const store::Checkpoint& state, const mesh::PointOrigin& origin, double scale);
   /// Local time stepping: its levels when it runs (null when not), and why not when asked for but off.
   const LtsStepper* lts() const { return lts_active_ ? &lts_ : nullptr; }
   const std::string& lts_note() const { return lts_note_; }
@@ -192,7 +204,11 @@ class WaveSolver {
   PetscErrorCode ApplyTerms(double t, Vec v, Vec a, double kick_dt);
   // The harmonic start (harmonic_start.cpp: HarmonicStart solves it).
   /// The state's energy (the stuck springs' with it) as the source's work at t = 0.
-  PetscErrorCode BookInitialEnergy();
+  /// Books the initial state's energy as the source's work: the field's, and the interface's
+  /// (`interface_energy`: its stuck springs for the harmonic start, its stored energy for a warm one).
+  PetscErrorCode BookInitialEnergy(double interface_energy);
+  /// ½ [u]ᵀ K_c [u] of the interface's springs stuck at its committed state.
+  PetscErrorCode StuckSpringEnergy(double* springs);
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
   PetscErrorCode SetupAlpha2(MPI_Comm comm);
   static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);

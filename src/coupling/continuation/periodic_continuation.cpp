@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vibrotherm/coupling/continuation/saved_wave_state.hpp"
+
 namespace vibrotherm::coupling {
 
 PeriodicContinuation::~PeriodicContinuation() {
@@ -235,6 +237,8 @@ PetscErrorCode PeriodicContinuation::ContinueFrom(double t2, PetscInt n, bool* r
                         t2, detector_.last_change(), multiple_, P, ladder_.end, n));
   kept_ = std::make_unique<store::Checkpoint>(comm);
   PetscCall(waves_->Snapshot(*specimen_, kept_.get()));
+  if (!scene_.periodic.save_state.empty())
+    PetscCall(SaveWaveState(scene_.periodic.save_state, *waves_, *specimen_, *scene_.excitation, t2));
   observers_->progress().Start(comm, "periodic", t2, ladder_.end, 0.0, true);  // heat steps from here, not wave steps
   if (heat_) {
     const PetscInt fine = std::min<PetscInt>(scene_.periodic.fine_periods, n);
@@ -377,6 +381,10 @@ PetscErrorCode PeriodicContinuation::Observe(double t, bool interval) {
 PetscErrorCode PeriodicContinuation::Finish(io::RunSummary* summary) {
   PetscFunctionBeginUser;
   if (on_) PetscCall(detector_.Finish());
+  if (specimen_ && !scene_.periodic.save_state.empty() && segments_.empty())
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)specimen_->wave),
+                          "vibrotherm: note: -periodic_save_state %s: nothing saved, the waves were never suspended (%s)\n",
+                          scene_.periodic.save_state.c_str(), on_ ? "never periodic" : note_.c_str()));
   summary->derived["periodic_segments"] = static_cast<double>(segments_.size());
   PetscInt continued = 0;
   for (const Segment& s : segments_) continued += s.periods * s.multiple;

@@ -36,6 +36,9 @@ const std::vector<OptionSpec<PeriodicOptions>>& PeriodicOptionSpecs() {
       ChoiceOption("-periodic_mode", &O::mean, {"state", "mean"},
                    "What repeats: state (waves and contact period by period) or mean (a statistically steady state: "
                    "the windows' friction, damping and work)"),
+      TextOption("-periodic_save_state", &O::save_state,
+                 "Save the wave state where the waves are suspended (a period boundary of the steady state) to this "
+                 "file: another run at the same frequency can begin in it (-wave_start state)"),
   };
   return specs;
 }

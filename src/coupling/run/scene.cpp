@@ -20,10 +20,27 @@ double Scene::waves_expected_end() const {
 }
 
 ContinuationScene Scene::continuation() const {
-  return {periodic, &excitation.signal, final_time, couple_dt, run.heat_substeps, waves_expected_end()};
+  return {periodic, &excitation.signal, final_time, couple_dt, run.heat_substeps, waves_expected_end(), &excitation};
 }
 
 namespace {
+
+/// A start that needs a steady response (harmonic, state) has none with a sweep; a state start needs its file.
+PetscErrorCode CheckWaveStart(MPI_Comm comm, const wave::WaveOptions& o, const wave::SourceTimeFunction& signal) {
+  PetscFunctionBeginUser;
+  const bool state = o.start == wave::WaveStart::kState;
+  PetscCheck(o.start == wave::WaveStart::kRest || !signal.sweeping(), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start %s with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)",
+             state ? "state" : "harmonic");
+  PetscCheck(!state || !o.start_state.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start state: needs -wave_start_state FILE (a state saved by -periodic_save_state)");
+  PetscCheck(state || o.start_state.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-wave_start_state %s: only read with -wave_start state", o.start_state.c_str());
+  PetscBool readable = PETSC_TRUE;
+  if (state) PetscCall(PetscTestFile(o.start_state.c_str(), 'r', &readable));
+  PetscCheck(readable, comm, PETSC_ERR_FILE_OPEN, "-wave_start_state %s: file not found", o.start_state.c_str());
+  PetscFunctionReturn(0);
+}
 
 /// Values every reader accepted but no run can use: infinities, and wave TS types
 /// that cannot run here.
@@ -144,9 +161,9 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   const double damping_frequency = signal.sweeping() ? 0.5 * (signal.sweep_from + signal.sweep_to) : signal.frequency;
   PetscCall(wave::ReadMaterialDamping(comm, damping_frequency, &s->material, &s->values));
   PetscCall(wave::ReadWaveOptions(comm, &s->wave, &s->values));
-  PetscCheck(!(s->wave.harmonic_start && signal.sweeping()), comm, PETSC_ERR_USER_INPUT,
-             "-wave_start harmonic with -source_sweep: a sweep has no steady response to start in (use -wave_start rest)");
-  s->excitation.signal.running_at_start = s->wave.harmonic_start;  // no switch-on: the waves start in steady state
+  PetscCall(CheckWaveStart(comm, s->wave, signal));
+  // No switch-on: the waves start in a steady state.
+  s->excitation.signal.running_at_start = s->wave.start != wave::WaveStart::kRest;
   PetscCall(ReadContactOptions(comm, s->contact, &s->values));
   PetscCall(interface::ReadApproachProfile(comm, &s->a0, &s->values));
   PetscCall(heat::ReadHeatOptions(comm, s->material.density, &s->heat, &s->values));

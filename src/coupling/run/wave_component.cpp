@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "vibrotherm/coupling/continuation/saved_wave_state.hpp"
 #include "vibrotherm/io/point_probes.hpp"
 #include "vibrotherm/util/errors.hpp"
 #include "vibrotherm/util/stop_signals.hpp"
@@ -88,22 +89,7 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
     PetscCall(solver_->SetInterface(crack_.get(), WorstCaseApproach(scene)));
     summary->contact_cells = crack_->global_cells();
   }
-  if (scene.wave.harmonic_start) {
-    // Linearized about its rest state, a crack whose faces carry no load (a0 <= 0) has no stiffness:
-    // the steady response would let the faces pass through each other.
-    double most = -INFINITY, global;
-    if (crack_)
-      for (const interface::ContactCell& c : crack_->cells()) most = std::max(most, c.a0);
-    PetscCallMPI(MPI_Allreduce(&most, &global, 1, MPI_DOUBLE, MPI_MAX, comm));
-    PetscCheck(!crack_ || global > 0.0, comm, PETSC_ERR_USER_INPUT,
-               "-wave_start harmonic: the crack is not pre-closed (-crack_a0 %g): the linearized contact of an "
-               "unloaded crack lets its faces pass through each other; start at rest or pre-close it (-crack_a0 > 0)",
-               global);
-    if (!restarting) {  // a restart's state is the checkpoint's
-      stop_signals::EnterSetup("the harmonic start");
-      PetscCall(solver_->StartHarmonic());
-    }
-  }
+  if (!restarting) PetscCall(StartWaves(specimen, scene));  // a restart's state is the checkpoint's
   PetscCall(stage.End(&summary->stages["wave_setup"]));
   if (solver_->lts()) PetscCall(solver_->lts()->View(comm));
   summary->derived["wave_dt"] = solver_->step().dt();
@@ -132,6 +118,29 @@ PetscErrorCode WaveComponent::Setup(const mesh::Specimen& specimen, const Scene&
              "-final_time, soften the contact law or raise -max_steps",
              steps, solver_->step().dt(), scene.final_time, scene.run.max_steps);
   PetscCall(CheckProbePoints(solver_->space(), scene.run.probe_points));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveComponent::StartWaves(const mesh::Specimen& specimen, const Scene& scene) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)specimen.wave);
+  if (scene.wave.start == wave::WaveStart::kState) {
+    stop_signals::EnterSetup("the warm start");
+    PetscCall(StartFromSavedState(scene.wave.start_state, specimen, scene.excitation, solver_.get()));
+  }
+  if (scene.wave.start != wave::WaveStart::kHarmonic) PetscFunctionReturn(0);
+  // Linearized about its rest state, a crack whose faces carry no load (a0 <= 0) has no stiffness:
+  // the steady response would let the faces pass through each other.
+  double most = -INFINITY, global;
+  if (crack_)
+    for (const interface::ContactCell& c : crack_->cells()) most = std::max(most, c.a0);
+  PetscCallMPI(MPI_Allreduce(&most, &global, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCheck(!crack_ || global > 0.0, comm, PETSC_ERR_USER_INPUT,
+             "-wave_start harmonic: the crack is not pre-closed (-crack_a0 %g): the linearized contact of an "
+             "unloaded crack lets its faces pass through each other; start at rest or pre-close it (-crack_a0 > 0)",
+             global);
+  stop_signals::EnterSetup("the harmonic start");
+  PetscCall(solver_->StartHarmonic());
   PetscFunctionReturn(0);
 }
 

@@ -89,6 +89,7 @@ struct ContinuationScene {
   double couple_dt = 0.0;           ///< the coupling interval
   PetscInt heat_substeps = 1;       ///< heat steps per coupling interval
   double waves_expected_end = 0.0;  ///< where the waves are expected to be quiet
+  const wave::Excitation* excitation = nullptr;  ///< the source (signal is its time function)
 };
 
 }  // namespace vibrotherm::coupling

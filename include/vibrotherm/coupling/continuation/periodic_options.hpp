@@ -3,6 +3,7 @@
 
 #include <petscsys.h>
 
+#include <string>
 #include <vector>
 
 #include "vibrotherm/options/petsc/option_spec.hpp"
@@ -39,6 +40,10 @@ struct PeriodicOptions {
   /// only the windows' energies and the cells' friction per window are compared, against
   /// -periodic_tol, and the window recorded is replayed as the mean heat (periodic_detector.hpp)
   bool mean = false;
+  /// -periodic_save_state FILE: where the waves are suspended (a period boundary of the steady
+  /// state), their state is saved there: another run at the same frequency can begin in it
+  /// (-wave_start state; saved_wave_state.hpp)
+  std::string save_state;
 };
 
 /// The -periodic* options, declared (option_spec.hpp): name, help, unit, range, field.

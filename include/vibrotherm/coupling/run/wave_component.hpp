@@ -48,6 +48,8 @@ class WaveComponent final : public ContinuedWaves {
                             const std::vector<double>& increments) override;
 
  private:
+  /// The initial state -wave_start asks for: rest (nothing to do), harmonic, or a saved state.
+  PetscErrorCode StartWaves(const mesh::Specimen& specimen, const Scene& scene);
   /// With a continuation possible, -max_steps counts the steps taken (refused where they pass it).
   PetscErrorCode CheckStepBudget() const;
   std::unique_ptr<wave::WaveSolver> solver_;
