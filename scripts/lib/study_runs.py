@@ -62,6 +62,7 @@ class Runner:
         self.made = 0
         self._lock = threading.Lock()
         self._slots = threading.Semaphore(jobs)  # at most `jobs` runs at once, however they are asked for
+        self._wanted = 0  # runs running or waiting for a slot
 
     def run(self, name, overrides):
         """One run (or the finished one already there with the same overrides)."""
@@ -73,14 +74,20 @@ class Runner:
                 old, old_scene, summary = json.load(f), json.load(g), json.load(h)
             if old == dict(overrides) and old_scene == self.scene and summary.get("complete"):
                 return Run(name, directory, overrides, summary)
-        with self._slots:
-            began = time.time()
-            try:
-                summary = vt.run_scene(self.options_file, overrides, directory, ranks=self.ranks, overwrite=True,
-                                       program=self.executable).summary
-            except vt.RunFailed as failed:
-                raise RunFailed("%s (exit %d): %s" % (directory, failed.returncode, failed.error)) from None
-            seconds = time.time() - began
+        with self._lock:
+            self._wanted += 1
+        try:
+            with self._slots:
+                began = time.time()
+                try:
+                    summary = vt.run_scene(self.options_file, overrides, directory, ranks=self.ranks, overwrite=True,
+                                           program=self.executable).summary
+                except vt.RunFailed as failed:
+                    raise RunFailed("%s (exit %d): %s" % (directory, failed.returncode, failed.error)) from None
+                seconds = time.time() - began
+        finally:
+            with self._lock:
+                self._wanted -= 1
         with self._lock:
             self.seconds += seconds
             self.made += 1
@@ -90,6 +97,11 @@ class Runner:
             json.dump(self.scene, f, indent=1)
         self.log("  %s: %.0f s" % (name, seconds))
         return Run(name, directory, overrides, summary)
+
+    def idle_slots(self):
+        """Run slots nobody runs in or waits for now (a study may fill them with a second guess)."""
+        with self._lock:
+            return max(0, self.jobs - self._wanted)
 
     def map(self, named_overrides):
         """Runs (name, overrides) pairs, `jobs` at a time; the runs in the same order."""

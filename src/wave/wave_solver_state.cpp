@@ -35,10 +35,9 @@ PetscErrorCode WaveSolver::Save(store::Checkpoint& checkpoint, const mesh::Point
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+PetscErrorCode WaveSolver::LoadFields(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin,
+                                      double scale) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
-  PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-restart: the implicit wave TS (alpha2) is not checkpointed");
   std::vector<long long> keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   std::vector<double> u, v;
@@ -46,9 +45,21 @@ PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const me
   PetscCall(checkpoint.GetKeyed("wave/v", keys, 1, &v));
   PetscScalar* x;
   PetscCall(VecGetArray(X_, &x));
-  std::copy(u.begin(), u.end(), x);
-  std::copy(v.begin(), v.end(), x + keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) {  // scale 1: the values bit for bit
+    x[i] = scale * u[i];
+    x[keys.size() + i] = scale * v[i];
+  }
   PetscCall(VecRestoreArray(X_, &x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
+  PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-restart: the implicit wave TS (alpha2) is not checkpointed");
+  PetscCall(LoadFields(checkpoint, origin, 1.0));
+  std::vector<long long> keys;
+  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   std::vector<double> clock, control, accounts;
   PetscCall(checkpoint.GetShared("wave/clock", &clock, 4));
   PetscCall(checkpoint.GetShared("wave/step_control", &control, 3));
@@ -98,18 +109,7 @@ PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const me
 PetscErrorCode WaveSolver::StartFromState(const store::Checkpoint& state, const mesh::PointOrigin& origin,
                                           double scale) {
   PetscFunctionBeginUser;
-  std::vector<long long> keys;
-  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
-  std::vector<double> u, v;
-  PetscCall(state.GetKeyed("wave/u", keys, 1, &u));
-  PetscCall(state.GetKeyed("wave/v", keys, 1, &v));
-  PetscScalar* x;
-  PetscCall(VecGetArray(X_, &x));
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    x[i] = scale * u[i];
-    x[keys.size() + i] = scale * v[i];
-  }
-  PetscCall(VecRestoreArray(X_, &x));
+  PetscCall(LoadFields(state, origin, scale));
   double stored = 0.0, dissipated;
   if (interface_) {
     Vec uv, vv;

@@ -14,6 +14,7 @@ plate's next mode and two off-resonance frequencies in 5-14 kHz; the threshold a
     not), above the common power (not detectable there); the law's error is recorded;
   - a sweep across the LDR (the delamination open, heated by damping) peaks at the LDR, late
     by the fast sweep's lag (0 to +5 %);
+  - the runs that start warm (-wave_start state) start in a state saved at their own frequency;
   - 2 ranks = serial on the LDR candidate: the test's powers within 3 %, the defect's SNR
     within 10 % (the chaotic clapping rubs at slightly different places);
   - a bad band, an empty band and a scene without a crack are refused in one line.
@@ -77,6 +78,26 @@ with tempfile.TemporaryDirectory() as tmp:
         f1 = 4.730 ** 2 / (2 * math.pi) * h / L ** 2 * math.sqrt(E / (12 * rho * (1 - nu ** 2)))
         check(s["ldr_frequency"] and 0.85 < s["ldr_frequency"] / f1 < 0.95,
               "the LDR %.0f Hz against the clamped beam's %.0f Hz" % (s["ldr_frequency"] or 0, f1))
+        # A run at a frequency already run starts warm, in the saved state of an earlier run there.
+        first = {}
+        for name in sorted(os.listdir(out)):
+            o = os.path.join(out, name, "overrides.json")
+            if not name.startswith("f") or not os.path.exists(o):
+                continue
+            with open(o) as f:
+                overrides = json.load(f)
+            f0 = overrides["source_frequency"]
+            warm = overrides.get("wave_start") == "state"
+            if warm:
+                state = overrides["wave_start_state"]
+                check(os.path.dirname(os.path.dirname(state)) == out and os.path.exists(state) and
+                      json.load(open(os.path.join(os.path.dirname(state), "overrides.json")))["source_frequency"] == f0,
+                      "%s starts in a state saved at its own frequency in the study (%s)" % (name, state))
+            first.setdefault(f0, []).append(warm)
+        warm = sum(w.count(True) for w in first.values())
+        print("runs started warm: %d of %d" % (warm, sum(map(len, first.values()))))
+        # (A run never continued within T saves no state: the next one at its frequency starts cold.)
+        check(warm > 0, "the study starts runs warm")
         # The study's bookkeeping against the runs' own files: the powers are the test's means
         # (energy.csv's ledger at T over T), the efficiency their ratio, the gain the LDR's over the rest.
         for c in s["candidates"]:
