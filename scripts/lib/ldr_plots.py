@@ -113,7 +113,8 @@ def best_camera(study, output_dir, path):
     import vibrotherm as vt
 
     plt = _figure_module()
-    best = max(study["candidates"], key=lambda c: c["snr"] or 0.0)
+    # Ranked as the study ranks them: at the common power first (a candidate that missed it is not comparable).
+    best = max(study["candidates"], key=lambda c: (c.get("at_common_power", True), c["snr"] or 0.0))
     run = vt.load(os.path.join(output_dir, best["run"]))
     summary = run.summary
     frame = summary.get("camera", {}).get("defect_peak_frame", 0)
