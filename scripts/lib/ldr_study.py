@@ -226,12 +226,21 @@ class LdrStudy:
             if abs(nearest()["input_power"] / self.power - 1.0) <= POWER_TOLERANCE:
                 break
             guess = self.next_amplitude(runs)
-            pairs = [(frequency, guess)]
-            hedge = math.sqrt(guess * nearest()["amplitude"])
-            if self.runner.idle_slots() > 1 and self.name(frequency, hedge) != self.name(frequency, guess):
-                pairs.append((frequency, hedge))  # a slot left over beside this run: half the step as a second guess
-            runs += self.run_all(pairs)
+            hedge = math.sqrt(guess * nearest()["amplitude"])  # half the step (in log): a second guess
+            runs += self.run_all([(frequency, guess)] + ([(frequency, hedge)] if self.hedges(frequency, guess, hedge)
+                                                         else []))
         return nearest(), runs
+
+    def hedges(self, frequency, guess, hedge):
+        """Whether to run the second guess beside the first: when a run slot would be left idle (once fewer
+        searches than slots are left), or, resuming a study, when it was run then (a finished first guess
+        without its second was run alone: the search goes on as it went)."""
+        if self.name(frequency, hedge) == self.name(frequency, guess):
+            return False
+        finished = [self.runner.finished(self.name(frequency, a), self.overrides(frequency, a)) for a in (guess, hedge)]
+        if finished[0] or finished[1]:
+            return bool(finished[1])
+        return self.runner.idle_slots() > 1
 
     def next_amplitude(self, runs):
         """The next drive toward the common power: between the closest runs below and above it, the

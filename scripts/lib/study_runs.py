@@ -64,16 +64,32 @@ class Runner:
         self._slots = threading.Semaphore(jobs)  # at most `jobs` runs at once, however they are asked for
         self._wanted = 0  # runs running or waiting for a slot
 
-    def run(self, name, overrides):
-        """One run (or the finished one already there with the same overrides)."""
+    def portable(self, overrides):
+        """The overrides as recorded: paths into the study's directory relative to it ($STUDY/...), so that
+        a study moved elsewhere still finds its runs."""
+        prefix = os.path.abspath(self.output_dir) + os.sep
+        return {k: "$STUDY/" + v[len(prefix):] if isinstance(v, str) and v.startswith(prefix) else v
+                for k, v in dict(overrides).items()}
+
+    def finished(self, name, overrides):
+        """The run of that name already finished with the same scene and overrides, or None."""
         directory = os.path.join(self.output_dir, name)
         record, scene = os.path.join(directory, "overrides.json"), os.path.join(directory, "scene.json")
         summary_path = os.path.join(directory, "summary.json")
         if all(os.path.exists(p) for p in (record, scene, summary_path)):
             with open(record) as f, open(scene) as g, open(summary_path, errors="replace") as h:
                 old, old_scene, summary = json.load(f), json.load(g), json.load(h)
-            if old == dict(overrides) and old_scene == self.scene and summary.get("complete"):
+            if old == self.portable(overrides) and old_scene == self.scene and summary.get("complete"):
                 return Run(name, directory, overrides, summary)
+        return None
+
+    def run(self, name, overrides):
+        """One run (or the finished one already there with the same overrides)."""
+        done = self.finished(name, overrides)
+        if done:
+            return done
+        directory = os.path.join(self.output_dir, name)
+        record, scene = os.path.join(directory, "overrides.json"), os.path.join(directory, "scene.json")
         with self._lock:
             self._wanted += 1
         try:
@@ -92,7 +108,7 @@ class Runner:
             self.seconds += seconds
             self.made += 1
         with open(record, "w") as f:
-            json.dump(overrides, f, indent=1)
+            json.dump(self.portable(overrides), f, indent=1)
         with open(scene, "w") as f:
             json.dump(self.scene, f, indent=1)
         self.log("  %s: %.0f s" % (name, seconds))

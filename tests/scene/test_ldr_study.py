@@ -15,6 +15,8 @@ plate's next mode and two off-resonance frequencies in 5-14 kHz; the threshold a
   - a sweep across the LDR (the delamination open, heated by damping) peaks at the LDR, late
     by the fast sweep's lag (0 to +5 %);
   - the runs that start warm (-wave_start state) start in a state saved at their own frequency;
+  - the study moved to another directory and run again makes no new run (its runs' paths are
+    recorded relative to it);
   - 2 ranks = serial on the LDR candidate: the test's powers within 3 %, the defect's SNR
     within 10 % (the chaotic clapping rubs at slightly different places);
   - a bad band, an empty band and a scene without a crack are refused in one line.
@@ -23,6 +25,7 @@ usage: test_ldr_study.py VIBROTHERM SOURCE_DIR MPIEXEC"""
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -59,9 +62,9 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(options, "w") as f:
         f.write("-options_file %s\n-camera_netd 5e-4\n" % scene)
     out = os.path.join(tmp, "study")
-    r = subprocess.run([study, "ldr", options, "--band", "5000,14000", "--duration", "0.01", "--modes", "2",
-                        "--off", "2", "--thresholds", "1", "--jobs", "2", "--no-build", "--output", out],
-                       capture_output=True, text=True, env=env)
+    study_args = [study, "ldr", options, "--band", "5000,14000", "--duration", "0.01", "--modes", "2", "--off", "2",
+                  "--thresholds", "1", "--jobs", "2", "--no-build"]
+    r = subprocess.run(study_args + ["--output", out], capture_output=True, text=True, env=env)
     print(r.stdout[-2500:])
     check(r.returncode == 0, "the study ran: %s" % r.stderr[-1500:])
     if r.returncode == 0:
@@ -78,20 +81,25 @@ with tempfile.TemporaryDirectory() as tmp:
         f1 = 4.730 ** 2 / (2 * math.pi) * h / L ** 2 * math.sqrt(E / (12 * rho * (1 - nu ** 2)))
         check(s["ldr_frequency"] and 0.85 < s["ldr_frequency"] / f1 < 0.95,
               "the LDR %.0f Hz against the clamped beam's %.0f Hz" % (s["ldr_frequency"] or 0, f1))
+        def recorded(path):
+            """A run's overrides as recorded, its paths into the study ($STUDY/...) made whole."""
+            with open(path) as f:
+                return {k: os.path.join(out, v[len("$STUDY/"):]) if isinstance(v, str) and v.startswith("$STUDY/")
+                        else v for k, v in json.load(f).items()}
+
         # A run at a frequency already run starts warm, in the saved state of an earlier run there.
         first = {}
         for name in sorted(os.listdir(out)):
             o = os.path.join(out, name, "overrides.json")
             if not name.startswith("f") or not os.path.exists(o):
                 continue
-            with open(o) as f:
-                overrides = json.load(f)
+            overrides = recorded(o)
             f0 = overrides["source_frequency"]
             warm = overrides.get("wave_start") == "state"
             if warm:
                 state = overrides["wave_start_state"]
                 check(os.path.dirname(os.path.dirname(state)) == out and os.path.exists(state) and
-                      json.load(open(os.path.join(os.path.dirname(state), "overrides.json")))["source_frequency"] == f0,
+                      recorded(os.path.join(os.path.dirname(state), "overrides.json"))["source_frequency"] == f0,
                       "%s starts in a state saved at its own frequency in the study (%s)" % (name, state))
             first.setdefault(f0, []).append(warm)
         warm = sum(w.count(True) for w in first.values())
@@ -142,8 +150,7 @@ with tempfile.TemporaryDirectory() as tmp:
 
         # 2 ranks = serial on the LDR candidate (its study run again on 2 ranks).
         ldr = [c for c in s["candidates"] if c.get("ldr")][0]
-        with open(os.path.join(out, ldr["run"], "overrides.json")) as f:
-            overrides = json.load(f)
+        overrides = recorded(os.path.join(out, ldr["run"], "overrides.json"))
         words = ["-options_file", options]
         for name, value in overrides.items():
             words += ["-" + name] + ([] if value is None else [value if isinstance(value, str) else repr(value)])
@@ -159,4 +166,16 @@ with tempfile.TemporaryDirectory() as tmp:
                                          ("snr", b["camera_peak_snr"], 0.10)):
                 check(abs(mine / ldr[key] - 1) < tolerance, "2 ranks = serial: %s %.4g against %.4g" % (key, mine,
                                                                                                     ldr[key]))
+
+        # Moved and run again: every run found, none made, the same answer.
+        moved = os.path.join(tmp, "moved")
+        shutil.copytree(out, moved)
+        r = subprocess.run(study_args + ["--output", moved], capture_output=True, text=True, env=env)
+        check(r.returncode == 0, "the moved study ran again: %s" % r.stderr[-800:])
+        if r.returncode == 0:
+            with open(os.path.join(moved, "study.json")) as f:
+                again = json.load(f)
+            check(again["runs"] == 0, "the moved study reused all its runs (%d made)" % again["runs"])
+            check([c["efficiency"] for c in again["candidates"]] == [c["efficiency"] for c in s["candidates"]] and
+                  again["thresholds"][0]["amplitude"] == s["thresholds"][0]["amplitude"], "the same answer")
 check.finish()
