@@ -6,11 +6,13 @@
              in the widest gaps between them, spread over the band;
 3. common power the common input power: the scene's own drive's (its frequency and amplitude);
              each candidate run over the test time T (harmonic start, continuation) first at
-             the scene's amplitude, then at the amplitude that puts the common power in, by the
-             power law measured between its last two runs (exponent 2 at first) or between
-             the runs below and above it, until within 10 % (up to 6 more runs); a run at a
-             frequency already run starts warm in the saved steady state of the nearest drive
-             (-wave_start state); the candidates searched side by side, `jobs` runs at once;
+             the scene's amplitude (beside the scene's own run: it does not need the power),
+             then at the amplitude that puts the common power in, by the power law measured
+             between its last two runs (exponent 2 at first) or, once runs lie on both sides,
+             by the local law of the side nearer the power (else interpolated, else bisected),
+             until within 10 % (up to 6 more runs); a run at a frequency already run starts
+             warm in the saved steady state of the nearest drive (-wave_start state); the
+             candidates searched side by side, the resonances first, `jobs` runs at once;
 4. verdict   per candidate: input and friction power (means over the test: the energy ledger at
              T over T; the summary's last-periods figures kept as steady_*), efficiency, the defect's own peak rise
              on the camera's face within T, its SNR, contrast against the background heat,
@@ -18,14 +20,15 @@
              non-LDR candidate's;
 5. thresholds at the best few frequencies (the defect's SNR at the common power): the smallest
              drive that detects within T, bracketed on real runs from the fitted amplitude law
-             (amplitude_law.py), then verified: 1.25x detects, 0.75x does not.
+             (amplitude_law.py), then verified: 1.25x detects, 0.75x does not; started on idle
+             slots while the last searches run (a threshold needs only its own candidate's runs).
 Writes study.json and the plots (ldr_plots.py) into the output directory.
 """
 import json
 import math
 import os
 import time
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
 
 import package  # noqa: F401  (scripts/vibrotherm on the path)
 import vibrotherm as vt
@@ -112,6 +115,8 @@ class LdrStudy:
         self.ldr_participation, self.power = ldr_participation, power
         self.amplitude = float(options.get("source_amplitude", "1e-7"))
         self.points = {}  # frequency -> the runs' figures at every amplitude tried
+        self._reference = None  # the scene's own run (its input power: the common power), while it runs
+        self.picks = []  # the candidates being searched
         self.camera = self.camera_within(duration, options, log)
 
     @staticmethod
@@ -179,56 +184,111 @@ class LdrStudy:
                      snr=s.get("camera_peak_snr"), contrast=s.get("camera_defect_contrast"),
                      detectable=bool(s.get("camera_detectable")),
                      detection_time=s.get("camera_detection_time") if s.get("camera_detectable") else None,
-                     run=os.path.relpath(run.dir, self.runner.output_dir))
+                     run=os.path.relpath(run.dir, self.runner.output_dir), wall_time=s.get("wall_time_s"))
         self.points.setdefault(frequency, []).append(point)
         return point
 
-    def run_all(self, pairs):
-        """(frequency, amplitude) pairs, run `jobs` at a time: their figures."""
-        runs = self.runner.map([(self.name(f, a), self.overrides(f, a)) for f, a in pairs])
+    def run_all(self, pairs, priority=None):
+        """(frequency, amplitude) pairs of one frequency, run `jobs` at a time: their figures. Waiting for a slot,
+        the runs of the frequency whose runs took longest go first (the longest jobs first: its search is
+        the study's critical path)."""
+        if priority is None:
+            priority = -max((p["wall_time"] or 0.0 for p in self.points.get(pairs[0][0], [])), default=0.0)
+        runs = self.runner.map([(self.name(f, a), self.overrides(f, a)) for f, a in pairs], priority=priority)
         return [self.figures(run, f) for run, (f, _) in zip(runs, pairs)]
 
     # --- the study ------------------------------------------------------------------------
-    def common_power(self, picks):
-        """Every candidate at the common input power, each searched on its own (the searches side by side,
-        `jobs` runs at once, so that a slow run holds up only its own candidate)."""
-        if self.power is None:  # the scene's own drive at its own frequency
-            own = float(self.options.get("source_frequency", picks[0]["frequency"]))
-            (reference,) = self.run_all([(own, self.amplitude)])
-            self.power = reference["input_power"]
-        if not self.power or self.power <= 0:
-            raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?" % self.power)
-        with ThreadPoolExecutor(max_workers=max(1, len(picks))) as pool:
-            searches = list(pool.map(lambda c: self.search_power(c["frequency"]), picks))
-        for c, (p, runs) in zip(picks, searches):
-            c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "steady_input_power",
-                                        "steady_efficiency", "peak_rise",
-                                        "snr", "contrast", "detectable", "detection_time", "run",
-                                        "total_peak_rise", "damping_power")})
-            c["power_error"] = p["input_power"] / self.power - 1.0
-            c["at_common_power"] = abs(c["power_error"]) <= POWER_TOLERANCE
-            if not c["at_common_power"]:
-                self.log("  %.0f Hz: not at the common power after %d runs (closest %.3g at %.3g m): %s" % (
-                    c["frequency"], len(runs), p["input_power"], p["amplitude"], power_jump(runs, self.power)))
-        return picks
+    def reference_power(self, fallback_frequency):
+        """The common input power: the scene's own drive's (its frequency and amplitude)."""
+        own = float(self.options.get("source_frequency", fallback_frequency))
+        (reference,) = self.run_all([(own, self.amplitude)], priority=-math.inf)  # every search waits for it
+        if not reference["input_power"] or reference["input_power"] <= 0:
+            raise StudyError("the scene's drive puts no power in (input_power %r): is there a source?"
+                             % reference["input_power"])
+        return reference["input_power"]
+
+    def searches_and_thresholds(self, picks):
+        """Every candidate at the common power, each searched on its own thread (a slow run holds up only its
+        own candidate), then the thresholds at the best few. The scene's own run, which sets the common power,
+        runs beside the candidates' first runs (at the scene's amplitude, they do not need it), and the
+        resonances are asked first (their runs settle slowest). A threshold needs only its own candidate's
+        runs: once fewer searches are left than run slots, the best candidates found so far get theirs on
+        the idle slots; a late candidate that ranks among the best gets its own after."""
+        with ThreadPoolExecutor(max_workers=2 * len(picks) + 1) as pool:
+            if self.power is None:
+                self._reference = pool.submit(self.reference_power, picks[0]["frequency"])
+            self.picks = picks
+            order = sorted(picks, key=lambda c: not c["mode"])
+            searching = {pool.submit(self.search_power, c["frequency"]): c for c in order}
+            found, started, criteria = [], {}, None
+            while searching:
+                done, _ = wait(searching, return_when=FIRST_COMPLETED)
+                for future in done:
+                    found.append(self.take(searching.pop(future), *future.result()))
+                criteria = criteria or self.criteria(found)
+                if len(searching) < self.runner.jobs:
+                    self.start_thresholds(pool, self.best(found), criteria, started)
+            best = self.best(picks)
+            self.start_thresholds(pool, best, criteria, started)
+            unused = sorted(set(started) - {c["frequency"] for c in best})
+            if unused:
+                self.log("thresholds at %s not reported: a later candidate ranks above" % ", ".join(
+                    "%.0f Hz" % f for f in unused))
+            return criteria, [started[c["frequency"]].result() for c in best]
+
+    def start_thresholds(self, pool, best, criteria, started):
+        fresh = [c for c in best if c["frequency"] not in started]
+        if fresh:
+            self.log("thresholds at " + ", ".join("%.0f Hz" % c["frequency"] for c in fresh))
+        for c in fresh:
+            started[c["frequency"]] = pool.submit(self.threshold, c["frequency"], criteria)
+
+    def best(self, picks):
+        """The best few candidates for a threshold: ranked by the defect's SNR at equal power (a candidate
+        that missed the common power, a clapping onset, comes last)."""
+        ranked = sorted(picks, key=lambda c: (not c.get("at_common_power", True), -(c["snr"] or 0.0)))
+        return ranked[:self.n_thresholds]
+
+    def take(self, c, p, runs):
+        """A candidate's figures from its run nearest the common power."""
+        c.update({k: p[k] for k in ("amplitude", "input_power", "friction_power", "efficiency", "steady_input_power",
+                                    "steady_efficiency", "peak_rise",
+                                    "snr", "contrast", "detectable", "detection_time", "run",
+                                    "total_peak_rise", "damping_power")})
+        c["power_error"] = p["input_power"] / self.power - 1.0
+        c["at_common_power"] = abs(c["power_error"]) <= POWER_TOLERANCE
+        if not c["at_common_power"]:
+            self.log("  %.0f Hz: not at the common power after %d runs (closest %.3g at %.3g m): %s" % (
+                c["frequency"], len(runs), p["input_power"], p["amplitude"], power_jump(runs, self.power)))
+        return c
+
+    def common(self):
+        """The common input power, once the scene's own run has measured it."""
+        if self.power is None:
+            self.power = self._reference.result()
+        return self.power
 
     def search_power(self, frequency):
         """Runs at one frequency until one puts the common power in (within 10 %): the first at the
         scene's own drive amplitude (a lift-off clapping layer takes far more power than its stuck
         linearisation, so a linear probe's A^2 rule would land near the clapping onset, where runs
         take longest to settle), then each at next_amplitude. The run nearest the power, and all runs."""
-        runs = self.run_all([(frequency, self.amplitude)])
+        mode = any(c["frequency"] == frequency and c["mode"] for c in self.picks)
+        runs = self.run_all([(frequency, self.amplitude)], priority=-1.0 if mode else 0.0)  # resonances settle slowest
+        self.common()
 
         def nearest():
             return min(runs, key=lambda q: abs(math.log(q["input_power"] / self.power))
                        if q["input_power"] > 0 else math.inf)
-        for _ in range(RESCALE_ROUNDS):
+        for round_ in range(RESCALE_ROUNDS):
             if abs(nearest()["input_power"] / self.power - 1.0) <= POWER_TOLERANCE:
                 break
             guess = self.next_amplitude(runs)
             hedge = math.sqrt(guess * nearest()["amplitude"])  # half the step (in log): a second guess
-            runs += self.run_all([(frequency, guess)] + ([(frequency, hedge)] if self.hedges(frequency, guess, hedge)
-                                                         else []))
+            # Not in the last round: a second guess shortens the next round, and there is none (a chaotic
+            # run beside the last one may take several times as long: 317 s against 107 s measured).
+            second = round_ < RESCALE_ROUNDS - 1 and self.hedges(frequency, guess, hedge)
+            runs += self.run_all([(frequency, guess)] + ([(frequency, hedge)] if second else []))
         return nearest(), runs
 
     def hedges(self, frequency, guess, hedge):
@@ -243,24 +303,32 @@ class LdrStudy:
         return self.runner.idle_slots() > 1
 
     def next_amplitude(self, runs):
-        """The next drive toward the common power: between the closest runs below and above it, the
-        log-linear interpolation of power against amplitude (bisected in log when it falls near an end:
-        a clapping onset makes the power jump); with one side only, the power law measured between the
-        last two runs (2 at first: linear), its exponent within [1, 6]."""
+        """The next drive toward the common power. Between the closest runs below and above it: the local
+        power law of the side nearer the power (its two runs nearest the bracket: the power curves, and a chord
+        over the bracket misses where it does), from that end, if it lands inside; else the log-linear
+        interpolation of power against amplitude, if not near an end; else the bracket bisected in log (a
+        clapping onset makes the power jump). With one side only, the power law measured between the last two
+        runs (2 at first: linear)."""
         target = math.log(self.power)
-        below = [r for r in runs if 0 < r["input_power"] < self.power]
-        above = [r for r in runs if r["input_power"] > self.power]
-        if below and above:
-            lo = max(below, key=lambda r: r["amplitude"])
-            hi = min(above, key=lambda r: r["amplitude"])
-            if lo["amplitude"] < hi["amplitude"]:
-                a0, a1 = math.log(lo["amplitude"]), math.log(hi["amplitude"])
-                p0, p1 = math.log(lo["input_power"]), math.log(hi["input_power"])
-                x = a0 + (target - p0) * (a1 - a0) / (p1 - p0)
-                if not a0 + 0.1 * (a1 - a0) <= x <= a1 - 0.1 * (a1 - a0):
-                    x = 0.5 * (a0 + a1)
+        below = sorted((r for r in runs if 0 < r["input_power"] < self.power), key=lambda r: -r["amplitude"])
+        above = sorted((r for r in runs if r["input_power"] > self.power), key=lambda r: r["amplitude"])
+        if not (below and above and below[0]["amplitude"] < above[0]["amplitude"]):
+            return self.power_law_step(runs[-1], runs[-2] if len(runs) > 1 else None)
+        a0, a1 = math.log(below[0]["amplitude"]), math.log(above[0]["amplitude"])
+        p0, p1 = math.log(below[0]["input_power"]), math.log(above[0]["input_power"])
+        near = below if target - p0 < p1 - target else above
+        if len(near) > 1:
+            x = math.log(self.power_law_step(near[0], near[1]))
+            if a0 + 0.05 * (a1 - a0) <= x <= a1 - 0.05 * (a1 - a0):
                 return math.exp(x)
-        a, b = runs[-1], runs[-2] if len(runs) > 1 else None
+        x = a0 + (target - p0) * (a1 - a0) / (p1 - p0)
+        if not a0 + 0.1 * (a1 - a0) <= x <= a1 - 0.1 * (a1 - a0):
+            x = 0.5 * (a0 + a1)
+        return math.exp(x)
+
+    def power_law_step(self, a, b):
+        """The drive that puts the common power in by the power law between runs a and b (exponent 2 without b:
+        linear), from a; the exponent within [1, 6]."""
         exponent = 2.0
         if b and a["input_power"] > 0 and b["input_power"] > 0 and a["amplitude"] != b["amplitude"]:
             r = math.log(a["input_power"] / b["input_power"]) / math.log(a["amplitude"] / b["amplitude"])
@@ -319,14 +387,8 @@ class LdrStudy:
         picks = candidates(modes, self.band, self.n_modes, n_off)
         self.log("candidates: " + ", ".join("%.0f Hz%s" % (c["frequency"], " (mode, %.2f)" % c["participation"]
                                                             if c["mode"] else "") for c in picks))
-        picks = self.common_power(picks)
+        criteria, thresholds = self.searches_and_thresholds(picks)
         ldr = self.ldr(picks)
-        # Ranked at equal power: a candidate that missed it (a clapping onset) comes last.
-        best = sorted(picks, key=lambda c: (not c.get("at_common_power", True), -(c["snr"] or 0.0)))[:self.n_thresholds]
-        criteria = self.criteria(picks)
-        self.log("thresholds at " + ", ".join("%.0f Hz" % c["frequency"] for c in best))
-        with ThreadPoolExecutor(max_workers=max(1, len(best))) as pool:  # side by side, `jobs` runs at once
-            thresholds = list(pool.map(lambda c: self.threshold(c["frequency"], criteria), best))
         return self.record(modes, picks, ldr, thresholds, criteria, time.time() - began)
 
     def ldr(self, picks):
@@ -344,8 +406,9 @@ class LdrStudy:
         gain = lead["efficiency"] / max(others) if others and max(others) > 0 else None
         return {"frequency": lead["frequency"], "gain": gain}
 
-    def criteria(self, picks):
-        with open(os.path.join(self.runner.output_dir, picks[0]["run"], "summary.json")) as f:
+    def criteria(self, found):
+        """The camera's detection criteria (SNR, contrast), from any candidate's run."""
+        with open(os.path.join(self.runner.output_dir, found[0]["run"], "summary.json")) as f:
             camera = json.load(f).get("camera", {})
         return camera.get("detect_snr", 5.0), camera.get("detect_contrast", 1.0)
 

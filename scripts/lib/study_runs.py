@@ -8,6 +8,9 @@ resumes), several at once on the machine's cores.
 
 A failed run raises RunFailed with vibrotherm's own error line.
 """
+import contextlib
+import heapq
+import itertools
 import json
 import os
 import threading
@@ -51,6 +54,31 @@ class Run:
         return "Run(%s)" % self.name
 
 
+class Slots:
+    """At most `jobs` holders at once; waiters are let in by priority (lowest first), then in the
+    order they came: a study puts the runs of its slowest searches first (the longest jobs first)."""
+
+    def __init__(self, jobs):
+        self._free, self._waiting, self._count = jobs, [], itertools.count()
+        self._cond = threading.Condition()
+
+    @contextlib.contextmanager
+    def held(self, priority=0.0):
+        with self._cond:
+            ticket = (priority, next(self._count))
+            heapq.heappush(self._waiting, ticket)
+            self._cond.wait_for(lambda: self._free > 0 and self._waiting[0] == ticket)
+            heapq.heappop(self._waiting)
+            self._free -= 1
+            self._cond.notify_all()
+        try:
+            yield
+        finally:
+            with self._cond:
+                self._free += 1
+                self._cond.notify_all()
+
+
 class Runner:
     def __init__(self, options_file, output_dir, ranks=1, jobs=1, log=print, executable=None):
         self.options_file = os.path.abspath(options_file)
@@ -61,7 +89,7 @@ class Runner:
         self.seconds = 0.0  # wall time of the runs made (not reused)
         self.made = 0
         self._lock = threading.Lock()
-        self._slots = threading.Semaphore(jobs)  # at most `jobs` runs at once, however they are asked for
+        self._slots = Slots(jobs)  # at most `jobs` runs at once, however they are asked for
         self._wanted = 0  # runs running or waiting for a slot
 
     def portable(self, overrides):
@@ -83,8 +111,9 @@ class Runner:
                 return Run(name, directory, overrides, summary)
         return None
 
-    def run(self, name, overrides):
-        """One run (or the finished one already there with the same overrides)."""
+    def run(self, name, overrides, priority=0.0):
+        """One run (or the finished one already there with the same overrides); waiting for a slot, runs of
+        lower priority go first."""
         done = self.finished(name, overrides)
         if done:
             return done
@@ -93,7 +122,7 @@ class Runner:
         with self._lock:
             self._wanted += 1
         try:
-            with self._slots:
+            with self._slots.held(priority):
                 began = time.time()
                 try:
                     summary = vt.run_scene(self.options_file, overrides, directory, ranks=self.ranks, overwrite=True,
@@ -119,7 +148,7 @@ class Runner:
         with self._lock:
             return max(0, self.jobs - self._wanted)
 
-    def map(self, named_overrides):
+    def map(self, named_overrides, priority=0.0):
         """Runs (name, overrides) pairs, `jobs` at a time; the runs in the same order."""
         with ThreadPoolExecutor(max_workers=self.jobs) as pool:
-            return list(pool.map(lambda pair: self.run(*pair), named_overrides))
+            return list(pool.map(lambda pair: self.run(*pair, priority=priority), named_overrides))
