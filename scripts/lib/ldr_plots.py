@@ -111,10 +111,10 @@ def best_camera(study, output_dir, path):
     """The camera frame (and the defect's share) of the candidate with the largest defect SNR."""
     import package  # noqa: F401  (scripts/vibrotherm on the path)
     import vibrotherm as vt
+    from ldr_study import detection_rank  # ranked as the study ranks them
 
     plt = _figure_module()
-    # Ranked as the study ranks them: at the common power first (a candidate that missed it is not comparable).
-    best = max(study["candidates"], key=lambda c: (c.get("at_common_power", True), c["snr"] or 0.0))
+    best = max(study["candidates"], key=detection_rank)
     run = vt.load(os.path.join(output_dir, best["run"]))
     summary = run.summary
     frame = summary.get("camera", {}).get("defect_peak_frame", 0)

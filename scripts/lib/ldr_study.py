@@ -63,6 +63,12 @@ def power_jump(runs, target):
     return "the rescaling did not converge"
 
 
+def detection_rank(c):
+    """How a candidate ranks for detection: at the common power first (one that missed it, a clapping
+    onset, is not comparable), then by the defect's SNR. Larger is better."""
+    return c.get("at_common_power", True), c["snr"] or 0.0
+
+
 class StudyError(RuntimeError):
     """A study that cannot run as asked (one line, no traceback)."""
 
@@ -116,7 +122,6 @@ class LdrStudy:
         self.amplitude = float(options.get("source_amplitude", "1e-7"))
         self.points = {}  # frequency -> the runs' figures at every amplitude tried
         self._reference = None  # the scene's own run (its input power: the common power), while it runs
-        self.picks = []  # the candidates being searched
         self.camera = self.camera_within(duration, options, log)
 
     @staticmethod
@@ -193,9 +198,13 @@ class LdrStudy:
         the runs of the frequency whose runs took longest go first (the longest jobs first: its search is
         the study's critical path)."""
         if priority is None:
-            priority = -max((p["wall_time"] or 0.0 for p in self.points.get(pairs[0][0], [])), default=0.0)
+            priority = self.priority(pairs[0][0])
         runs = self.runner.map([(self.name(f, a), self.overrides(f, a)) for f, a in pairs], priority=priority)
         return [self.figures(run, f) for run, (f, _) in zip(runs, pairs)]
+
+    def priority(self, frequency):
+        """A run's place in the queue for a slot (lower first): minus the longest run at its frequency so far."""
+        return -max((p["wall_time"] or 0.0 for p in self.points.get(frequency, [])), default=0.0)
 
     # --- the study ------------------------------------------------------------------------
     def reference_power(self, fallback_frequency):
@@ -217,9 +226,10 @@ class LdrStudy:
         with ThreadPoolExecutor(max_workers=2 * len(picks) + 1) as pool:
             if self.power is None:
                 self._reference = pool.submit(self.reference_power, picks[0]["frequency"])
-            self.picks = picks
+            # The modes' first runs wait with a higher priority (search_power); submitted first, they also
+            # arrive first at the slots free at the start.
             order = sorted(picks, key=lambda c: not c["mode"])
-            searching = {pool.submit(self.search_power, c["frequency"]): c for c in order}
+            searching = {pool.submit(self.search_power, c["frequency"], c["mode"]): c for c in order}
             found, started, criteria = [], {}, None
             while searching:
                 done, _ = wait(searching, return_when=FIRST_COMPLETED)
@@ -246,8 +256,7 @@ class LdrStudy:
     def best(self, picks):
         """The best few candidates for a threshold: ranked by the defect's SNR at equal power (a candidate
         that missed the common power, a clapping onset, comes last)."""
-        ranked = sorted(picks, key=lambda c: (not c.get("at_common_power", True), -(c["snr"] or 0.0)))
-        return ranked[:self.n_thresholds]
+        return sorted(picks, key=detection_rank, reverse=True)[:self.n_thresholds]
 
     def take(self, c, p, runs):
         """A candidate's figures from its run nearest the common power."""
@@ -268,12 +277,11 @@ class LdrStudy:
             self.power = self._reference.result()
         return self.power
 
-    def search_power(self, frequency):
+    def search_power(self, frequency, mode=False):
         """Runs at one frequency until one puts the common power in (within 10 %): the first at the
         scene's own drive amplitude (a lift-off clapping layer takes far more power than its stuck
         linearisation, so a linear probe's A^2 rule would land near the clapping onset, where runs
         take longest to settle), then each at next_amplitude. The run nearest the power, and all runs."""
-        mode = any(c["frequency"] == frequency and c["mode"] for c in self.picks)
         runs = self.run_all([(frequency, self.amplitude)], priority=-1.0 if mode else 0.0)  # resonances settle slowest
         self.common()
 

@@ -36,9 +36,10 @@ PetscErrorCode WaveSolver::Save(store::Checkpoint& checkpoint, const mesh::Point
 }
 
 PetscErrorCode WaveSolver::LoadFields(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin,
-                                      double scale) {
+                                      double scale, std::vector<long long>* owned_keys) {
   PetscFunctionBeginUser;
-  std::vector<long long> keys;
+  std::vector<long long> local_keys;
+  std::vector<long long>& keys = owned_keys ? *owned_keys : local_keys;
   PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
   std::vector<double> u, v;
   PetscCall(checkpoint.GetKeyed("wave/u", keys, 1, &u));
@@ -57,9 +58,8 @@ PetscErrorCode WaveSolver::Restore(const store::Checkpoint& checkpoint, const me
   PetscFunctionBeginUser;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm_);
   PetscCheck(!second_order_, comm, PETSC_ERR_SUP, "-restart: the implicit wave TS (alpha2) is not checkpointed");
-  PetscCall(LoadFields(checkpoint, origin, 1.0));
-  std::vector<long long> keys;
-  PetscCall(mesh::OwnedDofKeys(dm_, origin, &keys));
+  std::vector<long long> keys;  // the owned dofs' keys, for the body force's values below
+  PetscCall(LoadFields(checkpoint, origin, 1.0, &keys));
   std::vector<double> clock, control, accounts;
   PetscCall(checkpoint.GetShared("wave/clock", &clock, 4));
   PetscCall(checkpoint.GetShared("wave/step_control", &control, 3));

@@ -77,7 +77,7 @@ class LawStudy(LdrStudy):
     """The study with each run a law: P(A), friction 0.9 P, damping 0.1 P, SNR = k x friction."""
     def run_all(self, pairs, priority=None):
         if priority is None:
-            priority = -max((p["wall_time"] for p in self.points.get(pairs[0][0], [])), default=0.0)
+            priority = self.priority(pairs[0][0])
         threads = [threading.Thread(target=self.runner.run, args=pair + (priority,)) for pair in pairs]
         for t in threads:
             t.start()

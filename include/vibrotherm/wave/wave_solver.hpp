@@ -209,8 +209,10 @@ class WaveSolver {
   PetscErrorCode BookInitialEnergy(double interface_energy);
   /// ½ [u]ᵀ K_c [u] of the interface's springs stuck at its committed state.
   PetscErrorCode StuckSpringEnergy(double* springs);
-  /// u and v from a checkpoint's keyed "wave/u", "wave/v", times scale (restart, warm start).
-  PetscErrorCode LoadFields(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin, double scale);
+  /// u and v from a checkpoint's keyed "wave/u", "wave/v", times scale (restart, warm start); the owned
+  /// dofs' keys into *owned_keys if given.
+  PetscErrorCode LoadFields(const store::Checkpoint& checkpoint, const mesh::PointOrigin& origin, double scale,
+                            std::vector<long long>* owned_keys = nullptr);
   // Implicit alpha2 (wave_alpha2.cpp): M A + C V + K U = f(t), constraints on the acceleration.
   PetscErrorCode SetupAlpha2(MPI_Comm comm);
   static PetscErrorCode I2Function(TS ts, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
