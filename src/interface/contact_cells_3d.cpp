@@ -6,6 +6,7 @@
 #include <map>
 
 #include "vibrotherm/geometry/frame.hpp"
+#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
@@ -106,11 +107,8 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   PetscCall(DMGetLocalSection(dm, &section));
   const PetscScalar* w;
   PetscCall(VecGetArrayRead(weights, &w));
-  DMLabel plus_faces, crack_label;
-  PetscCall(DMGetLabel(dm, mesh::labels::crack_plus, &plus_faces));
+  DMLabel crack_label;
   PetscCall(DMGetLabel(dm, mesh::labels::crack, &crack_label));
-  PetscCheck(plus_faces || cohesive.empty(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "3D crack: no %s label (SplitCracks sets it)", mesh::labels::crack_plus);
   std::map<PetscInt, ContactCell> by_point;
   for (PetscInt c : cohesive) {
     const PetscInt* cone;
@@ -124,9 +122,8 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
     PetscCheck(crack >= 1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D crack: a cohesive cell's face is not labelled %s",
                mesh::labels::crack);
     frame.crack = crack - 1;
-    PetscInt side;  // the split labelled the + face on the serial mesh (mesh/plex/labels.hpp)
-    PetscCall(DMLabelGetValue(plus_faces, cone[0], &side));
-    const int plus = side == 1 ? 0 : 1;
+    int plus;  // the split labelled the + face on the serial mesh
+    PetscCall(mesh::PlusSide(dm, c, &plus));
     std::map<PetscInt, std::array<PetscInt, 2>> pairs;
     PetscCall(CellPairs(dm, c, static_cast<int>(space.degree()), ghost, chart0, &pairs));
     for (const auto& [key, pair] : pairs) {

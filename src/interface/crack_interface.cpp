@@ -8,36 +8,12 @@
 
 #include "vibrotherm/interface/contact_cells_3d.hpp"
 #include "vibrotherm/interface/contact_geometry.hpp"
+#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::interface {
 namespace {
-
-/// Which face of a cohesive cell is +: the one whose bulk neighbour lies along n.
-PetscErrorCode PlusFace(DM dm, const mesh::VertexCoordinates& x, PetscInt cohesive, const CrackFacetGeometry& g,
-                        const Vec2& n, int* plus) {
-  PetscFunctionBeginUser;
-  const PetscInt* cone;
-  PetscCall(DMPlexGetCone(dm, cohesive, &cone));
-  *plus = -1;
-  const double mx = 0.5 * (g.p0[0] + g.p1[0]), my = 0.5 * (g.p0[1] + g.p1[1]);
-  for (int side = 0; side < 2 && *plus < 0; ++side) {
-    const PetscInt* support;
-    PetscInt ns;
-    PetscCall(DMPlexGetSupportSize(dm, cone[side], &ns));
-    PetscCall(DMPlexGetSupport(dm, cone[side], &support));
-    for (PetscInt k = 0; k < ns; ++k) {
-      if (support[k] == cohesive) continue;
-      std::array<double, 2> c;
-      PetscCall(mesh::CellCentroid(dm, x, support[k], &c));
-      *plus = (c[0] - mx) * n[0] + (c[1] - my) * n[1] > 0 ? side : 1 - side;
-    }
-  }
-  PetscCheck(*plus >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cohesive cell %" PetscInt_FMT " has no local bulk neighbour",
-             cohesive);
-  PetscFunctionReturn(0);
-}
 
 ContactCell MakeCell(PetscInt plus, PetscInt minus, int crack, const Vec2& where, const NodeGeometry& node) {
   ContactCell cell{};
@@ -113,8 +89,8 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
     const CrackFacetGeometry& f = cracks.facets()[owned.index];
     const PetscInt* cone;
     PetscCall(DMPlexGetCone(dm, owned.cell, &cone));
-    int plus = 0;
-    PetscCall(PlusFace(dm, x, owned.cell, f, ContactGeometry::normal(geometry.tangent(f)), &plus));
+    int plus;  // the split labelled the + face on the serial mesh, by the tangent along the crack
+    PetscCall(mesh::PlusSide(dm, owned.cell, &plus));
     if (geometry.degree() == 2) {  // the two faces' edge nodes
       const Vec2 mid = {0.5 * (f.p0[0] + f.p1[0]), 0.5 * (f.p0[1] + f.p1[1])};
       by_point[owned.cell] = MakeCell(cone[plus], cone[1 - plus], f.crack, mid, geometry.middle(f));

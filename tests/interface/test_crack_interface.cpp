@@ -5,11 +5,13 @@
 // and a Simulation built in-process (paper scene, a few periods) deposits in the
 // heat exactly the energy the crack dissipated. Serial and 2 ranks.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "vibrotherm/coupling/run/scene.hpp"
 #include "vibrotherm/coupling/run/simulation.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "wave_test_support.hpp"
 
 namespace vibrotherm::testing {
@@ -17,16 +19,20 @@ namespace {
 
 const std::string kPaper = std::string("-options_file ") + VIBROTHERM_SOURCE_DIR + "/options/paper.opts ";
 
+/// The crack interface on the scene's wave mesh, with the named law.
+PetscErrorCode SetUpCrack(ScopedWave& w, const char* law, const interface::ApproachProfile& a0,
+                          interface::CrackInterface* crack) {
+  contact::ContactParameters params;
+  params.crack_law = law;
+  return crack->Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.op().mass(),
+                      contact::create_crack_law(params), a0);
+}
+
 TEST(CrackInterface, CellsFollowTheGeometry) {
   ScopedWave w(kPaper + "-mesh_h 0.004");
   ASSERT_EQ(w.status, 0);
-  contact::ContactParameters params;
-  params.crack_law = "mmd";
-  interface::ApproachProfile a0;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.op().mass(),
-                        contact::create_crack_law(params), a0),
-            0);
+  ASSERT_EQ(SetUpCrack(w, "mmd", interface::ApproachProfile{}, &crack), 0);
   const PetscInt facets = w.specimen->summary.cracks.at(0).facets;
   EXPECT_EQ(crack.global_cells(), 2 * facets - 1) << "Q2: facets − 1 vertex pairs and a mid-side pair per facet";
   const double theta = 20.0 * M_PI / 180.0;
@@ -48,19 +54,53 @@ TEST(CrackInterface, CellsFollowTheGeometry) {
   EXPECT_NEAR(weights, 0.02 - 2.0 * tip_facet / 6.0, 1e-12) << "tributary lengths sum to the crack length";
 }
 
+/// Every bulk cell around each contact cell's + point lies on the + side of the crack (along n
+/// from the point): the + side the split labelled (crack_plus) is the one n points into.
+void ExpectPlusSideAlongN(const fe::LagrangeSpace& space, const interface::CrackInterface& crack) {
+  DM dm = space.dm();
+  mesh::VertexCoordinates x;
+  ASSERT_EQ(x.Setup(dm), 0);
+  PetscInt cStart, cEnd;
+  DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd);
+  int checked = 0;
+  for (const interface::ContactCell& c : crack.cells()) {
+    PetscInt n_star, *star = nullptr;
+    DMPlexGetTransitiveClosure(dm, c.plus, PETSC_FALSE, &n_star, &star);
+    for (PetscInt k = 0; k < n_star; ++k) {
+      const PetscInt cell = star[2 * k];
+      bool cohesive;
+      if (cell < cStart || cell >= cEnd || mesh::IsCohesiveCell(dm, cell, &cohesive) != 0 || cohesive) continue;
+      std::array<double, 2> centre;
+      ASSERT_EQ(mesh::CellCentroid(dm, x, cell, &centre), 0);
+      EXPECT_GT((centre[0] - c.x) * c.n[0] + (centre[1] - c.y) * c.n[1], 0.0)
+          << "cell " << cell << " around the + point of the contact cell at (" << c.x << ", " << c.y << ")";
+      ++checked;
+    }
+    DMPlexRestoreTransitiveClosure(dm, c.plus, PETSC_FALSE, &n_star, &star);
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(CrackInterface, ThePlusPointsBulkLiesAlongN) {
+  // A crack rising and one falling along x (its chord runs from the end with the smaller x).
+  for (const char* angle : {"20", "-70"}) {
+    ScopedWave w(kPaper + "-mesh_h 0.004 -crack_angle " + angle);
+    ASSERT_EQ(w.status, 0);
+    interface::CrackInterface crack;
+    ASSERT_EQ(SetUpCrack(w, "mmd", interface::ApproachProfile{}, &crack), 0);
+    ExpectPlusSideAlongN(w.solver.space(), crack);
+  }
+}
+
 TEST(CrackInterface, OpeningTheCrackPullsThePlusFaceAlongN) {
   // A pre-closed crack (a0 > 0) pushed further closed by a jump against n feels a
   // restoring force along +n on the + face: the sign convention of PHYSICS.md §3.1.
   ScopedWave w(kPaper + "-mesh_h 0.004");
   ASSERT_EQ(w.status, 0);
-  contact::ContactParameters params;
-  params.crack_law = "clapping";
   interface::ApproachProfile a0;
   a0.uniform = 1e-8;
   interface::CrackInterface crack;
-  ASSERT_EQ(crack.Setup(w.solver.space(), w.specimen->specimen.wave_cracks, w.solver.op().mass(),
-                        contact::create_crack_law(params), a0),
-            0);
+  ASSERT_EQ(SetUpCrack(w, "clapping", a0, &crack), 0);
   Vec u, acc;
   ASSERT_EQ(VecDuplicate(w.solver.op().mass(), &u), 0);
   ASSERT_EQ(VecDuplicate(u, &acc), 0);

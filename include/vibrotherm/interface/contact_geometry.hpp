@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "vibrotherm/geometry/crack_chord.hpp"
 #include "vibrotherm/geometry/crack_facet.hpp"
 #include "vibrotherm/geometry/frame.hpp"
 
@@ -23,10 +24,7 @@ using geometry::Vec2;
 using CrackFacetGeometry = geometry::CrackFacet;
 
 /// A crack's direction (unit, first facet → last), centre and length.
-struct CrackFrame {
-  Vec2 direction{1.0, 0.0}, centre{};
-  double length = 0.0;
-};
+using CrackFrame = geometry::CrackChord;
 
 /// A contact node's tributary length [m] and unit tangent.
 struct NodeGeometry {

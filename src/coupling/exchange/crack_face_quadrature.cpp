@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::coupling {
@@ -152,8 +152,6 @@ PetscErrorCode BuildCrackFaceQuadrature(const interface::CrackInterface& crack, 
   PetscCall(CellIndexAtNodes(crack, wave_space, &index));
   PetscSection section;
   PetscCall(DMGetLocalSection(dm, &section));
-  DMLabel plus_faces;
-  PetscCall(DMGetLabel(dm, mesh::labels::crack_plus, &plus_faces));
   mesh::VertexPositions<3> x;
   PetscCall(x.Setup(dm));
   const PetscScalar* idx;
@@ -170,9 +168,9 @@ PetscErrorCode BuildCrackFaceQuadrature(const interface::CrackInterface& crack, 
     if (!cohesive) continue;
     const PetscInt* cone;
     PetscCall(DMPlexGetCone(dm, c, &cone));
-    PetscInt side;
-    PetscCall(DMLabelGetValue(plus_faces, cone[0], &side));
-    const PetscInt face = side == 1 ? cone[0] : cone[1];
+    int plus;
+    PetscCall(mesh::PlusSide(dm, c, &plus));
+    const PetscInt face = cone[plus];
     PetscCall(FaceNodes(dm, section, idx, degree, face, &corners, &nodes));
     const std::array<Vec3, 4> X = {x(corners[0]), x(corners[1]), x(corners[2]), x(corners[3])};
     FacePoints(X, nodes, degree, subdivisions, points, &entries);

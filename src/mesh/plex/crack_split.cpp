@@ -4,8 +4,12 @@
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 
 #include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/geometry/crack_chord.hpp"
 #include "vibrotherm/geometry/frame.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
+
+#include <map>
+#include <vector>
 
 namespace vibrotherm::mesh {
 namespace {
@@ -61,29 +65,104 @@ PetscErrorCode CheckCohesiveCount(DM split, PetscInt crack_faces) {
   PetscFunctionReturn(0);
 }
 
-/// 3D: labels crack_plus the face of each cohesive cell whose bulk neighbour lies
-/// along the oriented normal, on the serial split mesh (both neighbours there):
-/// the side survives distribution, where a cohesive cell may lose both neighbours.
+/// The bulk neighbour of a cohesive cell's − face (cone[0]) on the serial split mesh.
+PetscErrorCode BulkNeighbour(DM split, PetscInt cohesive, PetscInt* face, PetscInt* bulk) {
+  PetscFunctionBeginUser;
+  const PetscInt *cone, *support;
+  PetscCall(DMPlexGetCone(split, cohesive, &cone));
+  PetscCall(DMPlexGetSupport(split, cone[0], &support));
+  *face = cone[0];
+  *bulk = support[0] == cohesive ? support[1] : support[0];
+  PetscFunctionReturn(0);
+}
+
+/// Where each cohesive cell's − face is and the crack normal there, by the dimension's
+/// convention: 3D the oriented normal of the face (geometry/frame.hpp), 2D the facet's
+/// tangent along its crack's chord turned by +90° (geometry/crack_chord.hpp).
+template <int D>
+class CrackNormals;
+
+template <>
+class CrackNormals<3> {
+ public:
+  PetscErrorCode Setup(DM, const std::vector<PetscInt>&) { return 0; }
+  PetscErrorCode At(DM split, PetscInt face, geometry::Point<3>* centre, geometry::Point<3>* n) const {
+    PetscFunctionBeginUser;
+    PetscReal area, c[3], normal[3];
+    PetscCall(DMPlexComputeCellGeometryFVM(split, face, &area, c, normal));
+    *centre = {c[0], c[1], c[2]};
+    *n = geometry::OrientedCrackNormal({normal[0], normal[1], normal[2]});
+    PetscFunctionReturn(0);
+  }
+};
+
+template <>
+class CrackNormals<2> {
+ public:
+  /// The crack facets of the cohesive cells' − faces, their chords.
+  PetscErrorCode Setup(DM split, const std::vector<PetscInt>& cohesive) {
+    PetscFunctionBeginUser;
+    PetscCall(x_.Setup(split));
+    DMLabel crack, ids;
+    PetscCall(DMGetLabel(split, labels::crack, &crack));
+    PetscCall(DMGetLabel(split, labels::crack_face, &ids));
+    PetscCheck(crack && ids, PETSC_COMM_SELF, PETSC_ERR_PLIB, "crack split: no %s or %s label", labels::crack,
+               labels::crack_face);
+    std::vector<geometry::CrackFacet> facets;
+    for (PetscInt c : cohesive) {
+      const PetscInt *cone, *ends;
+      PetscCall(DMPlexGetCone(split, c, &cone));
+      PetscCall(DMPlexGetCone(split, cone[0], &ends));
+      PetscInt id, k;
+      PetscCall(DMLabelGetValue(ids, cone[0], &id));
+      PetscCall(DMLabelGetValue(crack, cone[0], &k));
+      facets_[cone[0]] = {id, static_cast<int>(k - 1), x_(ends[0]), x_(ends[1])};
+      facets.push_back(facets_[cone[0]]);
+    }
+    chords_ = geometry::CrackChords(facets);
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode At(DM, PetscInt face, geometry::Point<2>* centre, geometry::Point<2>* n) const {
+    const geometry::CrackFacet& f = facets_.at(face);
+    *centre = {0.5 * (f.p0[0] + f.p1[0]), 0.5 * (f.p0[1] + f.p1[1])};
+    *n = geometry::FrameFromTangent(geometry::TangentAlong(f, chords_.at(f.crack))).normal;
+    return 0;
+  }
+
+ private:
+  VertexPositions<2> x_;
+  std::map<PetscInt, geometry::CrackFacet> facets_;
+  std::map<int, geometry::CrackChord> chords_;
+};
+
+/// Labels crack_plus the face of each cohesive cell whose bulk neighbour lies along the
+/// crack normal, on the serial split mesh (both neighbours there): the side survives
+/// distribution, where a cohesive cell may lose both neighbours.
+template <int D>
 PetscErrorCode LabelPlusFaces(DM split) {
   PetscFunctionBeginUser;
   PetscCall(DMCreateLabel(split, labels::crack_plus));
-  VertexPositions<3> x;
-  PetscCall(x.Setup(split));
+  std::vector<PetscInt> cohesive;
   PetscInt cStart, cEnd;
   PetscCall(DMPlexGetHeightStratum(split, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool cohesive;
-    PetscCall(IsCohesiveCell(split, c, &cohesive));
-    if (!cohesive) continue;
-    const PetscInt *cone, *support;
+    bool is_cohesive;
+    PetscCall(IsCohesiveCell(split, c, &is_cohesive));
+    if (is_cohesive) cohesive.push_back(c);
+  }
+  CrackNormals<D> normals;
+  PetscCall(normals.Setup(split, cohesive));
+  VertexPositions<D> x;
+  PetscCall(x.Setup(split));
+  for (PetscInt c : cohesive) {
+    PetscInt face, bulk;
+    PetscCall(BulkNeighbour(split, c, &face, &bulk));
+    geometry::Point<D> centre{}, n{}, inside{};
+    PetscCall(normals.At(split, face, &centre, &n));
+    PetscCall(CellCentroid(split, x, bulk, &inside));
+    const bool along = geometry::Dot(geometry::Sub(inside, centre), n) > 0.0;
+    const PetscInt* cone;
     PetscCall(DMPlexGetCone(split, c, &cone));
-    PetscCall(DMPlexGetSupport(split, cone[0], &support));
-    PetscReal area, centre[3], normal[3];
-    PetscCall(DMPlexComputeCellGeometryFVM(split, cone[0], &area, centre, normal));
-    geometry::Vec3 bulk;
-    PetscCall(CellCentroid(split, x, support[0] == c ? support[1] : support[0], &bulk));
-    const geometry::Vec3 n = geometry::OrientedCrackNormal({normal[0], normal[1], normal[2]});
-    const bool along = geometry::Dot(geometry::Sub(bulk, {centre[0], centre[1], centre[2]}), n) > 0.0;
     PetscCall(DMSetLabelValue(split, labels::crack_plus, cone[along ? 0 : 1], 1));
   }
   PetscFunctionReturn(0);
@@ -153,13 +232,27 @@ PetscErrorCode SplitCracks(DM dm, DM* split) {
   PetscCall(DMPlexLabelCohesiveComplete(dm, cohesive, tips_or_dummy, 1, PETSC_FALSE, crack_mesh));
   PetscCall(DMPlexConstructCohesiveCells(dm, cohesive, nullptr, split));
   PetscCall(CheckCohesiveCount(*split, nfaces));
-  if (dim == 3) PetscCall(LabelPlusFaces(*split));
+  PetscCall(dim == 3 ? LabelPlusFaces<3>(*split) : LabelPlusFaces<2>(*split));
   PetscCall(PetscObjectSetName((PetscObject)*split, "specimen"));
 
   PetscCall(DMLabelDestroy(&cohesive));
   PetscCall(DMLabelDestroy(&tips_or_dummy));
   PetscCall(DMLabelDestroy(&fault));
   PetscCall(DMDestroy(&crack_mesh));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PlusSide(DM split, PetscInt cohesive, int* plus) {
+  PetscFunctionBeginUser;
+  DMLabel plus_faces;
+  PetscCall(DMGetLabel(split, labels::crack_plus, &plus_faces));
+  PetscCheck(plus_faces, PETSC_COMM_SELF, PETSC_ERR_PLIB, "crack: no %s label (SplitCracks sets it)",
+             labels::crack_plus);
+  const PetscInt* cone;
+  PetscCall(DMPlexGetCone(split, cohesive, &cone));
+  PetscInt value;
+  PetscCall(DMLabelGetValue(plus_faces, cone[0], &value));
+  *plus = value == 1 ? 0 : 1;
   PetscFunctionReturn(0);
 }
 

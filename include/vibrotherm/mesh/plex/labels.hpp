@@ -5,8 +5,10 @@
 //               crack along each crack; identifies a facet of the split (wave)
 //               mesh with the facet of the unsplit (heat) mesh
 //   crack_tip   vertices: 1 on crack ends inside the body (never duplicated)
-//   crack_plus  3D split mesh: 1 on the face of each cohesive cell on the + side (the
-//               bulk cell the oriented normal points into; geometry/frame.hpp)
+//   crack_plus  split mesh: 1 on the face of each cohesive cell on the + side (the
+//               bulk cell the crack normal points into: 3D the oriented normal,
+//               geometry/frame.hpp; 2D the tangent along the crack's chord turned
+//               by +90°, geometry/crack_chord.hpp)
 //   side        outer faces of a generated specimen: Side (0 bottom .. 3 left)
 //   sink        outer faces held at T0 by the heat solver: 1
 //   absorbing, free, roller, fixed, source: outer faces of that mechanical kind: 1
