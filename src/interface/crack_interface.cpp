@@ -8,6 +8,7 @@
 
 #include "vibrotherm/interface/contact_cells_3d.hpp"
 #include "vibrotherm/interface/contact_geometry.hpp"
+#include "vibrotherm/interface/contact_pairs.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -80,29 +81,21 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
   const ContactGeometry geometry(cracks.facets(), static_cast<int>(space.degree()));
   mesh::VertexCoordinates x;
   PetscCall(x.Setup(dm));
-  std::vector<bool> ghost;
-  PetscCall(mesh::GhostPoints(dm, &ghost));
-  PetscInt chart0;
-  PetscCall(DMPlexGetChart(dm, &chart0, nullptr));
-  std::map<PetscInt, ContactCell> by_point;  // one cell per tensor edge (vertex pair) or cohesive cell (mid-side pair)
-  for (const mesh::OwnedCrackFacet& owned : cracks.owned()) {  // cohesive cells (never ghosts)
-    const CrackFacetGeometry& f = cracks.facets()[owned.index];
-    const PetscInt* cone;
-    PetscCall(DMPlexGetCone(dm, owned.cell, &cone));
-    int plus;  // the split labelled the + face on the serial mesh, by the tangent along the crack
-    PetscCall(mesh::PlusSide(dm, owned.cell, &plus));
-    if (geometry.degree() == 2) {  // the two faces' edge nodes
+  std::map<PetscInt, const CrackFacetGeometry*> facet_of;  // cohesive cell → its facet
+  for (const mesh::OwnedCrackFacet& owned : cracks.owned()) facet_of[owned.cell] = &cracks.facets()[owned.index];
+  std::map<PetscInt, ContactCell> by_point;  // one cell per joining point (ForEachContactPair)
+  PetscCall(ForEachContactPair(dm, geometry.degree(), [&](PetscInt c, int plus, const ContactPair& pair) {
+    const CrackFacetGeometry& f = *facet_of.at(c);
+    const PetscInt p_plus = pair.side[plus], p_minus = pair.side[1 - plus];
+    if (pair.vertex) {
+      const Vec2 p = x(pair.side[0]);
+      by_point[pair.key] = MakeCell(p_plus, p_minus, f.crack, p, geometry.vertex(p));
+    } else {  // the facet's mid-side node (Q2)
       const Vec2 mid = {0.5 * (f.p0[0] + f.p1[0]), 0.5 * (f.p0[1] + f.p1[1])};
-      by_point[owned.cell] = MakeCell(cone[plus], cone[1 - plus], f.crack, mid, geometry.middle(f));
+      by_point[pair.key] = MakeCell(p_plus, p_minus, f.crack, mid, geometry.middle(f));
     }
-    for (int k = 2; k < 4; ++k) {
-      const PetscInt* pair;
-      PetscCall(DMPlexGetCone(dm, cone[k], &pair));
-      if (pair[0] == pair[1] || ghost[cone[k] - chart0]) continue;  // buried tip, or another rank's node
-      const Vec2 p = x(pair[0]);
-      by_point[cone[k]] = MakeCell(pair[plus], pair[1 - plus], f.crack, p, geometry.vertex(p));
-    }
-  }
+    return PetscErrorCode(0);
+  }));
   cells_.clear();
   for (auto& [point, cell] : by_point) {
     cell.xi = geometry.xi(static_cast<int>(cell.crack), {cell.x, cell.y});

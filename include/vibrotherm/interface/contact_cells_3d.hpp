@@ -1,6 +1,6 @@
 // The contact cells of a 3D split mesh (PHYSICS.md §3.5): one per split node pair
 // of the crack's faces — vertices, and with Q2 the edges' and faces' middle nodes —
-// owned by this rank. The crack front is not split (its pairs are one point): no
+// owned by this rank (the pairs: interface/contact_pairs, as in 2D). The crack front is not split (its pairs are one point): no
 // cell there, the faces are held together along it.
 //
 // Frame of a planar crack (geometry::CrackFrame), the 2D convention extended: n is
