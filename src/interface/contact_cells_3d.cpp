@@ -52,7 +52,7 @@ PetscErrorCode NodeWeights(const fe::LagrangeSpace& space, const std::vector<Pet
   PetscFunctionReturn(0);
 }
 
-/// The frame and crack of a cohesive cell (from its − face), for its contact cells.
+/// The frame and crack of a cohesive cell (from its first face, cone[0]), for its contact cells.
 PetscErrorCode CellFrame(DM dm, DMLabel crack_label, PetscInt c, ContactCell* frame) {
   PetscFunctionBeginUser;
   const PetscInt* cone;
@@ -75,13 +75,7 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   PetscFunctionBeginUser;
   DM dm = space.dm();
   std::vector<PetscInt> cohesive;
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool is_cohesive;
-    PetscCall(mesh::IsCohesiveCell(dm, c, &is_cohesive));
-    if (is_cohesive) cohesive.push_back(c);
-  }
+  PetscCall(mesh::CohesiveCells(dm, &cohesive));
   Vec weights;
   PetscCall(NodeWeights(space, cohesive, &weights));
   mesh::VertexPositions<3> x;
@@ -95,7 +89,7 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
   std::map<PetscInt, ContactCell> by_point;
   PetscInt framed = -1;  // the cohesive cell whose frame `frame` holds
   ContactCell frame{};
-  PetscCall(ForEachContactPair(dm, static_cast<int>(space.degree()), [&](PetscInt c, int plus, const ContactPair& pair) {
+  const auto add = [&](PetscInt c, int plus, const ContactPair& pair) -> PetscErrorCode {
     PetscFunctionBeginUser;
     if (c != framed) {
       PetscCall(CellFrame(dm, crack_label, c, &frame));
@@ -111,7 +105,8 @@ PetscErrorCode ContactCells3D(const fe::LagrangeSpace& space, std::vector<Contac
     cell.x = p[0], cell.y = p[1], cell.z = p[2];
     by_point[pair.key] = cell;
     PetscFunctionReturn(0);
-  }));
+  };
+  PetscCall(ForEachContactPair(dm, static_cast<int>(space.degree()), add));
   PetscCall(VecRestoreArrayRead(weights, &w));
   PetscCall(VecDestroy(&weights));
   cells->clear();

@@ -36,11 +36,14 @@ NodeGeometry ContactGeometry::vertex(const Vec2& p) const {
   return {node.weight, {node.sx / norm, node.sy / norm}};
 }
 
-NodeGeometry ContactGeometry::middle(const CrackFacetGeometry& f) const { return {4.0 / 6.0 * geometry::Measure(f), tangent(f)}; }
+NodeGeometry ContactGeometry::middle(const CrackFacetGeometry& f) const {
+  return {4.0 / 6.0 * geometry::Measure(f), tangent(f)};
+}
 
 double ContactGeometry::xi(int crack, const Vec2& p) const {
   const CrackFrame& fr = frames_.at(crack);
-  return std::clamp(0.5 + ((p[0] - fr.centre[0]) * fr.direction[0] + (p[1] - fr.centre[1]) * fr.direction[1]) / fr.length,
+  return std::clamp(0.5 + ((p[0] - fr.centre[0]) * fr.direction[0] + (p[1] - fr.centre[1]) * fr.direction[1]) /
+                              fr.length,
                     0.0, 1.0);
 }
 

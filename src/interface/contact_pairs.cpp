@@ -38,12 +38,9 @@ PetscErrorCode ForEachContactPair(DM dm, int degree, const ContactPairVisitor& v
   PetscCall(mesh::GhostPoints(dm, &walk.ghost));
   PetscCall(DMPlexGetChart(dm, &walk.chart0, nullptr));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &walk.vertex_start, &walk.vertex_end));
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool cohesive;
-    PetscCall(mesh::IsCohesiveCell(dm, c, &cohesive));
-    if (!cohesive) continue;
+  std::vector<PetscInt> cohesive;
+  PetscCall(mesh::CohesiveCells(dm, &cohesive));
+  for (PetscInt c : cohesive) {
     int plus;
     PetscCall(mesh::PlusSide(dm, c, &plus));
     PetscCall(walk.Pairs(c, plus, c));

@@ -3,13 +3,13 @@
 #include <petscdmplex.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
 #include "vibrotherm/interface/contact_cells_3d.hpp"
 #include "vibrotherm/interface/contact_geometry.hpp"
 #include "vibrotherm/interface/contact_pairs.hpp"
-#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
 
@@ -84,8 +84,12 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
   std::map<PetscInt, const CrackFacetGeometry*> facet_of;  // cohesive cell → its facet
   for (const mesh::OwnedCrackFacet& owned : cracks.owned()) facet_of[owned.cell] = &cracks.facets()[owned.index];
   std::map<PetscInt, ContactCell> by_point;  // one cell per joining point (ForEachContactPair)
-  PetscCall(ForEachContactPair(dm, geometry.degree(), [&](PetscInt c, int plus, const ContactPair& pair) {
-    const CrackFacetGeometry& f = *facet_of.at(c);
+  const auto add = [&](PetscInt c, int plus, const ContactPair& pair) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    const auto found = facet_of.find(c);
+    PetscCheck(found != facet_of.end(), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "cohesive cell %" PetscInt_FMT " is not in the crack surface", c);
+    const CrackFacetGeometry& f = *found->second;
     const PetscInt p_plus = pair.side[plus], p_minus = pair.side[1 - plus];
     if (pair.vertex) {
       const Vec2 p = x(pair.side[0]);
@@ -94,8 +98,9 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
       const Vec2 mid = {0.5 * (f.p0[0] + f.p1[0]), 0.5 * (f.p0[1] + f.p1[1])};
       by_point[pair.key] = MakeCell(p_plus, p_minus, f.crack, mid, geometry.middle(f));
     }
-    return PetscErrorCode(0);
-  }));
+    PetscFunctionReturn(0);
+  };
+  PetscCall(ForEachContactPair(dm, geometry.degree(), add));
   cells_.clear();
   for (auto& [point, cell] : by_point) {
     cell.xi = geometry.xi(static_cast<int>(cell.crack), {cell.x, cell.y});

@@ -13,16 +13,10 @@ namespace {
 
 constexpr std::size_t kPacked = 6;  // id, crack, x0, y0, x1, y1
 
-/// This rank's cohesive cells (a split mesh has them on some rank). Collective.
-PetscErrorCode CohesiveCells(DM dm, std::vector<PetscInt>* cells, bool* split) {
+/// This rank's cohesive cells, and whether the mesh is split (has them on some rank). Collective.
+PetscErrorCode CohesiveCellsIfSplit(DM dm, std::vector<PetscInt>* cells, bool* split) {
   PetscFunctionBeginUser;
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool cohesive;
-    PetscCall(IsCohesiveCell(dm, c, &cohesive));
-    if (cohesive) cells->push_back(c);
-  }
+  PetscCall(mesh::CohesiveCells(dm, cells));
   int any = !cells->empty();
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, PetscObjectComm((PetscObject)dm)));
   *split = any;
@@ -55,7 +49,7 @@ PetscErrorCode CrackSurface::CollectOwned(DM dm, std::vector<double>* packed) {
   PetscCall(DMGetLabel(dm, labels::crack_face, &ids));
   std::vector<PetscInt> points;
   bool split = false;
-  PetscCall(CohesiveCells(dm, &points, &split));
+  PetscCall(CohesiveCellsIfSplit(dm, &points, &split));
   if (!split) PetscCall(LabelledFacets(dm, crack_label, ids, &points));
   VertexCoordinates x;
   PetscCall(x.Setup(dm));

@@ -1,7 +1,8 @@
 // The contact cells of a 3D split mesh (PHYSICS.md §3.5): one per split node pair
 // of the crack's faces — vertices, and with Q2 the edges' and faces' middle nodes —
-// owned by this rank (the pairs: interface/contact_pairs, as in 2D). The crack front is not split (its pairs are one point): no
-// cell there, the faces are held together along it.
+// owned by this rank (the pairs: interface/contact_pairs, as in 2D). The crack front
+// is not split (its pairs are one point): no cell there, the faces are held together
+// along it.
 //
 // Frame of a planar crack (geometry::CrackFrame), the 2D convention extended: n is
 // oriented with n_y > 0 (n_x < 0 for a vertical crack, n_z > 0 for one parallel to the

@@ -3,13 +3,13 @@
 // DMPlexLabelCohesiveComplete completes it, DMPlexConstructCohesiveCells splits.
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 
-#include "vibrotherm/mesh/plex/labels.hpp"
-#include "vibrotherm/geometry/crack_chord.hpp"
-#include "vibrotherm/geometry/frame.hpp"
-#include "vibrotherm/mesh/plex/plex_access.hpp"
-
 #include <map>
 #include <vector>
+
+#include "vibrotherm/geometry/crack_chord.hpp"
+#include "vibrotherm/geometry/frame.hpp"
+#include "vibrotherm/mesh/plex/labels.hpp"
+#include "vibrotherm/mesh/plex/plex_access.hpp"
 
 namespace vibrotherm::mesh {
 namespace {
@@ -52,31 +52,31 @@ PetscErrorCode LabelCrackFront(DM dm, DMLabel fault, DMLabel front) {
 /// 3.18 front defect fails silently (DMPlexCheck* pass).
 PetscErrorCode CheckCohesiveCount(DM split, PetscInt crack_faces) {
   PetscFunctionBeginUser;
-  PetscInt cStart, cEnd, cohesive = 0;
-  PetscCall(DMPlexGetHeightStratum(split, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool is_cohesive;
-    PetscCall(IsCohesiveCell(split, c, &is_cohesive));
-    cohesive += is_cohesive;
-  }
+  std::vector<PetscInt> cells;
+  PetscCall(CohesiveCells(split, &cells));
+  const PetscInt cohesive = static_cast<PetscInt>(cells.size());
   PetscCheck(cohesive == crack_faces, PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "crack split: %" PetscInt_FMT " cohesive cells for %" PetscInt_FMT " crack faces (the crack grew)",
              cohesive, crack_faces);
   PetscFunctionReturn(0);
 }
 
-/// The bulk neighbour of a cohesive cell's − face (cone[0]) on the serial split mesh.
+/// The bulk neighbour of a cohesive cell's first face (cone[0], either side) on the serial split mesh.
 PetscErrorCode BulkNeighbour(DM split, PetscInt cohesive, PetscInt* face, PetscInt* bulk) {
   PetscFunctionBeginUser;
   const PetscInt *cone, *support;
+  PetscInt size;
   PetscCall(DMPlexGetCone(split, cohesive, &cone));
+  PetscCall(DMPlexGetSupportSize(split, cone[0], &size));
   PetscCall(DMPlexGetSupport(split, cone[0], &support));
+  PetscCheck(size == 2, PETSC_COMM_SELF, PETSC_ERR_PLIB, "crack split: a crack face with %" PetscInt_FMT
+             " cells around it (a bulk cell and its cohesive cell expected)", size);
   *face = cone[0];
   *bulk = support[0] == cohesive ? support[1] : support[0];
   PetscFunctionReturn(0);
 }
 
-/// Where each cohesive cell's − face is and the crack normal there, by the dimension's
+/// Where each cohesive cell's first face is and the crack normal there, by the dimension's
 /// convention: 3D the oriented normal of the face (geometry/frame.hpp), 2D the facet's
 /// tangent along its crack's chord turned by +90° (geometry/crack_chord.hpp).
 template <int D>
@@ -85,7 +85,7 @@ class CrackNormals;
 template <>
 class CrackNormals<3> {
  public:
-  PetscErrorCode Setup(DM, const std::vector<PetscInt>&) { return 0; }
+  PetscErrorCode Setup(DM, const VertexPositions<3>&, const std::vector<PetscInt>&) { return 0; }
   PetscErrorCode At(DM split, PetscInt face, geometry::Point<3>* centre, geometry::Point<3>* n) const {
     PetscFunctionBeginUser;
     PetscReal area, c[3], normal[3];
@@ -99,10 +99,10 @@ class CrackNormals<3> {
 template <>
 class CrackNormals<2> {
  public:
-  /// The crack facets of the cohesive cells' − faces, their chords.
-  PetscErrorCode Setup(DM split, const std::vector<PetscInt>& cohesive) {
+  /// The crack facets of the cohesive cells' first faces, and their cracks' chords (from every
+  /// facet of each crack: the mesh is serial, so all are here).
+  PetscErrorCode Setup(DM split, const VertexPositions<2>& x, const std::vector<PetscInt>& cohesive) {
     PetscFunctionBeginUser;
-    PetscCall(x_.Setup(split));
     DMLabel crack, ids;
     PetscCall(DMGetLabel(split, labels::crack, &crack));
     PetscCall(DMGetLabel(split, labels::crack_face, &ids));
@@ -116,7 +116,9 @@ class CrackNormals<2> {
       PetscInt id, k;
       PetscCall(DMLabelGetValue(ids, cone[0], &id));
       PetscCall(DMLabelGetValue(crack, cone[0], &k));
-      facets_[cone[0]] = {id, static_cast<int>(k - 1), x_(ends[0]), x_(ends[1])};
+      PetscCheck(id >= 0 && k >= 1, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "crack split: a crack face without its %s id or %s number", labels::crack_face, labels::crack);
+      facets_[cone[0]] = {id, static_cast<int>(k - 1), x(ends[0]), x(ends[1])};
       facets.push_back(facets_[cone[0]]);
     }
     chords_ = geometry::CrackChords(facets);
@@ -130,7 +132,6 @@ class CrackNormals<2> {
   }
 
  private:
-  VertexPositions<2> x_;
   std::map<PetscInt, geometry::CrackFacet> facets_;
   std::map<int, geometry::CrackChord> chords_;
 };
@@ -141,19 +142,16 @@ class CrackNormals<2> {
 template <int D>
 PetscErrorCode LabelPlusFaces(DM split) {
   PetscFunctionBeginUser;
+  PetscBool distributed;
+  PetscCall(DMPlexIsDistributed(split, &distributed));
+  PetscCheck(!distributed, PETSC_COMM_SELF, PETSC_ERR_PLIB, "crack split: the + faces are labelled on a serial mesh");
   PetscCall(DMCreateLabel(split, labels::crack_plus));
   std::vector<PetscInt> cohesive;
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(split, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; ++c) {
-    bool is_cohesive;
-    PetscCall(IsCohesiveCell(split, c, &is_cohesive));
-    if (is_cohesive) cohesive.push_back(c);
-  }
-  CrackNormals<D> normals;
-  PetscCall(normals.Setup(split, cohesive));
+  PetscCall(CohesiveCells(split, &cohesive));
   VertexPositions<D> x;
   PetscCall(x.Setup(split));
+  CrackNormals<D> normals;
+  PetscCall(normals.Setup(split, x, cohesive));
   for (PetscInt c : cohesive) {
     PetscInt face, bulk;
     PetscCall(BulkNeighbour(split, c, &face, &bulk));
@@ -250,9 +248,13 @@ PetscErrorCode PlusSide(DM split, PetscInt cohesive, int* plus) {
              labels::crack_plus);
   const PetscInt* cone;
   PetscCall(DMPlexGetCone(split, cohesive, &cone));
-  PetscInt value;
-  PetscCall(DMLabelGetValue(plus_faces, cone[0], &value));
-  *plus = value == 1 ? 0 : 1;
+  PetscInt first, second;
+  PetscCall(DMLabelGetValue(plus_faces, cone[0], &first));
+  PetscCall(DMLabelGetValue(plus_faces, cone[1], &second));
+  PetscCheck((first == 1) != (second == 1), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "crack: cohesive cell %" PetscInt_FMT " has %s of its faces labelled %s", cohesive,
+             first == 1 ? "both" : "neither", labels::crack_plus);
+  *plus = first == 1 ? 0 : 1;
   PetscFunctionReturn(0);
 }
 

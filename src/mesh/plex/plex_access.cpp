@@ -120,6 +120,19 @@ PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CohesiveCells(DM dm, std::vector<PetscInt>* cells) {
+  PetscFunctionBeginUser;
+  cells->clear();
+  PetscInt cStart, cEnd;
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    bool cohesive;
+    PetscCall(IsCohesiveCell(dm, c, &cohesive));
+    if (cohesive) cells->push_back(c);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode StratumPoints(DM dm, const char* label, PetscInt value, std::vector<PetscInt>* points) {
   PetscFunctionBeginUser;
   points->clear();

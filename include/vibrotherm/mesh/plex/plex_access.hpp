@@ -56,4 +56,7 @@ PetscErrorCode IsFacet(DM dm, PetscInt p, bool* facet);
 /// Whether cell c is a cohesive (crack) cell.
 PetscErrorCode IsCohesiveCell(DM dm, PetscInt c, bool* cohesive);
 
+/// This rank's cohesive cells, in point order.
+PetscErrorCode CohesiveCells(DM dm, std::vector<PetscInt>* cells);
+
 }  // namespace vibrotherm::mesh
