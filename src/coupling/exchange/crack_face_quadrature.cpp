@@ -156,16 +156,13 @@ PetscErrorCode BuildCrackFaceQuadrature(const interface::CrackInterface& crack, 
   PetscCall(x.Setup(dm));
   const PetscScalar* idx;
   PetscCall(VecGetArrayRead(index, &idx));
-  PetscInt cStart, cEnd;
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  std::vector<PetscInt> cohesive;
+  PetscCall(mesh::CohesiveCells(dm, &cohesive));
   *points = SurfacePoints{};
   std::vector<std::array<double, 3>> entries;
   std::vector<PetscInt> corners;
   std::vector<FaceNode> nodes;
-  for (PetscInt c = cStart; c < cEnd; ++c) {  // overlap 0: every local cell is owned
-    bool cohesive;
-    PetscCall(mesh::IsCohesiveCell(dm, c, &cohesive));
-    if (!cohesive) continue;
+  for (PetscInt c : cohesive) {  // overlap 0: every local cell is owned
     const PetscInt* cone;
     PetscCall(DMPlexGetCone(dm, c, &cone));
     int plus;
