@@ -272,10 +272,11 @@ PetscErrorCode NoteIgnoredGeometry(MPI_Comm comm, const std::string& file) {
 const std::vector<OptionSpec<MeshSource>>& MeshSourceOptionSpecs() {
   using M = MeshSource;
   static const std::vector<OptionSpec<M>> specs = {
-      TextOption("-mesh_file", &M::file, "gmsh .msh file (physical curves, 3D: surfaces of hexahedra: source, absorbing, "
-                 "free, roller, fixed, sink, crack*); default: generate from -specimen_* and -crack_*"),
-      TextOption("-heat_mesh_file", &M::heat_file, "gmsh .msh file of the heat mesh for a -mesh_file scene (same "
-                 "physical curve names; default: the unsplit -mesh_file mesh)"),
+      TextOption("-mesh_file", &M::file, "gmsh .msh file, or a .geo script that vibrotherm meshes into the output "
+                 "directory (physical curves, 3D: surfaces of hexahedra: source, absorbing, free, roller, fixed, sink, "
+                 "crack*); default: generate from -specimen_* and -crack_*"),
+      TextOption("-heat_mesh_file", &M::heat_file, "gmsh .msh file (or .geo script) of the heat mesh for a -mesh_file "
+                 "scene (same physical curve names; default: the unsplit -mesh_file mesh)"),
       // Declared with a range: PetscOptionsBoundedInt's own error is a PETSc trace that does not name the option.
       IntOption("-dm_refine", &M::refinements, contact::Range::at_least(0.0),
                 "Uniform refinements of the wave mesh before splitting"),

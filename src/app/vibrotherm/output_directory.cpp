@@ -92,11 +92,13 @@ PetscErrorCode CheckOutputDirectory(MPI_Comm comm, const std::string& dir, bool 
 
 OutputDirectory::~OutputDirectory() {
   lock_.Release();
+  PetscMPIInt rank = 0;
+  if (comm_ != MPI_COMM_NULL) MPI_Comm_rank(comm_, &rank);
+  std::error_code ec;
+  if (rank == 0 && !written_)
+    for (const std::string& file : setup_files_) std::filesystem::remove(file, ec);
   if (!created_) return;
   stop_signals::SetCreatedDirectory("");
-  PetscMPIInt rank = 0;
-  MPI_Comm_rank(comm_, &rank);
-  std::error_code ec;
   if (rank == 0 && !written_) std::filesystem::remove(dir_, ec);  // only when empty
 }
 

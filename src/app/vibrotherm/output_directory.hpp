@@ -10,6 +10,7 @@
 #include <petscsys.h>
 
 #include <string>
+#include <vector>
 
 #include "vibrotherm/io/output_lock.hpp"
 
@@ -39,6 +40,9 @@ class OutputDirectory {
   /// interrupted run's log vibrotherm.before-restart.log. The directory is the run's
   /// from now on. Collective.
   PetscErrorCode Prepare(MPI_Comm comm, bool restart);
+  /// A file the setup wrote into the directory (the mesh gmsh made of a .geo): removed again
+  /// when the run stops before Prepare, so that refused input leaves nothing behind.
+  void AddSetupFile(const std::string& path) { setup_files_.push_back(path); }
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -46,6 +50,7 @@ class OutputDirectory {
   bool created_ = false;  ///< by this run
   bool written_ = false;  ///< Prepare()d: the run writes into it
   io::OutputLock lock_;
+  std::vector<std::string> setup_files_;
 };
 
 /// A complete run needs no checkpoint: removed, so that no -restart repeats its end.

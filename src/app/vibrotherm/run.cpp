@@ -10,6 +10,7 @@
 #include "vibrotherm/io/mesh_output.hpp"
 #include "vibrotherm/io/run_log.hpp"
 #include "vibrotherm/io/run_summary.hpp"
+#include "vibrotherm/mesh/geometry_script.hpp"
 #include "vibrotherm/mesh/mesh_summary.hpp"
 #include "vibrotherm/mesh/plex/metis_partitioner.hpp"
 #include "vibrotherm/mesh/specimen.hpp"
@@ -156,14 +157,15 @@ PetscErrorCode CheckBeforeMeshing(MPI_Comm comm, const AppOptions& app, const co
 
 /// Builds what the options describe (all input checked, nothing written); restarting:
 /// the state will come from the checkpoint.
-PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene, mesh::Specimen* specimen,
+PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene& scene,
+                     const mesh::SpecimenOptions& specimen_options, mesh::Specimen* specimen,
                      coupling::Simulation* simulation, modes::ModesRun* modes_run, io::RunSummary* summary) {
   PetscFunctionBeginUser;
   PetscCall(mesh::CheckSpecimenMemory(comm, scene.specimen, scene.wave.degree, scene.exchange_length()));
   const double t = MPI_Wtime();
   const mesh::LtsWeighting lts{scene.wave.lts.on, scene.wave.lts.max_levels, scene.wave.lts.wiggle};
   stop_signals::EnterSetup("meshing");
-  PetscCall(mesh::SpecimenCreate(comm, scene.specimen, scene.exchange_length(), specimen, lts));
+  PetscCall(mesh::SpecimenCreate(comm, specimen_options, scene.exchange_length(), specimen, lts));
   summary->stages["mesh"] = MPI_Wtime() - t;
   PetscCall(mesh::ComputeMeshSummary(*specimen, &summary->mesh));
   PetscCall(mesh::PrintMeshSummary(comm, summary->mesh));
@@ -223,7 +225,12 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
-  PetscCall(Build(comm, app, scene, &specimen, &simulation, &modes_run, &summary));
+  // A .geo becomes the mesh gmsh makes of it, in the output directory (gone again if the run stops in its setup).
+  mesh::SpecimenOptions specimen_options = scene.specimen;
+  std::vector<std::string> meshed;
+  PetscCall(mesh::MeshGeometryScripts(comm, dir, &specimen_options.source, &meshed));
+  for (const std::string& file : meshed) output.AddSetupFile(file);
+  PetscCall(Build(comm, app, scene, specimen_options, &specimen, &simulation, &modes_run, &summary));
   // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, registry.names(), app.allow_unknown));

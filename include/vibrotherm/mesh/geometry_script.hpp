@@ -1,0 +1,31 @@
+// A gmsh geometry script (.geo) given as -mesh_file or -heat_mesh_file: vibrotherm meshes it
+// itself (gmsh's library, rank 0, in the script's own dimension and with its own mesh
+// settings) into a .msh in the output directory, which the run then reads as any mesh
+// file. A user needs no gmsh program, and the mesh used stays beside the results.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+#include "vibrotherm/mesh/specimen_options.hpp"
+
+namespace vibrotherm::mesh {
+
+/// Whether path names a gmsh geometry script (ends in .geo).
+bool IsGeometryScript(const std::string& path);
+
+/// Meshes the script `geo` into the .msh file `msh` (written whole as <stem>.partial.msh, then renamed;
+/// MSH 2.2). A script gmsh cannot read or mesh, or one whose mesh is empty, is refused naming
+/// `option` and the file. Rank 0's work; collective.
+PetscErrorCode MeshGeometryScript(MPI_Comm comm, const std::string& geo, const std::string& option,
+                                  const std::string& msh);
+
+/// The mesh source with each .geo (-mesh_file, -heat_mesh_file) replaced by its mesh, written
+/// into `directory` as mesh_file.msh and heat_mesh_file.msh (their paths added to *written).
+/// Collective.
+PetscErrorCode MeshGeometryScripts(MPI_Comm comm, const std::string& directory, MeshSource* source,
+                                   std::vector<std::string>* written);
+
+}  // namespace vibrotherm::mesh
