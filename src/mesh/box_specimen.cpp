@@ -7,7 +7,6 @@
 #include <string>
 
 #include "vibrotherm/mesh/box_mesher.hpp"
-#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/util/errors.hpp"
 
 namespace vibrotherm::mesh {
@@ -113,7 +112,7 @@ BoxGridSizes BoxHeatGridSizes(const SpecimenGeometry& geometry, const HeatMeshSi
 }
 
 PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& heat_sizes,
-                                 Specimen* s) {
+                                 DM* serial, Specimen* s) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   std::unique_ptr<BoxGrid> grid;
@@ -129,9 +128,8 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
     PetscCall(PetscPrintf(comm, "vibrotherm: note: the patch's edge at %c = %g m stays on the grid line at %g m "
                           "(a fixed line within a third of a cell; summary.json mesh.source_area has the area)\n",
                           "xyz"[snap.axis], snap.bound, snap.line));
-  DM serial;
   PetscInt crack_faces;
-  PetscCall(CreateBoxPlex(comm, geometry, *grid, &serial, &crack_faces));
+  PetscCall(CreateBoxPlex(comm, geometry, *grid, serial, &crack_faces));
   PetscCall(PrintCracks(comm, geometry, *grid, crack_faces));
   for (int k = 0; k < grid->crack_count(); ++k) {
     std::vector<std::string> breaks;
@@ -139,10 +137,6 @@ PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry
     s->cracks.push_back(CrackInfo{"crack" + std::to_string(k + 1), geometry.cracks[k].length, breaks});
   }
   s->source = "generated";
-  // SplitCracks puts the front (edges with one crack face, their vertices) in the
-  // boundary label and checks one cohesive cell per crack face.
-  PetscCall(SplitCracks(serial, &s->wave));
-  PetscCall(DMDestroy(&serial));
   if (heat_sizes.graded && heat_sizes.h_along > geometry.h_crack * (1.0 + 1e-9) && !geometry.cracks.empty())
     PetscCall(PetscPrintf(comm, "vibrotherm: note: -heat_mesh_h_along %g m is coarser than -mesh_h_crack %g m: the 3D "
                           "heat grid's crack cells are the wave grid's (they nest in them)\n", heat_sizes.h_along,

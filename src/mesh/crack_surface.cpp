@@ -74,6 +74,10 @@ PetscErrorCode CrackSurface::CollectOwned(DM dm, std::vector<double>* packed) {
 
 PetscErrorCode CrackSurface::Setup(DM dm, PetscInt ncracks) {
   PetscFunctionBeginUser;
+  facets_.clear(), owned_.clear(), lines_.clear();
+  PetscInt dim;
+  PetscCall(DMGetDimension(dm, &dim));
+  if (dim != 2) PetscFunctionReturn(0);  // crack lines only: a 3D crack's faces are read from its labels
   std::vector<double> mine, all;
   PetscCall(CollectOwned(dm, &mine));
   PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, &all));

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "gmsh_support.hpp"
-#include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/labels.hpp"
 #include "vibrotherm/mesh/plex/plex_access.hpp"
 #include "vibrotherm/util/errors.hpp"
@@ -165,22 +164,18 @@ PetscErrorCode MeshFileDimension(MPI_Comm comm, const std::string& path, int* di
 }
 
 PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, const std::string& heat_file,
-                                        Specimen* s) {
+                                        DM* serial, Specimen* s) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
-  DM serial;
   std::vector<std::string> cracks, heat_cracks;
-  PetscCall(ReadLabelledPlex(comm, file, "-mesh_file", &serial, &cracks));
+  PetscCall(ReadLabelledPlex(comm, file, "-mesh_file", serial, &cracks));
   PetscCall(PetscPrintf(comm, "Meshing: read %s (hexahedra, %zu crack%s)\n", file.c_str(), cracks.size(),
                         cracks.size() == 1 ? "" : "s"));
   for (const std::string& name : cracks) s->cracks.push_back(CrackInfo{name, 0.0, std::nullopt});
   s->source = file;
-  PetscCall(SplitCracks(serial, &s->wave));  // the front labelled; one cohesive cell per crack face, checked
   if (heat_file.empty()) {
-    s->heat = serial;  // unsplit: temperature is continuous across the cracks
-    s->heat_source = "wave";
+    s->heat_source = "wave";  // SpecimenCreate gives the heat the wave mesh unsplit
   } else {
-    PetscCall(DMDestroy(&serial));
     PetscCall(ReadLabelledPlex(comm, heat_file, "-heat_mesh_file", &s->heat, &heat_cracks));
     PetscCheck(heat_cracks == cracks, comm, PETSC_ERR_USER_INPUT,
                "-heat_mesh_file %s: its crack surfaces differ from -mesh_file %s's", heat_file.c_str(), file.c_str());

@@ -155,6 +155,49 @@ PetscErrorCode BuildHeatMesh(MPI_Comm comm, const MeshSource& source, const Mesh
   PetscFunctionReturn(0);
 }
 
+/// The 2D source: a generated rectangle (gmsh) or a 2D -mesh_file, as MeshData → the serial
+/// wave DMPlex (refined by -dm_refine, labelled) in *serial; its heat mesh in s->heat when it has
+/// its own (graded, or -heat_mesh_file).
+PetscErrorCode CreatePlanarSpecimen(MPI_Comm comm, const SpecimenOptions& options, double exchange_length,
+                                    const MeshLog& log, DM* serial, Specimen* s) {
+  PetscFunctionBeginUser;
+  const MeshSource& source = options.source;
+  SpecimenGeometry geometry = source.from_file ? SpecimenGeometry{} : options.geometry;  // a file: read from it
+  MeshData data;
+  bool generate_heat = !source.from_file;
+  PetscCall(AnnounceMeshing(comm, source, geometry));
+  const double t0 = MPI_Wtime();
+  std::string ungraded;  // why a mesh file's heat mesh cannot be generated (rank 0)
+  PetscCall(RunOnRoot(comm, [&] {
+    const std::string where = source.from_file ? std::string("-mesh_file ") + source.file : "generated mesh";
+    data = source.from_file ? read_mesh_file(source.file) : generate_specimen_mesh(geometry);
+    for (const std::string& note : data.notes)  // rank 0 only: RunOnRoot
+      (void)PetscPrintf(PETSC_COMM_SELF, "vibrotherm: note: -mesh_crack_mirror: %s: its mesh is not mirror-symmetric across it\n", note.c_str());
+    check_crack_lines(data, where);
+    check_cracks_apart(data, where);
+    if (source.from_file) generate_heat = rectangle_geometry(data, &geometry, &ungraded);
+  }));
+  if (source.from_file) PetscCall(ShareGeometry(comm, &generate_heat, &geometry));
+  HeatMeshSizes heat_sizes;
+  if (generate_heat) heat_sizes = HeatMeshSizesFor(options.heat, geometry, exchange_length);
+  if (generate_heat && heat_sizes.graded) VibrothermCallCpp(comm, heat_sizes.validate());
+  PetscCall(ShareCrackNames(comm, data, geometry, source.from_file, &s->cracks));
+  if (!generate_heat && !source.heat_from_file && !s->cracks.empty())
+    PetscCall(WarnUngradedHeatMesh(comm, source.file, options.heat, ungraded, exchange_length));
+  s->source = source.from_file ? source.file : "generated";
+  std::vector<std::string> names;
+  for (const CrackInfo& c : s->cracks) names.push_back(c.name);
+
+  PetscCall(PetscLogEventBegin(log.heat_generate, 0, 0, 0, 0));
+  PetscCall(BuildHeatMesh(comm, source, data, geometry, generate_heat, heat_sizes, names, &s->heat, &s->heat_source));
+  PetscCall(PetscLogEventEnd(log.heat_generate, 0, 0, 0, 0));
+  PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
+  PetscCall(PetscLogEventBegin(log.build, 0, 0, 0, 0));
+  PetscCall(BuildSerialPlex(comm, data, names, source.refinements, serial));
+  PetscCall(PetscLogEventEnd(log.build, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 /// Every specimen's tail, 2D or 3D: the wave mesh (split serially, LTS-weighted) and the
 /// heat mesh, each distributed by its own partition.
 PetscErrorCode DistributeSpecimen(const MeshLog& log, const LtsWeighting& lts, Specimen* s) {
@@ -176,66 +219,27 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, const SpecimenOptions& options, dou
   PetscCall(RegisterMeshLogging(&log));
   PetscCall(RegisterMetisPartitioner());
   PetscCall(PetscLogStagePush(log.stage));
+  // One source makes the serial wave mesh, unsplit, and its heat mesh (none: the wave mesh unsplit).
   const MeshSource& source = options.source;
-  SpecimenGeometry geometry = source.from_file ? SpecimenGeometry{} : options.geometry;  // a file: read from it
   int file_dimension = 0;
   if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
-  if (file_dimension == 3 || geometry.depth > 0.0) {
-    if (file_dimension == 3)
-      PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", s));
-    else
-      PetscCall(CreateBoxSpecimen(comm, geometry, HeatMeshSizesFor(options.heat, geometry, exchange_length), s));
-    PetscCall(DistributeSpecimen(log, lts, s));
-    PetscCall(PetscLogStagePop());
-    PetscFunctionReturn(0);
-  }
-  MeshData data;
-  bool generate_heat = !source.from_file;
-  PetscCall(AnnounceMeshing(comm, source, geometry));
-  const double t0 = MPI_Wtime();
+  DM serial;
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
-  std::string ungraded;  // why a mesh file's heat mesh cannot be generated (rank 0)
-  PetscCall(RunOnRoot(comm, [&] {
-    const std::string where = source.from_file ? std::string("-mesh_file ") + source.file : "generated mesh";
-    data = source.from_file ? read_mesh_file(source.file) : generate_specimen_mesh(geometry);
-    for (const std::string& note : data.notes)  // rank 0 only: RunOnRoot
-      (void)PetscPrintf(PETSC_COMM_SELF, "vibrotherm: note: -mesh_crack_mirror: %s: its mesh is not mirror-symmetric across it\n", note.c_str());
-    check_crack_lines(data, where);
-    check_cracks_apart(data, where);
-    if (source.from_file) generate_heat = rectangle_geometry(data, &geometry, &ungraded);
-  }));
+  if (file_dimension == 3)
+    PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", &serial, s));
+  else if (!source.from_file && options.geometry.depth > 0.0)
+    PetscCall(CreateBoxSpecimen(comm, options.geometry, HeatMeshSizesFor(options.heat, options.geometry, exchange_length),
+                                &serial, s));
+  else
+    PetscCall(CreatePlanarSpecimen(comm, options, exchange_length, log, &serial, s));
   PetscCall(PetscLogEventEnd(log.generate, 0, 0, 0, 0));
-  if (source.from_file) PetscCall(ShareGeometry(comm, &generate_heat, &geometry));
-  HeatMeshSizes heat_sizes;
-  if (generate_heat) heat_sizes = HeatMeshSizesFor(options.heat, geometry, exchange_length);
-  if (generate_heat && heat_sizes.graded) VibrothermCallCpp(comm, heat_sizes.validate());
-  PetscCall(ShareCrackNames(comm, data, geometry, source.from_file, &s->cracks));
-  if (!generate_heat && !source.heat_from_file && !s->cracks.empty())
-    PetscCall(WarnUngradedHeatMesh(comm, source.file, options.heat, ungraded, exchange_length));
-  s->source = source.from_file ? source.file : "generated";
-  std::vector<std::string> names;
-  for (const CrackInfo& c : s->cracks) names.push_back(c.name);
-
-  DM serial, heat;
-  PetscCall(PetscLogEventBegin(log.heat_generate, 0, 0, 0, 0));
-  PetscCall(BuildHeatMesh(comm, source, data, geometry, generate_heat, heat_sizes, names, &heat, &s->heat_source));
-  PetscCall(PetscLogEventEnd(log.heat_generate, 0, 0, 0, 0));
-  PetscCall(PetscPrintf(comm, "Meshing: %.2f s\n", MPI_Wtime() - t0));
-  PetscCall(PetscLogEventBegin(log.build, 0, 0, 0, 0));
-  PetscCall(BuildSerialPlex(comm, data, names, source.refinements, &serial));
-  data = MeshData{};  // free the arrays
-  PetscCall(PetscLogEventEnd(log.build, 0, 0, 0, 0));
-
+  // Then one path for every specimen: split serially (the other order is broken in PETSc 3.18;
+  // SplitCracks labels the front and checks one cohesive cell per crack face), distribute.
   PetscCall(PetscLogEventBegin(log.split, 0, 0, 0, 0));
-  DM split;
-  PetscCall(SplitCracks(serial, &split));
+  PetscCall(SplitCracks(serial, &s->wave));
   PetscCall(PetscLogEventEnd(log.split, 0, 0, 0, 0));
-
-  // Split serially, then distribute: the other order is broken in PETSc 3.18.
-  // The heat mesh is partitioned on its own.
-  s->wave = split;
-  if (heat) PetscCall(DMDestroy(&serial));
-  s->heat = heat ? heat : serial;
+  if (s->heat) PetscCall(DMDestroy(&serial));
+  else s->heat = serial;  // unsplit: temperature is continuous across the cracks
   PetscCall(DistributeSpecimen(log, lts, s));
   const PetscInt ncracks = static_cast<PetscInt>(s->cracks.size());
   PetscCall(s->wave_cracks.Setup(s->wave, ncracks));

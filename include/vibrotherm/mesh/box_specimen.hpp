@@ -1,7 +1,6 @@
-// A 3D box specimen (-specimen_depth > 0): the graded hexahedral grid with its
-// buried crack (box_grid.hpp, box_mesher.hpp), split serially with the crack front
-// in the boundary label (one cohesive cell per crack face, checked); serial here,
-// SpecimenCreate distributes it.
+// A 3D box specimen (-specimen_depth > 0), one of SpecimenCreate's sources: the graded
+// hexahedral grid with its cracks (box_grid.hpp, box_mesher.hpp), serial and unsplit here;
+// SpecimenCreate splits and distributes it as every specimen.
 // The heat mesh is the box again, unsplit, on a grid with layers across the crack
 // plane (box_specimen.cpp). No crack surface gathers (wave_cracks, heat_cracks
 // empty: they are 2D; the friction heat finds the crack from the contact cells).
@@ -29,9 +28,10 @@ int CrackFaceSubdivisions(const std::array<int, 2>& wave_cells, const std::array
 /// multiple of 1/m of its wave cell (exact), else 16 (exact false).
 int CrackFaceSubdivisions(const BoxGrid& wave, const BoxGrid& heat, bool* exact);
 
-/// geometry: checked by ReadSpecimenOptions (depth > 0); heat_sizes: the heat grid's
-/// (HeatMeshSizesFor). Collective.
+/// The serial box, unsplit, in *serial; its heat grid in specimen->heat, its cracks, source and
+/// crack-face subdivisions. geometry: checked by ReadSpecimenOptions (depth > 0); heat_sizes: the
+/// heat grid's (HeatMeshSizesFor). Collective.
 PetscErrorCode CreateBoxSpecimen(MPI_Comm comm, const SpecimenGeometry& geometry, const HeatMeshSizes& heat_sizes,
-                                 Specimen* specimen);
+                                 DM* serial, Specimen* specimen);
 
 }  // namespace vibrotherm::mesh

@@ -30,7 +30,8 @@ struct OwnedCrackFacet {
 
 class CrackSurface {
  public:
-  /// Gathers the facets of cracks 0 .. ncracks − 1 of dm on every rank. Collective.
+  /// Gathers the facets of cracks 0 .. ncracks − 1 of dm on every rank; a 3D dm's stay empty
+  /// (its cracks are surfaces, read from their labels). Collective.
   PetscErrorCode Setup(DM dm, PetscInt ncracks);
 
   /// Every rank's facets, rank by rank (the same list on every rank).

@@ -22,9 +22,10 @@ namespace vibrotherm::mesh {
 /// read is refused naming -mesh_file and the file. Collective.
 PetscErrorCode MeshFileDimension(MPI_Comm comm, const std::string& path, int* dimension);
 
-/// The specimen of a 3D mesh file, serial (wave: split; heat: unsplit, from
-/// heat_file when not empty). Collective.
+/// The specimen of a 3D mesh file, one of SpecimenCreate's sources: the wave mesh serial and
+/// unsplit in *serial; heat_file's mesh in s->heat when heat_file is not empty (else none: the
+/// wave mesh unsplit). Collective.
 PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, const std::string& heat_file,
-                                        Specimen* s);
+                                        DM* serial, Specimen* s);
 
 }  // namespace vibrotherm::mesh
