@@ -175,9 +175,9 @@ For i In {0 : NX - 2}
       // made here or a square side (which runs around the square) is reversed when it
       // starts at the other end.
       starts[] = {g_pt[i * NY + j], g_pt[(i + 1) * NY + j], g_pt[(i + 1) * NY + j + 1], g_pt[i * NY + j + 1]};
-      For e In {0 : 3}
-        ends[] = Boundary{ Curve{loop[e]}; };
-        dir[e] = 1; If (ends[0] != starts[e]) dir[e] = -1; EndIf
+      For side_k In {0 : 3}
+        ends[] = Boundary{ Curve{loop[side_k]}; };
+        dir[side_k] = 1; If (ends[0] != starts[side_k]) dir[side_k] = -1; EndIf
       EndFor
       cl = newll;
       Curve Loop(cl) = {dir[0] * loop[0], dir[1] * loop[1], dir[2] * loop[2], dir[3] * loop[3]};
@@ -190,11 +190,12 @@ EndFor
 // its depth (each stage's rays' faces are the crack's staircase candidates).
 nc = Round(c / hc); If (nc < 2) nc = 2; EndIf
 n_below = Max(1, Ceil((T - c) / (2 * hc) - 0.01));
-e = 1e-9;
+eps = 1e-9;  // the bounding boxes' margin [m]
 Extrude {0, 0, T - c} { Surface{base[]}; Layers{n_below}; Recombine; }
 For j In {0 : nc - 1}
   z0 = T - c + j * c / nc;
-  top[] = Surface In BoundingBox{-e, -e, z0 - e, L + e, W + e, z0 + e};
+  top[] = Surface In BoundingBox{-eps, -eps, z0 - eps, L + eps, W + eps, z0 + eps};
+  If (#top[] != #base[]) Error("plate_hole_corner_crack.geo: %g faces at z = %g, the base has %g", #top[], z0, #base[]); EndIf
   Extrude {0, 0, c / nc} { Surface{top[]}; Layers{1}; Recombine; }
 EndFor
 
@@ -206,11 +207,13 @@ For k In {0 : na - 1}
     u = (k + 0.5) / na; w = (j + 0.5) / nc;
     If (u * u + w * w <= 1)
       x0 = xh + R + k * a / na; z1 = T - j * c / nc;
-      crack[] += Surface In BoundingBox{x0 - e, yh - e, z1 - c / nc - e, x0 + a / na + e, yh + e, z1 + e};
+      face[] = Surface In BoundingBox{x0 - eps, yh - eps, z1 - c / nc - eps, x0 + a / na + eps, yh + eps, z1 + eps};
+      If (#face[] != 1) Error("plate_hole_corner_crack.geo: %g faces at the crack's cell (%g, %g)", #face[], k, j); EndIf
+      crack[] += face[];
     EndIf
   EndFor
 EndFor
-patch[] = Surface In BoundingBox{px - e, py - e, -e, px + ps + e, py + ps + e, e};
+patch[] = Surface In BoundingBox{px - eps, py - eps, -eps, px + ps + eps, py + ps + eps, eps};
 Physical Surface("crack1") = crack[];
 Physical Surface("source") = patch[];
 Physical Volume("body") = Volume{:};

@@ -133,13 +133,8 @@ MeshData generate_specimen_mesh(const SpecimenGeometry& g) {
 
 MeshData read_mesh_file(const std::string& path) {
   const std::string where = "-mesh_file " + path;
-  if (!std::ifstream(path)) throw std::invalid_argument(where + ": cannot open the file");
   GmshSession session;
-  try {
-    gmsh::open(path);
-  } catch (...) {
-    throw std::invalid_argument(where + ": gmsh cannot read it");
-  }
+  OpenFile(path, where);
   MeshData mesh;
   const NodeMap nodes = collect_nodes();
   mesh.coords = nodes.coords;

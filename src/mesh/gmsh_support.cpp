@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
 
 namespace vibrotherm::mesh::gmsh_support {
@@ -15,6 +16,17 @@ GmshSession::GmshSession() {
   // instead of reaching our error handling.
   gmsh::option::setNumber("General.NumThreads", 1);
   gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+}
+
+void OpenFile(const std::string& path, const std::string& where) {
+  if (!std::ifstream(path)) throw std::invalid_argument(where + ": cannot open the file");
+  try {
+    gmsh::open(path);
+  } catch (const std::string& error) {  // gmsh throws its message (the file and line of a script's error)
+    throw std::invalid_argument(where + ": gmsh cannot read it: " + error);
+  } catch (...) {
+    throw std::invalid_argument(where + ": gmsh cannot read it");
+  }
 }
 
 GmshSession::~GmshSession() {

@@ -21,6 +21,10 @@ struct GmshSession {
   GmshSession& operator=(const GmshSession&) = delete;
 };
 
+/// Opens a mesh file or geometry script in the session; a file that is missing or that gmsh
+/// cannot read is refused with `where` (the option and the file) and gmsh's own message.
+void OpenFile(const std::string& path, const std::string& where);
+
 /// gmsh node tags → dense 0-based vertex indices, with coordinates.
 struct NodeMap {
   std::map<std::size_t, int> index;

@@ -18,21 +18,11 @@
 namespace vibrotherm::mesh {
 namespace {
 
-/// Opens path in the gmsh session; `where` names the option and file in the errors.
-void OpenFile(const std::string& path, const std::string& where) {
-  if (!std::ifstream(path)) throw std::invalid_argument(where + ": cannot open the file");
-  try {
-    gmsh::open(path);
-  } catch (...) {
-    throw std::invalid_argument(where + ": gmsh cannot read it");
-  }
-}
-
 /// A 3D file's physical surfaces: tag → name, checked (hexahedra only, known names).
 std::map<PetscInt, std::string> SurfaceNames(const std::string& path, const std::string& option) {
   const std::string where = option + " " + path;
   gmsh_support::GmshSession session;
-  OpenFile(path, where);
+  gmsh_support::OpenFile(path, where);
   if (gmsh::model::getDimension() != 3) throw std::invalid_argument(where + ": not a 3D mesh");
   std::vector<int> types;
   gmsh::model::mesh::getElementTypes(types, 3);
@@ -156,7 +146,7 @@ PetscErrorCode MeshFileDimension(MPI_Comm comm, const std::string& path, int* di
   *dimension = 0;
   PetscCall(RunOnRoot(comm, [&] {  // gmsh loads the whole mesh: once, on rank 0
     gmsh_support::GmshSession session;
-    OpenFile(path, "-mesh_file " + path);
+    gmsh_support::OpenFile(path, "-mesh_file " + path);
     *dimension = gmsh::model::getDimension();
   }));
   PetscCallMPI(MPI_Bcast(dimension, 1, MPI_INT, 0, comm));
@@ -175,6 +165,9 @@ PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, 
   s->source = file;
   if (heat_file.empty()) {
     s->heat_source = "wave";  // SpecimenCreate gives the heat the wave mesh unsplit
+    if (!cracks.empty())
+      PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat runs on %s unsplit: vibrotherm grades no heat mesh "
+                            "to a 3D file's cracks (-heat_mesh_file gives one)\n", file.c_str()));
   } else {
     PetscCall(ReadLabelledPlex(comm, heat_file, "-heat_mesh_file", &s->heat, &heat_cracks));
     PetscCheck(heat_cracks == cracks, comm, PETSC_ERR_USER_INPUT,

@@ -3,6 +3,7 @@
 #include "vibrotherm/mesh/memory_estimate.hpp"
 
 #include "vibrotherm/mesh/box_specimen.hpp"
+#include "vibrotherm/mesh/geometry_script.hpp"
 #include "vibrotherm/mesh/mesh_file_3d.hpp"
 #include "vibrotherm/mesh/plex/crack_split.hpp"
 #include "vibrotherm/mesh/plex/distribute.hpp"
@@ -221,9 +222,12 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, const SpecimenOptions& options, dou
   PetscCall(PetscLogStagePush(log.stage));
   // One source makes the serial wave mesh, unsplit, and its heat mesh (none: the wave mesh unsplit).
   const MeshSource& source = options.source;
+  PetscCheck(!(source.from_file && IsGeometryScript(source.file)) && !(source.heat_from_file &&
+             IsGeometryScript(source.heat_file)), comm, PETSC_ERR_ARG_WRONG,
+             "SpecimenCreate reads mesh files: mesh a .geo first (MeshGeometryScripts)");
   int file_dimension = 0;
   if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
-  DM serial;
+  DM serial = nullptr;
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
   if (file_dimension == 3)
     PetscCall(CreateMeshFileSpecimen3D(comm, source.file, source.heat_from_file ? source.heat_file : "", &serial, s));

@@ -19,12 +19,16 @@ Waves, contact, heat and camera end to end (a normal drive on the back face's pa
  - the crack dissipates, its friction heat equals the dissipated energy, the budget closes;
  - the camera's hottest pixel lies on the crack's mouth (within a pixel of the trace y = 20 mm,
    x in [12.5, 14] mm on the front face);
- - 2 ranks (reading the .msh the serial run wrote) dissipate what serial does (1e-6).
-Bad input: a .geo that does not exist, one gmsh cannot read, and one meshed in tetrahedra are
-refused in one line naming -mesh_file.
+ - 2 ranks (the script meshed under MPI) dissipate what serial does (1e-6).
+Scripts: options/plate_hole.opts runs from the checkout (-mesh_only); the 2D script
+meshes/plate_two_cracks.geo gives its committed .msh's mesh. Bad input, refused in one line
+naming the option and the script, nothing left behind: a .geo that does not exist, one gmsh
+cannot read, one it cannot mesh (a transfinite square whose sides disagree), one meshed in
+tetrahedra, one with physical groups but no Physical Volume, and a bad -heat_mesh_file script
+after a good -mesh_file one.
 
 usage: test_plate_hole.py VIBROTHERM SOURCE_DIR MPIEXEC"""
-import math, os, sys, tempfile
+import math, os, subprocess, sys, tempfile
 
 import numpy as np
 
@@ -136,26 +140,66 @@ def check_waves(summary):
           (s["dissipated_energy"], s["max_budget_error"], camera.get("peak_rise", math.nan), 1e3 * x, 1e3 * y))
 
 
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def check_scripts(tmp):
+    """The shipped options file as a newcomer runs it (from the checkout, -mesh_only); a 2D script
+    gives the mesh of its committed .msh; bad scripts are refused in one line, nothing left behind."""
+    out = os.path.join(tmp, "opts")
+    r = subprocess.run([exe, "-options_file", "options/plate_hole.opts", "-mesh_only", "-output_dir", out], cwd=src,
+                       capture_output=True, text=True)
+    check(r.returncode == 0 and outputs(out).summary["mesh"]["cells"] == 9744, "options/plate_hole.opts -mesh_only: %s"
+          % r.stderr[-600:])
+    meshes = {}
+    for kind in ("geo", "msh"):
+        out = os.path.join(tmp, "two_cracks_" + kind)
+        if run_scene(check, exe, ["-options_file", os.path.join(src, "options/paper.opts"), "-mesh_only", "-mesh_file",
+                                  os.path.join(src, "meshes", "plate_two_cracks." + kind)], out):
+            m = outputs(out).summary["mesh"]
+            meshes[kind] = (m["cells"], m["vertices"], m["cohesive_cells"])
+    check(len(meshes) == 2 and meshes["geo"] == meshes["msh"], "2D: the .geo gives %s, its .msh %s" %
+          (meshes.get("geo"), meshes.get("msh")))
+    refused(check, exe, SCENE, ["-mesh_file", os.path.join(tmp, "none.geo")], os.path.join(tmp, "missing"),
+            "-mesh_file", "none.geo", "cannot open")
+    broken = write(os.path.join(tmp, "broken.geo"), "Point(1) = {0, 0, 0;\n")
+    refused(check, exe, SCENE, ["-mesh_file", broken], os.path.join(tmp, "unreadable"), "-mesh_file", "broken.geo",
+            "cannot read")
+    # A transfinite square with 4 and 5 nodes on opposite sides: gmsh logs an error and meshes on.
+    mismatched = write(os.path.join(tmp, "mismatched.geo"), "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; "
+                       "Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\nLine(1) = {1, 2}; Line(2) = {2, 3}; "
+                       "Line(3) = {3, 4}; Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                       "Transfinite Curve {1} = 4; Transfinite Curve {3} = 5; Transfinite Curve {2, 4} = 3;\n"
+                       "Transfinite Surface {1}; Recombine Surface {1};\nPhysical Curve(\"source\") = {3};\n"
+                       "Physical Surface(\"body\") = {1};\n")
+    paper = ["-options_file", os.path.join(src, "options/paper.opts")]
+    refused(check, exe, paper, ["-mesh_file", mismatched], os.path.join(tmp, "mismatched"), "-mesh_file",
+            "mismatched.geo", "cannot mesh")
+    tets = write(os.path.join(tmp, "tets.geo"), 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 0.01, 0.01, 0.01};\n'
+                 'Physical Surface("free") = {1};\nPhysical Volume("body") = {1};\nMesh.MeshSizeMax = 0.005;\n')
+    refused(check, exe, SCENE, ["-mesh_file", tets], os.path.join(tmp, "tets"), "-mesh_file", "tets", "hexahedra")
+    no_cells = write(os.path.join(tmp, "no_cells.geo"), 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 0.01, 0.01, '
+                     '0.01};\nPhysical Surface("free") = {1};\n')
+    refused(check, exe, SCENE, ["-mesh_file", no_cells], os.path.join(tmp, "no_cells"), "-mesh_file", "no_cells.geo",
+            "Physical Volume")
+    # A good wave script with a bad heat script: refused, and the wave mesh made first is gone again.
+    refused(check, exe, SCENE, ["-heat_mesh_file", broken], os.path.join(tmp, "bad_heat"), "-heat_mesh_file",
+            "broken.geo")
+
+
 with tempfile.TemporaryDirectory() as tmp:
     serial = os.path.join(tmp, "np1")
     if run_scene(check, exe, SCENE, serial):
         s = outputs(serial).summary
-        shortest = check_mesh(os.path.join(serial, "mesh_file.msh"), s)
+        shortest = check_mesh(os.path.join(serial, "plate_hole_corner_crack.msh"), s)
         check_step(tmp, s, shortest)
         check_waves(s)
-        parallel = os.path.join(tmp, "np2")
-        if run_scene(check, exe, SCENE + ["-mesh_file", os.path.join(serial, "mesh_file.msh")], parallel, mpiexec, 2):
+        parallel = os.path.join(tmp, "np2")  # the script meshed under MPI too
+        if run_scene(check, exe, SCENE, parallel, mpiexec, 2):
             W1, W2 = s["dissipated_energy"], outputs(parallel).summary["dissipated_energy"]
             check(abs(W1 / W2 - 1) < 1e-6, "serial dissipated %r, 2 ranks %r" % (W1, W2))
-    refused(check, exe, SCENE, ["-mesh_file", os.path.join(tmp, "none.geo")], os.path.join(tmp, "missing"),
-            "-mesh_file", "none.geo", "cannot open")
-    broken = os.path.join(tmp, "broken.geo")
-    with open(broken, "w") as f:
-        f.write("Point(1) = {0, 0, 0;\n")
-    refused(check, exe, SCENE, ["-mesh_file", broken], os.path.join(tmp, "unreadable"), "-mesh_file", "broken.geo")
-    tets = os.path.join(tmp, "tets.geo")
-    with open(tets, "w") as f:
-        f.write('SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 0.01, 0.01, 0.01};\nPhysical Surface("free") = {1};\n'
-                'Physical Volume("body") = {1};\nMesh.MeshSizeMax = 0.005;\n')
-    refused(check, exe, SCENE, ["-mesh_file", tets], os.path.join(tmp, "tets"), "-mesh_file", "hexahedra")
+    check_scripts(tmp)
 check.finish()

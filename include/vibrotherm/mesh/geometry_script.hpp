@@ -2,6 +2,7 @@
 // itself (gmsh's library, rank 0, in the script's own dimension and with its own mesh
 // settings) into a .msh in the output directory, which the run then reads as any mesh
 // file. A user needs no gmsh program, and the mesh used stays beside the results.
+// Trusted input, as an options file: a script's own `Exit;` ends the process (gmsh's).
 #pragma once
 
 #include <petscsys.h>
@@ -17,13 +18,15 @@ namespace vibrotherm::mesh {
 bool IsGeometryScript(const std::string& path);
 
 /// Meshes the script `geo` into the .msh file `msh` (written whole as <stem>.partial.msh, then renamed;
-/// MSH 2.2). A script gmsh cannot read or mesh, or one whose mesh is empty, is refused naming
-/// `option` and the file. Rank 0's work; collective.
+/// MSH 2.2). A script gmsh cannot read or mesh (gmsh's message quoted), one with physical groups
+/// but none for its cells, or one whose mesh has no cells is refused naming `option` and the
+/// file. Rank 0's work; collective.
 PetscErrorCode MeshGeometryScript(MPI_Comm comm, const std::string& geo, const std::string& option,
                                   const std::string& msh);
 
 /// The mesh source with each .geo (-mesh_file, -heat_mesh_file) replaced by its mesh, written
-/// into `directory` as mesh_file.msh and heat_mesh_file.msh (their paths added to *written).
+/// into `directory` under the script's name: NAME.msh and (the heat's) NAME.heat.msh. Each path
+/// is added to *written before it is meshed, so that a caller can remove it even when this fails.
 /// Collective.
 PetscErrorCode MeshGeometryScripts(MPI_Comm comm, const std::string& directory, MeshSource* source,
                                    std::vector<std::string>* written);

@@ -228,13 +228,16 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   // A .geo becomes the mesh gmsh makes of it, in the output directory (gone again if the run stops in its setup).
   mesh::SpecimenOptions specimen_options = scene.specimen;
   std::vector<std::string> meshed;
-  PetscCall(mesh::MeshGeometryScripts(comm, dir, &specimen_options.source, &meshed));
-  for (const std::string& file : meshed) output.AddSetupFile(file);
+  stop_signals::EnterSetup("meshing");
+  const PetscErrorCode meshing = mesh::MeshGeometryScripts(comm, dir, &specimen_options.source, &meshed);
+  for (const std::string& file : meshed) output.AddSetupFile(file);  // also those of a failed call
+  PetscCall(meshing);
   PetscCall(Build(comm, app, scene, specimen_options, &specimen, &simulation, &modes_run, &summary));
   // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
   PetscCall(CheckUnknownOptions(comm, registry.names(), app.allow_unknown));
-  PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
+  // -mesh_only builds no solver: their options cannot be read then, which is no sign of a typo.
+  if (!app.mesh_only) PetscCall(CheckSolverOptionsRead(comm, declared, app.allow_unknown));
   RecordRun(command_line, RecordedOptions(registry, read, declared), scene, &summary);
 
   // Everything has been checked (and the checkpoint read): outputs from here on.
@@ -258,7 +261,7 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   else if (!app.mesh_only) PetscCall(simulation.Run(dir, &summary, control));
   summary.wall_time_s = MPI_Wtime() - t0;
   summary.complete = simulation.interrupted_by() == 0;
-  if (summary.complete) PetscCall(WarnUnreadSolverOptions(comm, declared));
+  if (summary.complete && !app.mesh_only) PetscCall(WarnUnreadSolverOptions(comm, declared));
   PetscCall(io::RunLogPublish());  // summary.json, the run's record, comes last
   PetscCall(io::WriteRunSummary(comm, dir + "/summary.json", summary));
   if (summary.complete) PetscCall(RemoveCheckpoint(comm, dir));
