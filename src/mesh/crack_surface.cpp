@@ -74,14 +74,13 @@ PetscErrorCode CrackSurface::CollectOwned(DM dm, std::vector<double>* packed) {
 
 PetscErrorCode CrackSurface::Setup(DM dm, PetscInt ncracks) {
   PetscFunctionBeginUser;
-  facets_.clear(), owned_.clear(), lines_.clear();
+  *this = CrackSurface{};  // a 3D mesh keeps it empty
   PetscInt dim;
   PetscCall(DMGetDimension(dm, &dim));
   if (dim != 2) PetscFunctionReturn(0);  // crack lines only: a 3D crack's faces are read from its labels
   std::vector<double> mine, all;
   PetscCall(CollectOwned(dm, &mine));
   PetscCall(util::AllGather(PetscObjectComm((PetscObject)dm), mine, &all));
-  facets_.clear();
   for (std::size_t k = 0; k + kPacked <= all.size(); k += kPacked)
     facets_.push_back({std::lround(all[k]), static_cast<int>(all[k + 1]), {all[k + 2], all[k + 3]},
                        {all[k + 4], all[k + 5]}});

@@ -49,7 +49,7 @@ void WriteWhole(const std::string& where, const std::string& msh) {
   }
 }
 
-/// Rank 0: the script meshed and written (see MeshGeometryScript).
+/// Rank 0: the script meshed and written (MeshGeometryScript, below).
 void MeshScriptOnRoot(const std::string& geo, const std::string& where, const std::string& msh) {
   gmsh_support::GmshSession session;
   gmsh_support::OpenFile(geo, where);
@@ -74,14 +74,10 @@ void MeshScriptOnRoot(const std::string& geo, const std::string& where, const st
   WriteWhole(where, msh);
 }
 
-}  // namespace
-
-bool IsGeometryScript(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".geo";
-}
-
+/// Meshes the script `geo` into the .msh file `msh` (written whole as <stem>.partial.msh, then renamed;
+/// MSH 2.2). A script gmsh cannot read or mesh (gmsh's message quoted), one with physical groups
+/// but none for its cells, or one whose mesh has no cells is refused naming `option` and the
+/// file. Rank 0's work; collective.
 PetscErrorCode MeshGeometryScript(MPI_Comm comm, const std::string& geo, const std::string& option,
                                   const std::string& msh) {
   PetscFunctionBeginUser;
@@ -90,6 +86,14 @@ PetscErrorCode MeshGeometryScript(MPI_Comm comm, const std::string& geo, const s
   PetscCall(PetscPrintf(comm, "Meshing: %s %s meshed by gmsh into %s in %.2f s\n", option.c_str(), geo.c_str(),
                         msh.c_str(), MPI_Wtime() - t0));
   PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+bool IsGeometryScript(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".geo";
 }
 
 PetscErrorCode MeshGeometryScripts(MPI_Comm comm, const std::string& directory, MeshSource* source,

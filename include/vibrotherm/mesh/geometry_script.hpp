@@ -17,13 +17,6 @@ namespace vibrotherm::mesh {
 /// Whether path names a gmsh geometry script (ends in .geo).
 bool IsGeometryScript(const std::string& path);
 
-/// Meshes the script `geo` into the .msh file `msh` (written whole as <stem>.partial.msh, then renamed;
-/// MSH 2.2). A script gmsh cannot read or mesh (gmsh's message quoted), one with physical groups
-/// but none for its cells, or one whose mesh has no cells is refused naming `option` and the
-/// file. Rank 0's work; collective.
-PetscErrorCode MeshGeometryScript(MPI_Comm comm, const std::string& geo, const std::string& option,
-                                  const std::string& msh);
-
 /// The mesh source with each .geo (-mesh_file, -heat_mesh_file) replaced by its mesh, written
 /// into `directory` under the script's name: NAME.msh and (the heat's) NAME.heat.msh. Each path
 /// is added to *written before it is meshed, so that a caller can remove it even when this fails.

@@ -43,6 +43,7 @@ class OutputDirectory {
   /// A file the setup wrote into the directory (the mesh gmsh made of a .geo): removed again
   /// when the run stops before Prepare, so that refused input leaves nothing behind.
   void AddSetupFile(const std::string& path) { setup_files_.push_back(path); }
+  const std::string& dir() const { return dir_; }
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;

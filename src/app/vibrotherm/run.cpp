@@ -178,6 +178,19 @@ PetscErrorCode Build(MPI_Comm comm, const AppOptions& app, const coupling::Scene
   PetscFunctionReturn(0);
 }
 
+/// A .geo (-mesh_file, -heat_mesh_file) becomes the mesh gmsh makes of it, in the output
+/// directory; each such mesh is the directory's setup file (gone again if the run stops in its
+/// setup), also those of a call that failed part way.
+PetscErrorCode MeshScripts(MPI_Comm comm, OutputDirectory* output, mesh::MeshSource* source) {
+  PetscFunctionBeginUser;
+  std::vector<std::string> meshed;
+  stop_signals::EnterSetup("meshing");
+  const PetscErrorCode meshing = mesh::MeshGeometryScripts(comm, output->dir(), source, &meshed);
+  for (const std::string& file : meshed) output->AddSetupFile(file);
+  PetscCall(meshing);
+  PetscFunctionReturn(0);
+}
+
 /// -restart: the checkpoint read and compared with the options known before meshing.
 PetscErrorCode ReadCheckpointEarly(MPI_Comm comm, const AppOptions& app, const std::vector<std::string>& command_line,
                                    const OptionValues& recorded, store::Checkpoint* checkpoint) {
@@ -225,13 +238,8 @@ PetscErrorCode Run(MPI_Comm comm, const std::vector<std::string>& command_line, 
   mesh::Specimen specimen;
   coupling::Simulation simulation;
   modes::ModesRun modes_run;
-  // A .geo becomes the mesh gmsh makes of it, in the output directory (gone again if the run stops in its setup).
   mesh::SpecimenOptions specimen_options = scene.specimen;
-  std::vector<std::string> meshed;
-  stop_signals::EnterSetup("meshing");
-  const PetscErrorCode meshing = mesh::MeshGeometryScripts(comm, dir, &specimen_options.source, &meshed);
-  for (const std::string& file : meshed) output.AddSetupFile(file);  // also those of a failed call
-  PetscCall(meshing);
+  PetscCall(MeshScripts(comm, &output, &specimen_options.source));
   PetscCall(Build(comm, app, scene, specimen_options, &specimen, &simulation, &modes_run, &summary));
   // Every PETSc object is set up: its options were read by now (before any step).
   PetscCall(OptionAuditEnd(&declared));
