@@ -6,6 +6,7 @@
 
 a and b are Run objects or run directories."""
 import json
+import math
 import os
 
 import numpy as np
@@ -82,11 +83,20 @@ def compare_energy(a, b, columns=None):
 
 
 def _numbers_close(a, b, scale, rtol):
-    return a == b or (rtol > 0 and abs(a - b) <= rtol * scale)
+    return a == b or (math.isnan(a) and math.isnan(b)) or (rtol > 0 and abs(a - b) <= rtol * scale)
+
+
+def _number(text):
+    """A CSV field as a float, or None for a text field (a contact state, a crack name)."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
 
 
 def compare_csv_files(a, b, rtol, say):
-    """CSV files byte for byte (rtol 0), else every number within rtol of its column's largest magnitude."""
+    """CSV files byte for byte (rtol 0), else every number within rtol of its column's largest
+    magnitude (NaN equals NaN) and every text field equal."""
     with open(a, "rb") as fa, open(b, "rb") as fb:
         da, db = fa.read(), fb.read()
     if da == db:
@@ -102,19 +112,17 @@ def compare_csv_files(a, b, rtol, say):
     columns = len(ra[0]) if ra else 0
     scale = [0.0] * columns
     rows = []
-    for x, y in zip(ra[1:], rb[1:]):
-        try:
-            fx, fy = [float(v) for v in x], [float(v) for v in y]
-        except ValueError:
-            if x != y:
-                say("text row differs: %s" % ",".join(x)[:80])
+    for i, (x, y) in enumerate(zip(ra[1:], rb[1:])):
+        fx, fy = [_number(v) for v in x], [_number(v) for v in y]
+        for j, (u, v) in enumerate(zip(fx, fy)):
+            if (u is None or v is None) and x[j] != y[j]:
+                say("row %d column %s: %r vs %r" % (i + 1, ra[0][j], x[j], y[j]))
                 return
-            continue
         rows.append((fx, fy))
-        scale = [max(s, abs(v)) for s, v in zip(scale, fx)]
+        scale = [s if v is None or math.isnan(v) else max(s, abs(v)) for s, v in zip(scale, fx)]
     for i, (fx, fy) in enumerate(rows):
         for j, (u, v) in enumerate(zip(fx, fy)):
-            if not _numbers_close(u, v, scale[j], rtol):
+            if u is not None and v is not None and not _numbers_close(u, v, scale[j], rtol):
                 say("row %d column %s: %r vs %r" % (i + 1, ra[0][j], u, v))
                 return
 

@@ -39,9 +39,11 @@ struct Specimen {
   std::string heat_source;  ///< "graded", "wave" (the unsplit wave mesh) or the heat mesh file
   PointOrigin wave_origin, heat_origin;  ///< serial point of each local point (checkpoint keys)
   CrackSurface wave_cracks, heat_cracks;  ///< the cracks of each mesh, gathered once
-  /// 3D: sub-squares per side of a wave crack face in the friction heat's quadrature,
-  /// chosen so that their edges include the heat grid's lines on the crack (exact).
-  int crack_face_subdivisions = 4;
+  /// Equal parts per reference direction of a wave crack face in the friction heat's
+  /// quadrature. 2D: 1 (the faces are cut at the heat mesh's crack vertices, exact);
+  /// the 3D box chooses them so that they include the heat grid's lines on the crack
+  /// (exact), a 3D mesh file takes 16 (accurate).
+  int crack_face_subdivisions = 1;
 };
 
 /// Meshes what the specimen options describe (-mesh_file, or the generated specimen),

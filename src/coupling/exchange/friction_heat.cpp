@@ -59,15 +59,6 @@ class CellsAlong {
   double tol_;
 };
 
-/// Global row of a scalar dof at `point` (also when another rank owns it).
-PetscErrorCode GlobalRow(PetscSection global, PetscInt point, long* row) {
-  PetscFunctionBeginUser;
-  PetscInt off;
-  PetscCall(PetscSectionGetOffset(global, point, &off));
-  *row = off >= 0 ? off : -(off + 1);
-  PetscFunctionReturn(0);
-}
-
 }  // namespace
 
 FrictionHeat::~FrictionHeat() {
@@ -110,70 +101,12 @@ PetscErrorCode FrictionHeat::BuildWaveElements(const interface::CrackInterface& 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FrictionHeat::BuildHeatElements(const fe::LagrangeSpace& heat_space,
-                                               const mesh::CrackSurface& heat_cracks,
-                                               std::vector<CrackElement>* elements) const {
+PetscErrorCode FrictionHeat::SetupTransfer(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                                           const fe::LagrangeSpace& heat_space, const CrackFaceSplit& split) {
   PetscFunctionBeginUser;
-  PetscSection global;
-  PetscCall(DMGetGlobalSection(heat_space.dm(), &global));
-  for (PetscInt k = 0; k < heat_cracks.crack_count(); ++k) {
-    const mesh::CrackLine& line = heat_cracks.line(k);
-    std::map<PetscInt, std::size_t> position;
-    for (std::size_t j = 0; j < line.facet_ids().size(); ++j) position[line.facet_ids()[j]] = j;
-    for (const mesh::OwnedCrackFacet& owned : heat_cracks.owned()) {
-      const geometry::CrackFacet& facet = heat_cracks.facets()[owned.index];
-      if (facet.crack != k) continue;
-      const std::size_t j = position.at(facet.id);
-      const PetscInt* cone;
-      PetscCall(DMPlexGetCone(heat_space.dm(), owned.facet, &cone));
-      const auto p0 = facet.p0, v = line.vertex(j);
-      const bool forward = std::hypot(p0[0] - v[0], p0[1] - v[1]) < 1e-9 * line.length();
-      CrackElement e;
-      e.crack = static_cast<int>(k);
-      e.xi0 = line.vertex_xi(j);
-      e.xi1 = line.vertex_xi(j + 1);
-      e.degree = static_cast<int>(heat_space.degree());
-      PetscCall(GlobalRow(global, cone[forward ? 0 : 1], &e.node[0]));
-      PetscCall(GlobalRow(global, cone[forward ? 1 : 0], &e.node[1]));
-      if (e.degree == 2) PetscCall(GlobalRow(global, owned.facet, &e.node[2]));
-      elements->push_back(e);
-    }
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode FrictionHeat::AssembleTransfer(const fe::LagrangeSpace& heat_space,
-                                              const std::vector<CrackElement>& heat_elements, PetscInt owned_cells) {
-  PetscFunctionBeginUser;
-  DM dm = heat_space.dm();
-  Vec shape;
-  PetscInt rows, global_rows, total_cells;
-  PetscCall(DMGetGlobalVector(dm, &shape));
-  PetscCall(VecGetLocalSize(shape, &rows));
-  PetscCall(VecGetSize(shape, &global_rows));
-  PetscCall(DMRestoreGlobalVector(dm, &shape));
-  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  PetscCallMPI(MPI_Allreduce(&owned_cells, &total_cells, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCall(MatCreateAIJ(comm, rows, owned_cells, global_rows, total_cells, 8, nullptr, 8, nullptr, &transfer_));
-  PetscCall(MatSetOption(transfer_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  for (const TransferEntry& t : LineTransferEntries(heat_elements, wave_elements_)) {
-    const PetscInt r = static_cast<PetscInt>(t.row), c = static_cast<PetscInt>(t.col);
-    PetscCall(MatSetValue(transfer_, r, c, t.value, ADD_VALUES));
-  }
-  PetscCall(MatAssemblyBegin(transfer_, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(transfer_, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatCreateVecs(transfer_, &rate_, nullptr));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode FrictionHeat::SetupSurface(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                                          const fe::LagrangeSpace& heat_space, int subdivisions) {
-  PetscFunctionBeginUser;
-  // m × m sub-squares of 3 × 3 Gauss points a face: exact when the heat faces split
-  // each sub-square's sides no further (the heat basis is then one polynomial on it).
   SurfacePoints points;
   Mat basis;
-  PetscCall(BuildCrackFaceQuadrature(crack, wave_space, subdivisions, &points, &basis));
+  PetscCall(BuildCrackFaceQuadrature(crack, wave_space, split, &points, &basis));
   SurfaceHeatTransfer psi;
   PetscCall(psi.Setup(heat_space, points));
   PetscCall(MatMatMult(psi.matrix(), basis, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &transfer_));
@@ -205,14 +138,10 @@ PetscErrorCode FrictionHeat::Setup(const interface::CrackInterface& crack, const
                                    const mesh::CrackSurface& heat_cracks, int face_subdivisions) {
   PetscFunctionBeginUser;
   const PetscInt owned = static_cast<PetscInt>(crack.cells().size());
-  if (wave_space.dim() == 3) {
-    PetscCall(SetupSurface(crack, wave_space, heat_space, face_subdivisions));
-  } else {
-    PetscCall(BuildWaveElements(crack, wave_space, wave_cracks));
-    std::vector<CrackElement> heat_elements;
-    PetscCall(BuildHeatElements(heat_space, heat_cracks, &heat_elements));
-    PetscCall(AssembleTransfer(heat_space, heat_elements, owned));
-  }
+  // Crack lines (2D) keep their elements for the records and the near field; the
+  // transfer itself is the faces' quadrature in both dimensions.
+  if (wave_cracks.crack_count() > 0) PetscCall(BuildWaveElements(crack, wave_space, wave_cracks));
+  PetscCall(SetupTransfer(crack, wave_space, heat_space, {face_subdivisions, CrackLineVertices(heat_cracks)}));
   previous_.assign(owned, 0.0);
   density_.assign(owned, 0.0);
   cell_places_.clear();

@@ -31,8 +31,6 @@ PetscErrorCode SurfaceHeatTransfer::Setup(const fe::LagrangeSpace& heat, const S
   PetscFunctionBeginUser;
   DM dm = heat.dm();
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
-  PetscCheck(heat.dim() == 3, comm, PETSC_ERR_SUP, "surface heat source: a 3D heat mesh is needed, this one is %dD",
-             heat.dim());
   PetscCheck(mine.area.size() == mine.x.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%zu areas for %zu points",
              mine.area.size(), mine.x.size());
   const std::vector<double> packed = PackPoints(mine);

@@ -1,10 +1,11 @@
 // Friction energy → heat load: the one home of that transfer. Built once per run
 // as a parallel sparse matrix T (heat dofs × contact cells), so every exchange is
-// one MatMult (PETSc moves the values between the two partitions).
-//   2D: the crack elements of both meshes matched along each crack by ξ, T the
-//       exact line integrals (line_transfer.hpp);
-//   3D: T = Ψ Φ, the quadrature of the crack's faces (crack_face_quadrature.hpp)
-//       through the surface transfer of its points (surface_transfer.hpp).
+// one MatMult (PETSc moves the values between the two partitions). In both
+// dimensions T = Ψ Φ: the quadrature of the crack's faces (crack_face_quadrature.hpp;
+// 2D faces cut at the heat mesh's crack vertices, so the integrals are exact)
+// through the surface transfer of its points (surface_transfer.hpp). A 2D crack
+// line also keeps its wave elements (ξ along it) for the crack-heat record and
+// the near-field temperatures.
 #pragma once
 
 #include <petscmat.h>
@@ -12,6 +13,7 @@
 #include <array>
 #include <vector>
 
+#include "vibrotherm/coupling/exchange/crack_face_quadrature.hpp"
 #include "vibrotherm/coupling/exchange/line_transfer.hpp"
 #include "vibrotherm/fe/lagrange_space.hpp"
 #include "vibrotherm/interface/crack_interface.hpp"
@@ -26,10 +28,10 @@ class FrictionHeat {
   FrictionHeat& operator=(const FrictionHeat&) = delete;
   ~FrictionHeat();
 
-  /// Matches the contact cells of `crack` (on wave_space's split mesh, whose cracks
-  /// are wave_cracks) with the crack facets of heat_space's mesh (heat_cracks; in 3D
-  /// the contact cells' faces are located in the heat mesh at the points of
-  /// face_subdivisions² sub-squares a face, the crack surfaces unused).
+  /// Locates the quadrature points of the contact cells' faces (on wave_space's split
+  /// mesh) in heat_space's mesh: face_subdivisions parts along each direction of a
+  /// face, 2D faces cut further at the vertices of heat_cracks' lines (3D: none;
+  /// wave_cracks' lines give the 2D record's elements).
   /// Collective over both meshes' communicator.
   PetscErrorCode Setup(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
                        const mesh::CrackSurface& wave_cracks, const fe::LagrangeSpace& heat_space,
@@ -59,13 +61,9 @@ class FrictionHeat {
  private:
   PetscErrorCode BuildWaveElements(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
                                    const mesh::CrackSurface& wave_cracks);
-  PetscErrorCode BuildHeatElements(const fe::LagrangeSpace& heat_space, const mesh::CrackSurface& heat_cracks,
-                                   std::vector<CrackElement>* elements) const;
-  /// T = Ψ Φ of the 3D crack faces' quadrature.
-  PetscErrorCode SetupSurface(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
-                              const fe::LagrangeSpace& heat_space, int subdivisions);
-  PetscErrorCode AssembleTransfer(const fe::LagrangeSpace& heat_space, const std::vector<CrackElement>& heat_elements,
-                                  PetscInt owned_cells);
+  /// T = Ψ Φ of the crack faces' quadrature, checked to conserve every cell's weight.
+  PetscErrorCode SetupTransfer(const interface::CrackInterface& crack, const fe::LagrangeSpace& wave_space,
+                               const fe::LagrangeSpace& heat_space, const CrackFaceSplit& split);
 
   std::vector<CrackElement> wave_elements_;
   std::vector<std::array<double, 4>> crack_vertices_;

@@ -1,17 +1,16 @@
-// Friction heat as a surface density on a 3D crack → heat load: the 3D
-// analogue of friction_heat's line transfer (surface_points.hpp for the source).
+// Friction heat as a density on a crack's faces → heat load, in both dimensions
+// (2D: points on the crack lines, z = 0, their lengths as "areas"; surface_points.hpp
+// for the source).
 //
 // The source points carry areas A_p and, per exchange, densities q_p [W/m²].
 // The heat load is the heat basis at each point times its power:
 //   Q_h = Σ_p T_hp q_p,   T_hp = A_p ψ_h(x_p),
 // a sparse matrix (heat dofs × source points) built once, one MatMultAdd per
-// heat step, as in 2D. The heat basis sums to one at every point, so
+// heat step. The heat basis sums to one at every point, so
 // Σ_h Q_h = Σ_p A_p q_p: heat deposited = power given, to rounding, whatever
-// the meshes. (2D integrates ψ_h φ_c exactly over every overlap of a heat and a
-// wave crack element; here the source's own quadrature does: where its points
-// are the Gauss points of the wave crack faces, ψ_h q is integrated to the
-// order of that rule on every face, exactly for a uniform density on faces of
-// the heat mesh's crack plane.)
+// the meshes. Where the points are the Gauss points of the wave crack faces
+// (crack_face_quadrature.hpp), ψ_h q is integrated to the order of that rule on
+// every piece of a face: exactly where the heat basis is one polynomial on it.
 //
 // Each rank gives its own points (columns in that layout); each point goes only
 // to the ranks whose heat cells' bounding box holds it (fe/point_owners.hpp, a
@@ -36,7 +35,7 @@ class SurfaceHeatTransfer {
   SurfaceHeatTransfer& operator=(const SurfaceHeatTransfer&) = delete;
   ~SurfaceHeatTransfer();
 
-  /// Builds T for this rank's points on heat_space's (3D) mesh. Collective.
+  /// Builds T for this rank's points on heat_space's mesh (2D or 3D). Collective.
   PetscErrorCode Setup(const fe::LagrangeSpace& heat_space, const SurfacePoints& mine);
   /// Q += T q for the densities q_p [W/m²] of this rank's points. Collective.
   PetscErrorCode AddRates(const std::vector<double>& density, Vec Q);
