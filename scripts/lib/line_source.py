@@ -120,7 +120,10 @@ def wave_step_record(crack_state_csv, crack_heat_h5):
     (-crack_state_every 1) differenced into a density per step, on crack_heat.h5's elements
     (cells matched by ξ)."""
     record = CrackHeat(crack_heat_h5)
-    rows = np.loadtxt(crack_state_csv, delimiter=",", skiprows=1, usecols=(0, 1, 2, 11), ndmin=2)
+    with open(crack_state_csv) as f:
+        header = f.readline().strip().split(",")
+    columns = tuple(header.index(c) for c in ("t", "crack", "xi", "W"))
+    rows = np.loadtxt(crack_state_csv, delimiter=",", skiprows=1, usecols=columns, ndmin=2)
     times = np.unique(rows[:, 0])
     cell_at = {}
     for e in record.elements:

@@ -235,7 +235,8 @@ class Run:
         return frame
 
     def crack_state(self, crack=None):
-        """crack_state.csv (one crack's rows when given): 2D keyed by xi, 3D by s1, s2."""
+        """crack_state.csv (one crack's rows when given), one schema in both dimensions: each cell
+        by xi along a 2D crack line (nan on a 3D crack surface) and s1, s2 from the crack's centre."""
         frame = self.csv("crack_state.csv")
         if crack is not None:
             frame = frame[frame["crack"] == crack].reset_index(drop=True)
@@ -262,7 +263,7 @@ class Run:
         frame = self.crack_state(crack)
         if frame.empty:
             raise MissingOutput("crack_state.csv has no rows of crack %d" % crack)
-        keys = ["xi"] if "xi" in frame else ["s1", "s2"]
+        keys = ["xi"] if frame["xi"].notna().all() else ["s1", "s2"]  # a 3D surface has no xi
         if variable == "state":
             frame = frame.assign(state=frame["state"].cat.codes.where(frame["state"].notna()))
         table = frame.pivot_table(index="t", columns=keys, values=variable, aggfunc="first", dropna=False)

@@ -11,7 +11,7 @@ ENERGY_COLUMNS = ("work_source", "kinetic", "strain", "radiated", "interface_sto
                   "heat_thermoelastic", "work_thermal", "damped", "heat_damping")
 
 _POINT = {"t": "s", "x": "m", "y": "m", "z": "m"}
-_CRACK = {"a": "m", "b": "m", "b0": "m", "b1": "m", "b2": "m", "N": "Pa", "T": "Pa", "T1": "Pa", "T2": "Pa",
+_CRACK = {"a": "m", "b": "m", "b0": "m", "b2": "m", "N": "Pa", "T": "Pa", "T2": "Pa",
           "power": "W/m^2", "W": "J/m^2"}
 _COUNTERS = {"probe": "", "crack": "", "mode": "", "multiple": "", "state": ""}  # labels and counts: no unit
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "vibrotherm/interface/contact_cells_3d.hpp"
@@ -50,6 +51,7 @@ PetscErrorCode CrackInterface::Setup(const fe::LagrangeSpace& space, const mesh:
   law_ = std::move(law);
   dim_ = space.dim();
   PetscCall(BuildCells(space, cracks, a0));
+  PetscCall(FindCentre());
   PetscInt local_count = static_cast<PetscInt>(cells_.size());
   PetscCallMPI(MPI_Allreduce(&local_count, &global_cells_, 1, MPIU_INT, MPI_SUM, comm_));
   PetscSection global;
@@ -72,10 +74,9 @@ PetscErrorCode CrackInterface::BuildCells(const fe::LagrangeSpace& space, const 
                                           const ApproachProfile& a0) {
   PetscFunctionBeginUser;
   DM dm = space.dm();
-  if (dim_ == 3) {  // planar cracks; no parameterisation along them yet (ξ = 0.5)
+  if (dim_ == 3) {  // planar cracks; no parameterisation along them (ξ: none; the a0 profile's middle)
     PetscCall(ContactCells3D(space, &cells_));
-    for (ContactCell& cell : cells_) cell.xi = 0.5, cell.a0 = a0.at(cell.xi);
-    PetscCall(FindCentre());
+    for (ContactCell& cell : cells_) cell.xi = std::numeric_limits<double>::quiet_NaN(), cell.a0 = a0.at(0.5);
     PetscFunctionReturn(0);
   }
   const ContactGeometry geometry(cracks.facets(), static_cast<int>(space.degree()));
@@ -328,6 +329,9 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
   *owned_index = -1;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     if (cells_[i].crack != crack) continue;
+    PetscCheck(!std::isnan(cells_[i].xi), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "-crack_probe: a position along a 2D crack line (xi); a 3D crack surface has none "
+               "(its cells' states: -crack_state_every, keyed by s1, s2)");
     const double d = std::abs(cells_[i].xi - xi);
     if (d < mine.distance) mine.distance = d, *owned_index = static_cast<PetscInt>(i);
   }
@@ -374,17 +378,14 @@ PetscErrorCode CrackInterface::Records(const std::vector<PetscInt>& owned, Vec u
     const contact::StepResult& s = last_[i];
     CrackCellRecord r;
     r.crack = static_cast<int>(c.crack);
-    r.xi = c.xi, r.x = c.x, r.y = c.y;
-    r.a = a_[i], r.b = b_[i][0], r.b0 = law_->slip_offset(i)[0];
-    r.N = s.N, r.T = s.T[0], r.state = s.state;
+    r.xi = c.xi, r.x = c.x, r.y = c.y, r.z = c.z;
+    const std::array<double, 3>& centre = centres_[static_cast<std::size_t>(c.crack)];
+    const double d[3] = {c.x - centre[0], c.y - centre[1], c.z - centre[2]};
+    r.s1 = d[0] * c.s[0] + d[1] * c.s[1] + d[2] * c.s[2];  // t2 is 0 in 2D: s2 = 0
+    r.s2 = d[0] * c.s2[0] + d[1] * c.s2[1] + d[2] * c.s2[2];
+    r.a = a_[i], r.b = b_[i][0], r.b2 = b_[i][1], r.b0 = law_->slip_offset(i)[0];
+    r.N = s.N, r.T = s.T[0], r.T2 = s.T[1], r.state = s.state;
     r.power = power_[i], r.W = W_[i];
-    if (dim_ == 3) {  // the position on the crack plane, and the second tangential components
-      const std::array<double, 3>& centre = centres_[static_cast<std::size_t>(c.crack)];
-      const double d[3] = {c.x - centre[0], c.y - centre[1], c.z - centre[2]};
-      r.xi = d[0] * c.s[0] + d[1] * c.s[1] + d[2] * c.s[2];
-      r.eta = d[0] * c.s2[0] + d[1] * c.s2[1] + d[2] * c.s2[2];
-      r.z = c.z, r.b2 = b_[i][1], r.T2 = s.T[1];
-    }
     if (U) r.ux = PetscRealPart(U[Slot(i, 0)]), r.uy = PetscRealPart(U[Slot(i, 1)]);
     records->push_back(r);
   }

@@ -6,16 +6,13 @@
 
 namespace vibrotherm::io {
 
-PetscErrorCode CrackStateLog::Open(MPI_Comm comm, const std::string& path, long long resume_bytes, int dimension) {
+PetscErrorCode CrackStateLog::Open(MPI_Comm comm, const std::string& path, long long resume_bytes) {
   PetscFunctionBeginUser;
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  dimension_ = dimension;
   if (rank != 0) PetscFunctionReturn(0);
   VibrothermCallCpp(PETSC_COMM_SELF, file_ = store::OpenAtomicFile(path, resume_bytes));
-  if (resume_bytes < 0)
-    file_->stream() << (dimension == 3 ? "t,crack,s1,s2,x,y,z,a,b1,b2,N,T1,T2,state,power,W\n"
-                                       : "t,crack,xi,x,y,a,b,N,T,state,power,W\n");
+  if (resume_bytes < 0) file_->stream() << "t,crack,xi,s1,s2,x,y,z,a,b,b2,N,T,T2,state,power,W\n";
   PetscFunctionReturn(0);
 }
 
@@ -38,12 +35,9 @@ void CrackStateLog::Record(double t, const std::vector<interface::CrackCellRecor
   std::string& block = block_;
   block.clear();
   for (const interface::CrackCellRecord& r : records) {
-    if (dimension_ == 3)
-      for (const double x : {t, static_cast<double>(r.crack + 1), r.xi, r.eta, r.x, r.y, r.z, r.a, r.b, r.b2, r.N, r.T,
-                             r.T2})
-        Append(&block, x);
-    else
-      for (const double x : {t, static_cast<double>(r.crack + 1), r.xi, r.x, r.y, r.a, r.b, r.N, r.T}) Append(&block, x);
+    for (const double x : {t, static_cast<double>(r.crack + 1), r.xi, r.s1, r.s2, r.x, r.y, r.z, r.a, r.b, r.b2, r.N,
+                           r.T, r.T2})
+      Append(&block, x);
     block.append(contact::to_string(r.state));
     block.push_back(',');
     Append(&block, r.power);

@@ -14,8 +14,9 @@ Real small runs made here through the package itself (vibrotherm.run_scene):
     largest rise is summary.json's probe_max_temperature_rise; temperature − temperature_rise
     = T0 in fields.h5; the camera's best clean frame peaks at summary.json's camera.peak_rise
     and its pixel centres are one pixel apart;
-  * a 3D run (options/block3d_small.opts, shortened): the 3D schemas (probes x,y,z; crack_state
-    s1, s2, b1, b2, T1, T2), energies in J, Σ W × area of the crack = dissipated [J];
+  * a 3D run (options/block3d_small.opts, shortened): the 3D schemas (probes x,y,z), crack_state.csv
+    the 2D schema (xi nan on a 3D surface; in 2D s2, z, b2 = 0 and s1 = (xi - 1/2) x length along the
+    straight crack), energies in J, Σ W × area of the crack = dissipated [J];
   * a -modes run: modes.csv and the shapes' frequencies in Hz;
   * a refused run raises RunFailed with exit 2 and vibrotherm's error line naming the option;
   * compare_summaries / compare_energy: a run against itself differs nowhere; against a run
@@ -270,7 +271,18 @@ with tempfile.TemporaryDirectory() as tmp:
         same_as_file(frame, box.path(name), "3D " + name)
     check(box.energy().attrs["units"]["dissipated"] == "J" == box.unit("dissipated_energy"), "3D energies in J")
     units = box.crack_state().attrs["units"]
-    check(units["s1"] == "m" and units["T2"] == "Pa" and units["b1"] == "m", "3D crack_state units %s" % units)
+    check(units["s1"] == "m" and units["T2"] == "Pa" and units["b"] == "m" and units["xi"] == "1",
+          "3D crack_state units %s" % units)
+    box_cells = box.crack_state()
+    check(list(box_cells.columns) == list(cs.columns), "one crack_state.csv schema: 2D %s, 3D %s"
+          % (list(cs.columns), list(box_cells.columns)))
+    check(box_cells["xi"].isna().all() and cs["xi"].notna().all() and (cs["s2"] == 0).all()
+          and (cs["z"] == 0).all() and (cs["b2"] == 0).all(),
+          "crack_state.csv: xi along a 2D line only (nan in 3D); s2, z, b2 = 0 in 2D")
+    straight = cs[cs["t"] == cs["t"].iloc[-1]]  # the paper's crack is straight, its cells symmetric
+    length = run.summary["mesh"]["cracks"][0]["length"]
+    check(np.allclose(straight["s1"], (straight["xi"] - 0.5) * length, rtol=0, atol=1e-11),
+          "2D s1 = (xi - 1/2) x length along a straight crack")
     check_budget(box, "3D")
     check_friction_energy(box, "3D")
     check_probes(box, "3D")

@@ -54,7 +54,7 @@ def plane_source(t, q, n):
 
 def check_crack_state(out, cells, count):
     rows = outputs(out).rows("crack_state.csv")
-    check(rows and list(rows[0].keys()) == "t,crack,s1,s2,x,y,z,a,b1,b2,N,T1,T2,state,power,W".split(","),
+    check(rows and list(rows[0].keys()) == "t,crack,xi,s1,s2,x,y,z,a,b,b2,N,T,T2,state,power,W".split(","),
           "crack_state.csv header %s" % (list(rows[0].keys()) if rows else None))
     times = sorted({float(r["t"]) for r in rows})
     check(len(rows) == count * len(times), "%d rows: %d cells x %d times" % (len(rows), count, len(times)))

@@ -34,12 +34,12 @@ namespace vibrotherm::interface {
 struct ContactCell {
   PetscInt plus, minus;   ///< + and − points carrying the node (vertices, or the faces' edge nodes)
   double n[3], s[3];      ///< normal and (first) tangent (third components 0 in 2D)
-  double s2[3];           ///< 3D: the second tangent t2 = n × t1
+  double s2[3];           ///< 3D: the second tangent t2 = n × t1 (0 in 2D)
   double weight;          ///< tributary length [m] (3D: area [m²])
   double a0;
   double N0;              ///< N(a0): the contact force the pre-stress balances at rest
   PetscInt crack;         ///< crack index
-  double xi;              ///< position along the crack, 0..1
+  double xi;              ///< position along a 2D crack line, 0..1 (NaN on a 3D crack surface)
   double x, y;            ///< coordinates
   double z;               ///< 3D
 };
@@ -117,7 +117,7 @@ class CrackInterface final : public wave::WaveInterface {
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int dim_ = 2;
-  std::vector<std::array<double, 3>> centres_;  ///< 3D: each crack's centre (FindCentre)
+  std::vector<std::array<double, 3>> centres_;  ///< each crack's centre, its cells' centroid (FindCentre)
   PetscErrorCode FindCentre();
   /// The cracks with contact cells: the highest crack index on any rank + 1. Collective.
   PetscErrorCode CrackCount(PetscInt* ncracks) const;

@@ -14,10 +14,10 @@ namespace vibrotherm::interface {
 struct CrackCellRecord {
   long slot = -1;   ///< where the gathered record goes (probe index, or −1: sort along the cracks)
   int crack = 0;    ///< 0-based
-  double xi = 0.0;  ///< fraction along the crack (3D: s1, the distance from the crack's centre along t1 [m])
-  double eta = 0.0;  ///< 3D: s2, the distance from the crack's centre along t2 [m]
+  double xi = 0.0;   ///< fraction along a 2D crack line; NaN on a 3D crack surface (it has none)
+  double s1 = 0.0, s2 = 0.0;  ///< from the crack's centre (its cells' centroid) along the tangents t1, t2 [m]
   double x = 0.0, y = 0.0, z = 0.0;
-  double b2 = 0.0, T2 = 0.0;  ///< 3D: the second tangential components [m], [Pa]
+  double b2 = 0.0, T2 = 0.0;  ///< the second tangential components [m], [Pa] (0 in 2D)
   double a = 0.0, b = 0.0, b0 = 0.0;  ///< half approach, half tangential displacement, slip offset [m]
   double N = 0.0, T = 0.0;            ///< tractions [Pa]
   contact::ContactState state = contact::ContactState::Loss;
@@ -27,7 +27,7 @@ struct CrackCellRecord {
 };
 
 /// Every rank's records on rank 0 (others get none), ordered by slot when all
-/// slots are set, else by crack and ξ. Collective.
+/// slots are set, else by crack, ξ (2D), s1 and s2. Collective.
 PetscErrorCode GatherCrackRecords(MPI_Comm comm, const std::vector<CrackCellRecord>& mine,
                                   std::vector<CrackCellRecord>* on_root);
 

@@ -38,7 +38,7 @@ PetscErrorCode Recorder::Open(const RecordingOptions& options, const std::string
       crack_probe_cells_.push_back(cell);
     }
     if (options.crack_state_every > 0)
-      PetscCall(crack_state_.Open(comm, dir + "/crack_state.csv", static_cast<long long>(bytes[2]), crack_->dim()));
+      PetscCall(crack_state_.Open(comm, dir + "/crack_state.csv", static_cast<long long>(bytes[2])));
   }
   if (!options.output_times.empty()) {
     // Outputs before the checkpoint are kept on the same partition (the grids' vertex numbering is the partition's).
