@@ -329,9 +329,6 @@ PetscErrorCode CrackInterface::NearestCell(PetscInt crack, double xi, PetscInt* 
   *owned_index = -1;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     if (cells_[i].crack != crack) continue;
-    PetscCheck(!std::isnan(cells_[i].xi), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "-crack_probe: a position along a 2D crack line (xi); a 3D crack surface has none "
-               "(its cells' states: -crack_state_every, keyed by s1, s2)");
     const double d = std::abs(cells_[i].xi - xi);
     if (d < mine.distance) mine.distance = d, *owned_index = static_cast<PetscInt>(i);
   }
