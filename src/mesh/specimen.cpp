@@ -225,8 +225,8 @@ PetscErrorCode SpecimenCreate(MPI_Comm comm, const SpecimenOptions& options, dou
   PetscCheck(!(source.from_file && IsGeometryScript(source.file)) && !(source.heat_from_file &&
              IsGeometryScript(source.heat_file)), comm, PETSC_ERR_ARG_WRONG,
              "SpecimenCreate reads mesh files: mesh a .geo first (MeshGeometryScripts)");
-  int file_dimension = 0;
-  if (source.from_file) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
+  int file_dimension = source.file_dimension;  // the scene opened the file once for it already
+  if (source.from_file && !file_dimension) PetscCall(MeshFileDimension(comm, source.file, &file_dimension));
   DM serial = nullptr;
   PetscCall(PetscLogEventBegin(log.generate, 0, 0, 0, 0));
   if (file_dimension == 3)

@@ -20,6 +20,7 @@ namespace vibrotherm::mesh {
 struct MeshSource {
   std::string file, heat_file;  ///< -mesh_file, -heat_mesh_file
   bool from_file = false, heat_from_file = false;
+  int file_dimension = 0;    ///< the -mesh_file's dimension when the scene read it (0: not yet, SpecimenCreate reads it)
   PetscInt refinements = 0;  ///< -dm_refine
   bool force = false;        ///< -force: run even above the memory estimate
 };

@@ -152,7 +152,8 @@ PetscErrorCode QuantizeForPeriodicity(MPI_Comm comm, Scene* s) {
 
 PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   PetscFunctionBeginUser;
-  PetscCall(ReadSceneDimension(comm, &s->run.dimension));
+  int file_dimension;
+  PetscCall(ReadSceneDimension(comm, &s->run.dimension, &file_dimension));
   PetscCall(ReadDriverOptions(comm, &s->run, &s->values));
   PetscCall(wave::ReadElasticMaterial(comm, &s->material, &s->values));
   PetscCall(wave::ReadExcitation(comm, &s->excitation, &s->values));
@@ -186,6 +187,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, Scene* s) {
   }
   s->run.output_times = kept;
   PetscCall(mesh::ReadSpecimenOptions(comm, s->exchange_length(), &s->specimen, &s->values));  // its heat mesh: after the heat step
+  s->specimen.source.file_dimension = file_dimension;
   s->wave.harmonic_force = s->specimen.source.force;
   PetscFunctionReturn(0);
 }

@@ -8,7 +8,7 @@
 
 namespace vibrotherm::coupling {
 
-PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension) {
+PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension, int* file_dimension) {
   PetscFunctionBeginUser;
   double depth = 0.0;
   std::string file;
@@ -16,9 +16,9 @@ PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension) {
   PetscCall(OptionReal(nullptr, "-specimen_depth", &depth));
   PetscCall(OptionText(nullptr, "-mesh_file", &file, &from_file));
   *dimension = depth > 0.0 ? 3 : 2;
-  int in_file = 0;
-  if (from_file && !file.empty()) PetscCall(mesh::MeshFileDimension(comm, file, &in_file));
-  if (in_file) *dimension = in_file == 3 ? 3 : 2;  // the file decides
+  *file_dimension = 0;
+  if (from_file && !file.empty()) PetscCall(mesh::MeshFileDimension(comm, file, file_dimension));
+  if (*file_dimension) *dimension = *file_dimension == 3 ? 3 : 2;  // the file decides
   PetscFunctionReturn(0);
 }
 

@@ -11,8 +11,10 @@
 namespace vibrotherm::coupling {
 
 /// 3 when -specimen_depth > 0 (the specimen module declares and checks the option) or
-/// -mesh_file is a 3D mesh, else 2 (an unreadable -mesh_file is refused, naming it). Collective.
-PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension);
+/// -mesh_file is a 3D mesh, else 2 (an unreadable -mesh_file is refused, naming it); the
+/// file's own dimension in *file_dimension (0: no file), read once here: ReadScene hands it to
+/// the specimen (MeshSource::file_dimension), which does not open the file for it again. Collective.
+PetscErrorCode ReadSceneDimension(MPI_Comm comm, int* dimension, int* file_dimension);
 
 /// In 3D: refuses what 3D does not support (one line naming the option, exit 2); in
 /// 2D the 3D-only -heat_bc_front|back and -camera_face. Collective.
