@@ -113,6 +113,9 @@ def compare_csv_files(a, b, rtol, say):
     scale = [0.0] * columns
     rows = []
     for i, (x, y) in enumerate(zip(ra[1:], rb[1:])):
+        if len(x) != len(y):
+            say("row %d: %d vs %d fields" % (i + 1, len(x), len(y)))
+            return
         fx, fy = [_number(v) for v in x], [_number(v) for v in y]
         for j, (u, v) in enumerate(zip(fx, fy)):
             if (u is None or v is None) and x[j] != y[j]:

@@ -165,6 +165,7 @@ PetscErrorCode CreateMeshFileSpecimen3D(MPI_Comm comm, const std::string& file, 
   s->source = file;
   if (heat_file.empty()) {
     s->heat_source = "wave";  // SpecimenCreate gives the heat the wave mesh unsplit
+    s->crack_face_subdivisions = 1;  // the heat faces are the wave faces: one part a face is exact
     if (!cracks.empty())
       PetscCall(PetscPrintf(comm, "vibrotherm: note: the heat runs on %s unsplit: vibrotherm grades no heat mesh "
                             "to a 3D file's cracks (-heat_mesh_file gives one)\n", file.c_str()));

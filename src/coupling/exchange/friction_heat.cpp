@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "vibrotherm/coupling/exchange/crack_face_quadrature.hpp"
 #include "vibrotherm/coupling/exchange/surface_transfer.hpp"

@@ -13,7 +13,7 @@ PetscErrorCode VertexPositions<D>::Setup(DM dm) {
   const PetscScalar* array;
   PetscInt dim;
   PetscCall(DMGetCoordinateDim(dm, &dim));
-  PetscCheck(dim == static_cast<PetscInt>(D), PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
+  PetscCheck(dim <= static_cast<PetscInt>(D), PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP,
              "VertexPositions<%d> on a mesh with %" PetscInt_FMT " coordinates", static_cast<int>(D), dim);
   PetscCall(DMGetCoordinatesLocalSetUp(dm));
   PetscCall(DMGetCoordinatesLocal(dm, &local));
@@ -21,12 +21,12 @@ PetscErrorCode VertexPositions<D>::Setup(DM dm) {
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart_, nullptr));
   PetscInt vEnd;
   PetscCall(DMPlexGetDepthStratum(dm, 0, nullptr, &vEnd));
-  coords_.resize(vEnd - vStart_);
+  coords_.assign(vEnd - vStart_, geometry::Point<D>{});  // a 2D mesh's points in 3D: z = 0
   PetscCall(VecGetArrayRead(local, &array));
   for (PetscInt v = vStart_; v < vEnd; ++v) {
     PetscInt offset;
     PetscCall(PetscSectionGetOffset(section, v, &offset));
-    for (std::size_t d = 0; d < D; ++d) coords_[v - vStart_][d] = PetscRealPart(array[offset + d]);
+    for (PetscInt d = 0; d < dim; ++d) coords_[v - vStart_][d] = PetscRealPart(array[offset + d]);
   }
   PetscCall(VecRestoreArrayRead(local, &array));
   PetscFunctionReturn(0);

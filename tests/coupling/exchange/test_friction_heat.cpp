@@ -9,6 +9,7 @@
 // each rank's owned crack facets; T^T w for a heat vector w compared cell by cell).
 #include <petscdmplex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -32,15 +33,16 @@ PetscErrorCode HeatCrackElements(const fe::LagrangeSpace& heat, const mesh::Crac
   PetscSection global;
   PetscCall(DMGetGlobalSection(heat.dm(), &global));
   const auto row = [&](PetscInt point) {
-    PetscInt off;
-    PetscSectionGetOffset(global, point, &off);
+    PetscInt off = -1;
+    EXPECT_EQ(PetscSectionGetOffset(global, point, &off), 0);
     return static_cast<long>(off >= 0 ? off : -(off + 1));
   };
   for (const mesh::OwnedCrackFacet& owned : cracks.owned()) {
     const geometry::CrackFacet& facet = cracks.facets()[owned.index];
     const mesh::CrackLine& line = cracks.line(facet.crack);
-    std::size_t j = 0;
-    while (line.facet_ids()[j] != facet.id) ++j;
+    const auto& ids = line.facet_ids();
+    const std::size_t j = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), facet.id) - ids.begin());
+    PetscCheck(j < ids.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "crack facet %ld is not on its crack line", facet.id);
     const PetscInt* cone;
     PetscCall(DMPlexGetCone(heat.dm(), owned.facet, &cone));
     const auto v = line.vertex(j);
@@ -169,7 +171,7 @@ TEST_P(FrictionHeatQuadrature2D, EqualsTheExactLineIntegralsOnAHeatMeshThatDoesN
   VecDestroy(&probe);
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, FrictionHeatQuadrature2D,
+INSTANTIATE_TEST_SUITE_P(FrictionHeat2D, FrictionHeatQuadrature2D,
                          ::testing::Values(Case{"QuadsQ2", "-wave_degree 2", 2},
                                            Case{"TrianglesQ1", "-mesh_cell tri -wave_degree 1", 1}),
                          [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });

@@ -1,6 +1,7 @@
-// A friction power density on a planar 3D crack surface, as the heat side
-// receives it (plain C++, no PETSc): points on the crack plane, each with the
-// area it stands for [m²]; per exchange a power per unit area q_p [W/m²] at
+// A friction power density on a crack, as the heat side receives it (plain C++,
+// no PETSc): points on the crack (a 3D crack plane, or a 2D crack line with z = 0),
+// each with the area it stands for [m²] (in 2D the length [m]); per exchange a
+// power per unit area q_p [W/m²] at
 // every point. The power is Σ_p A_p q_p: the points are a quadrature of the
 // crack's density (the contact cells with their tributary areas, or the Gauss
 // points of the wave mesh's crack faces with their weights), and
