@@ -162,12 +162,16 @@ void CrackInterface::Kinematics(std::size_t i, const PetscScalar* U, double* a, 
   const ContactCell& c = cells_[i];
   double j[3];
   for (int d = 0; d < dim_; ++d) j[d] = PetscRealPart(U[Slot(i, d)] - U[Slot(i, dim_ + d)]);
-  // Each dot product summed x, y, then z: the 2D bits unchanged.
+  // Each dot product summed x, y(, z) from the first term (not from 0: −0 stays −0).
   const auto dot = [&](const double* e) {
-    return dim_ == 2 ? j[0] * e[0] + j[1] * e[1] : j[0] * e[0] + j[1] * e[1] + j[2] * e[2];
+    double sum = j[0] * e[0];
+    for (int d = 1; d < dim_; ++d) sum += j[d] * e[d];
+    return sum;
   };
   *a = c.a0 - 0.5 * dot(c.n);
-  *b = dim_ == 2 ? contact::Tangential(0.5 * dot(c.s)) : contact::Tangential(0.5 * dot(c.s), 0.5 * dot(c.s2));
+  *b = contact::Tangential::zero(dim_ - 1);  // the crack's tangent directions: 1 in 2D, 2 in 3D
+  const double* tangents[2] = {c.s, c.s2};
+  for (int k = 0; k < dim_ - 1; ++k) (*b)[k] = 0.5 * dot(tangents[k]);
 }
 
 PetscErrorCode CrackInterface::GatherBegin(Vec u, const PetscScalar** U) {
@@ -206,9 +210,11 @@ PetscErrorCode CrackInterface::AddAcceleration(Vec u, Vec acc) {
     // pre-closed crack (a0 > 0) at rest balances N(a0).
     const double N = t.N - c.N0;
     double f[6];
+    const double* tangents[2] = {c.s, c.s2};
     for (int d = 0; d < dim_; ++d) {
-      f[d] = dim_ == 2 ? c.weight * (N * c.n[d] - t.T[0] * c.s[d])
-                       : c.weight * (N * c.n[d] - t.T[0] * c.s[d] - t.T[1] * c.s2[d]);
+      double traction = N * c.n[d];  // f⁺ = w (N n − Σ_k T_k t_k)
+      for (int k = 0; k < dim_ - 1; ++k) traction -= t.T[k] * tangents[k][d];
+      f[d] = c.weight * traction;
       f[dim_ + d] = -f[d];
     }
     for (int k = 0; k < stride(); ++k) {
