@@ -8,23 +8,27 @@
 
 namespace vibrotherm::interface {
 namespace {
-constexpr int kCellValues = 8;  // a, b, power, W, last N, T, dW, state; 3D adds b2, T2
-}
+/// Per cell: a, power, W, last N, dW, state, then b and the last T along each of the crack's
+/// `tangents` directions (1 in 2D, 2 in 3D).
+int CellValues(int tangents) { return 6 + 2 * tangents; }
+}  // namespace
 
 PetscErrorCode CrackInterface::Save(store::Checkpoint& checkpoint, const mesh::PointOrigin& origin) const {
   PetscFunctionBeginUser;
   std::vector<long long> keys, counts;
   std::vector<double> cells, memory;
+  const int tangents = dim_ - 1;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     keys.push_back(origin[cells_[i].plus]);
     const contact::StepResult& s = last_[i];
-    cells.insert(cells.end(), {a_[i], b_[i][0], power_[i], W_[i], s.N, s.T[0], s.dW, static_cast<double>(s.state)});
-    if (dim_ == 3) cells.insert(cells.end(), {b_[i][1], s.T[1]});
+    cells.insert(cells.end(), {a_[i], power_[i], W_[i], s.N, s.dW, static_cast<double>(s.state)});
+    for (int k = 0; k < tangents; ++k) cells.push_back(b_[i][k]);
+    for (int k = 0; k < tangents; ++k) cells.push_back(s.T[k]);
     const std::vector<double> state = law_->save_state(i);
     counts.push_back(static_cast<long long>(state.size()));
     memory.insert(memory.end(), state.begin(), state.end());
   }
-  checkpoint.PutKeyed("crack/cells", keys, kCellValues + 2 * (dim_ - 2), cells);
+  checkpoint.PutKeyed("crack/cells", keys, CellValues(tangents), cells);
   checkpoint.PutKeyed("crack/law", keys, counts, memory);
   checkpoint.PutPerRank("crack/accounts", {dissipated_local_, friction_excess_, largest_normal_});
   double maxima[2] = {friction_excess_, largest_normal_};
@@ -38,17 +42,17 @@ PetscErrorCode CrackInterface::Restore(const store::Checkpoint& checkpoint, cons
   std::vector<long long> keys, counts;
   for (const ContactCell& c : cells_) keys.push_back(origin[c.plus]);
   std::vector<double> cells, memory;
-  const int values = kCellValues + 2 * (dim_ - 2);
+  const int tangents = dim_ - 1, values = CellValues(tangents);
   PetscCall(checkpoint.GetKeyed("crack/cells", keys, values, &cells));
   PetscCall(checkpoint.GetKeyed("crack/law", keys, &counts, &memory));
   std::size_t at = 0;
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const double* v = &cells[values * i];
-    a_[i] = v[0], power_[i] = v[2], W_[i] = v[3];
-    b_[i] = dim_ == 2 ? contact::Tangential(v[1]) : contact::Tangential(v[1], v[8]);
-    last_[i].N = v[4], last_[i].T = dim_ == 2 ? contact::Tangential(v[5]) : contact::Tangential(v[5], v[9]);
-    last_[i].dW = v[6];
-    last_[i].state = static_cast<contact::ContactState>(static_cast<int>(v[7]));
+    a_[i] = v[0], power_[i] = v[1], W_[i] = v[2];
+    last_[i].N = v[3], last_[i].dW = v[4];
+    last_[i].state = static_cast<contact::ContactState>(static_cast<int>(v[5]));
+    b_[i] = last_[i].T = contact::Tangential::zero(tangents);
+    for (int k = 0; k < tangents; ++k) b_[i][k] = v[6 + k], last_[i].T[k] = v[6 + tangents + k];
     VibrothermCallCpp(PETSC_COMM_SELF, law_->restore_state(i, memory.data() + at, static_cast<std::size_t>(counts[i])));
     at += static_cast<std::size_t>(counts[i]);
   }

@@ -15,8 +15,8 @@
 namespace vibrotherm::store {
 namespace {
 
-/// 2: crack_state.csv has one schema in 2D and 3D (issue 39); a run checkpointed in format 1
-/// would append its rows under the old header.
+/// 2: crack_state.csv has one schema in 2D and 3D and a contact cell's values one layout
+/// (issue 39); a run checkpointed in format 1 would append its rows under the old header.
 constexpr int kFormat = 2;
 
 /// A flat byte buffer: how rank 0 hands the file it read to the other ranks.
