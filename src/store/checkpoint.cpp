@@ -292,9 +292,10 @@ PetscErrorCode Checkpoint::Read(const std::string& path, const std::string& opti
   PetscCallMPI(MPI_Bcast(status, 3, MPI_LONG_LONG, 0, comm_));
   PetscCheck(status[0], comm_, PETSC_ERR_FILE_OPEN, "%s: cannot read the checkpoint %s (missing, or not written by vibrotherm)",
              option_.c_str(), path.c_str());
-  PetscCheck(status[1] == kFormat, comm_, PETSC_ERR_FILE_UNEXPECTED,
-             "%s: %s has checkpoint format %lld, this vibrotherm reads %d", option_.c_str(), path.c_str(), status[1],
-             kFormat);
+  PetscCheck(status[1] == kFormat, comm_, PETSC_ERR_USER_INPUT,  // the user's file: one line, exit 2
+             "%s: %s has checkpoint format %lld, this vibrotherm reads %d (finish that run with the vibrotherm "
+             "that wrote it, or run it again from its start)",
+             option_.c_str(), path.c_str(), status[1], kFormat);
   writer_ranks_ = static_cast<int>(status[2]);
   long long size = static_cast<long long>(bytes.buffer.size());
   PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm_));

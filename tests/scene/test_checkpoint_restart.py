@@ -5,13 +5,16 @@ bit-identical to a run never stopped (same ranks: every byte of probes.csv, ener
 crack_state.csv, every dataset of fields.h5, crack_heat.h5 and camera.h5, every summary figure), and
 identical to rounding on another rank count. A run killed outright (SIGKILL) restarts from
 its last periodic checkpoint just as exactly (files written after it are cut back). A
-restart with other options, or without a checkpoint, is refused with one line, exit 2.
+restart with other options, without a checkpoint or from an older checkpoint format, is refused
+with one line, exit 2.
 Issue 27: a stop while the heat runs alone after the waves (SIGUSR1 there) resumes where
 the waves stopped and finishes bit-identical (before: no checkpoint there, with the
 default -checkpoint_every_s the restart was refused and the run lost).
 
 usage: test_checkpoint_restart.py VIBROTHERM MPIEXEC"""
 import os, signal, subprocess, sys, tempfile
+
+import h5py
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import Checks, outputs
@@ -89,6 +92,15 @@ with tempfile.TemporaryDirectory() as tmp:
     code, _, err = run(2, ["-restart", os.path.join(tmp, "nowhere")])
     check(code == 2 and "checkpoint" in err and not os.path.exists(os.path.join(tmp, "nowhere")),
           "no checkpoint: exit 2 naming it, nothing written (%s)" % err[-300:])
+    # A checkpoint of an older format (format 1: crack_state.csv had two schemas) is refused, naming it.
+    with h5py.File(os.path.join(out, "checkpoint.h5"), "r+") as f:
+        f.attrs["format"] = 1
+    code, _, err = run(2, ["-restart", out])
+    lines = [l for l in err.splitlines() if l.startswith("vibrotherm: error")]
+    check(code == 2 and len(lines) == 1 and "checkpoint format 1" in lines[0] and "-restart" in lines[0],
+          "an older checkpoint: one line naming -restart and its format, exit 2 (exit %d, %d lines: %s)"
+          % (code, len(lines), err[-300:]))
+    check(sorted(os.listdir(out)) == before, "an older checkpoint: nothing written")
 
     # A stop in the heat-alone phase (the waves quiet at ~0.9 ms, the heat alone to 10 s), serial.
     heat_alone = [exe, "-options_file", os.path.join(ROOT, "options", "paper.opts"), "-mesh_h", "0.004",
