@@ -51,7 +51,7 @@ PetscErrorCode CrackInterface::Restore(const store::Checkpoint& checkpoint, cons
     a_[i] = v[0], power_[i] = v[1], W_[i] = v[2];
     last_[i].N = v[3], last_[i].dW = v[4];
     last_[i].state = static_cast<contact::ContactState>(static_cast<int>(v[5]));
-    b_[i] = last_[i].T = contact::Tangential::zero(tangents);
+    b_[i] = last_[i].T = zero_slip_;
     for (int k = 0; k < tangents; ++k) b_[i][k] = v[6 + k], last_[i].T[k] = v[6 + tangents + k];
     VibrothermCallCpp(PETSC_COMM_SELF, law_->restore_state(i, memory.data() + at, static_cast<std::size_t>(counts[i])));
     at += static_cast<std::size_t>(counts[i]);

@@ -117,6 +117,7 @@ class CrackInterface final : public wave::WaveInterface {
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int dim_ = 2;
+  contact::Tangential zero_slip_;  ///< zero along the crack's dim − 1 tangent directions (set once)
   std::vector<std::array<double, 3>> centres_;  ///< each crack's centre, its cells' centroid (FindCentre)
   PetscErrorCode FindCentre();
   /// The cracks with contact cells: the highest crack index on any rank + 1. Collective.
